@@ -1,0 +1,47 @@
+// Camera frame and projection matrices (DESIGN §2), computed with GLM in double.
+// Interface: near and far are positive distances. Internally the seed's formulas use the z-coordinates
+// n = −near and f = −far. Near maps to NDC z = +1 and far to −1, so visibility needs GL_GREATER with a
+// depth clear of 0 (see gl/renderer.cpp).
+#pragma once
+
+#include <glm/glm.hpp>
+
+namespace shadelab {
+
+struct CameraFrame {
+    glm::dvec3 u, v, w; // right, up, backwards (w points from the target to the eye)
+    glm::dvec3 eye;
+};
+
+// Throws InputError when eye == target or up is parallel to the view direction.
+CameraFrame cameraFrame(const glm::dvec3& eye, const glm::dvec3& target, const glm::dvec3& up);
+
+// M_cam = [u v w e]⁻¹: world → camera (view) coordinates.
+glm::dmat4 viewFromWorld(const CameraFrame& frame);
+
+// The view volume: left/right/bottom/top on the near plane (perspective) or of the box (orthographic);
+// near and far are positive distances with 0 < near < far.
+struct ViewVolume {
+    double left = -1, right = 1, bottom = -1, top = 1;
+    double near = 1, far = 10;
+};
+
+// Throws InputError for near <= 0, near >= far, left == right, bottom == top or non-finite values.
+void validateViewVolume(const ViewVolume& volume);
+
+// Symmetric volume from a vertical field of view (0 < fovy < 180) and aspect = width / height.
+ViewVolume viewVolumeFromFovy(double fovyDeg, double aspect, double near, double far);
+
+// M_orth: [l,r]×[b,t]×[f,n] → [−1,1]³, z = n → +1, z = f → −1.
+glm::dmat4 orthographicClipFromView(const ViewVolume& volume);
+
+// The WebGL-style perspective matrix (w = −z > 0 in front of the camera). Equals
+// diag(1,1,−1,1)·glm::frustumRH_NO(l, r, b, t, near, far).
+glm::dmat4 perspectiveClipFromView(const ViewVolume& volume);
+
+// Normal matrix of the upper 3×3 of a model-view matrix: the cofactor matrix times sign(det), i.e.
+// (M⁻¹)ᵀ up to a positive scale. Never divides, so it stays finite for near-singular M; normals must be
+// renormalized after it.
+glm::dmat3 normalMatrix(const glm::dmat4& viewFromObject);
+
+} // namespace shadelab

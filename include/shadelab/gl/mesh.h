@@ -1,0 +1,31 @@
+// A sphere mesh uploaded to the GPU: indexed shared vertices for smooth modes, or three vertices per
+// triangle with centroid and face normal for flat shading.
+#pragma once
+
+#include "shadelab/gl/handles.h"
+#include "shadelab/sphere.h"
+
+namespace shadelab::gl {
+
+enum class MeshLayout { Smooth, Flat };
+
+// Attribute locations shared with shaders/surface.vert.
+inline constexpr unsigned kPositionAttribute = 0;
+inline constexpr unsigned kNormalAttribute = 1;   // smooth: vertex normal; flat: face normal
+inline constexpr unsigned kCentroidAttribute = 2; // flat only
+
+class GpuMesh {
+public:
+    GpuMesh(const SphereMesh& mesh, MeshLayout layout);
+    void draw() const;
+    MeshLayout layout() const { return layout_; }
+    int triangleCount() const { return triangles_; }
+
+private:
+    MeshLayout layout_;
+    int triangles_ = 0;
+    VertexArray vao_;
+    Buffer vertices_, indices_;
+};
+
+} // namespace shadelab::gl

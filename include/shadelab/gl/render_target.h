@@ -1,0 +1,30 @@
+// An offscreen framebuffer the program owns: a colour renderbuffer (RGBA8, or RGBA32F so that a NaN
+// cannot hide behind the 8-bit conversion) and a depth renderbuffer, no MSAA. Reading back flips the rows
+// to top-first here and nowhere else.
+#pragma once
+
+#include "shadelab/gl/handles.h"
+#include "shadelab/image.h"
+
+namespace shadelab::gl {
+
+enum class ColorFormat { Rgba8, Rgba32F };
+
+class RenderTarget {
+public:
+    // Throws InputError if the size exceeds what the context allows, RuntimeError if incomplete.
+    RenderTarget(int width, int height, ColorFormat format = ColorFormat::Rgba8);
+    void bind() const;
+    Image readRgba8() const;
+    ImageF readFloat() const;
+    int width() const { return width_; }
+    int height() const { return height_; }
+
+private:
+    int width_, height_;
+    ColorFormat format_;
+    Framebuffer fbo_;
+    Renderbuffer color_, depth_;
+};
+
+} // namespace shadelab::gl

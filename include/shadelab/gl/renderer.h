@@ -1,0 +1,31 @@
+// The one render function shared by the window, the headless CLI, the showcase and the tests: draws a
+// Scene into whatever framebuffer is bound. Programs and meshes are built on first use and cached.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <tuple>
+
+#include "shadelab/gl/mesh.h"
+#include "shadelab/gl/program.h"
+#include "shadelab/scene.h"
+
+namespace shadelab::gl {
+
+class Renderer {
+public:
+    Renderer();
+    // Draws `scene` into the bound framebuffer over a viewport of width × height (which may differ from
+    // the scene's image size, e.g. a resized window; the aspect comes from the viewport). A 0×0 viewport
+    // draws nothing.
+    void render(const Scene& scene, int width, int height);
+
+private:
+    const GpuMesh& mesh(int level, VertexNormals normals, MeshLayout layout);
+    Id program(const ProgramVariant& variant);
+
+    std::map<ProgramVariant, Program> programs_;
+    std::map<std::tuple<int, VertexNormals, MeshLayout>, std::unique_ptr<GpuMesh>> meshes_;
+};
+
+} // namespace shadelab::gl

@@ -1,0 +1,39 @@
+// Headless rendering: a context, the shared renderer and an offscreen target, returning pixels.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "shadelab/context.h"
+#include "shadelab/image.h"
+#include "shadelab/scene.h"
+
+namespace shadelab {
+namespace gl {
+class Renderer;
+}
+
+class HeadlessRenderer {
+public:
+    explicit HeadlessRenderer(Backend backend);
+    ~HeadlessRenderer();
+    HeadlessRenderer(const HeadlessRenderer&) = delete;
+    HeadlessRenderer& operator=(const HeadlessRenderer&) = delete;
+
+    Image render(const Scene& scene);       // scene.width × scene.height, rows top first
+    ImageF renderFloat(const Scene& scene); // through an RGBA32F target: NaN and Inf stay visible
+    Backend backend() const { return backend_; }
+    const std::string& rendererString() const { return rendererString_; }
+
+private:
+    Backend backend_;
+    std::unique_ptr<HeadlessContext> context_;
+    std::unique_ptr<gl::Renderer> renderer_;
+    std::string rendererString_;
+};
+
+// Every shading mode × lighting model of `scene`, tileSize² each, labelled, side by side (modes across,
+// lighting models down).
+Image renderShowcase(HeadlessRenderer& renderer, const Scene& scene, int tileSize = 256);
+
+} // namespace shadelab

@@ -1,0 +1,79 @@
+// Images: 8-bit RGBA (what a PNG holds) and float RGBA (what stress tests and the reference produce),
+// PNG I/O that never leaves a half-written file, and the comparison used by the image tests.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace shadelab {
+
+// Rows top to bottom, 4 bytes per pixel (R, G, B, A). Alpha is coverage: 255 where an object was drawn,
+// 0 on the background.
+struct Image {
+    int width = 0, height = 0;
+    std::vector<std::uint8_t> rgba;
+
+    Image() = default;
+    Image(int w, int h);
+    std::uint8_t* pixel(int x, int y) { return &rgba[(std::size_t(y) * width + x) * 4]; }
+    const std::uint8_t* pixel(int x, int y) const { return &rgba[(std::size_t(y) * width + x) * 4]; }
+};
+
+// Rows top to bottom, linear colour, 4 floats per pixel.
+struct ImageF {
+    int width = 0, height = 0;
+    std::vector<float> rgba;
+
+    ImageF() = default;
+    ImageF(int w, int h);
+    float* pixel(int x, int y) { return &rgba[(std::size_t(y) * width + x) * 4]; }
+    const float* pixel(int x, int y) const { return &rgba[(std::size_t(y) * width + x) * 4]; }
+};
+
+// round(clamp(c, 0, 1)·255), NaN → 0: the one float → 8-bit conversion (GL's unorm rule).
+std::uint8_t toUnorm8(double c);
+Image toImage8(const ImageF& image);
+
+// Writes an opaque RGB PNG (alpha dropped) to a temporary file beside `path`, then renames it over `path`.
+// Throws RuntimeError naming the path on any failure, leaving nothing behind.
+void writePng(const Image& image, const std::filesystem::path& path);
+// Reads a PNG as RGBA (alpha 255 if the file has none). Throws RuntimeError naming the path.
+Image readPng(const std::filesystem::path& path);
+
+// Counts the non-finite values and the values outside [lo, hi] in a float image.
+struct ValueScan {
+    std::size_t nonFinite = 0, outOfRange = 0;
+};
+ValueScan scanValues(const ImageF& image, float lo = 0.0f, float hi = 1.0f);
+
+// Regression comparison of two 8-bit images of the same size (colour channels only).
+struct Tolerance {
+    int maxDelta = 0;        // largest per-channel difference allowed outside the outlier budget
+    double meanDelta = 0;    // largest mean per-channel difference over the whole image
+    int outlierBudget = 0;   // pixels allowed to exceed maxDelta (silhouette pixels)
+};
+struct Comparison {
+    bool sizeMatches = true;
+    int maxDelta = 0;
+    double meanDelta = 0;
+    int outliers = 0; // pixels with a channel difference > tolerance.maxDelta
+    bool passed = false;
+    std::string summary() const;
+};
+Comparison compareImages(const Image& actual, const Image& expected, const Tolerance& tolerance);
+// |actual − expected| per channel, amplified ×8 and clamped, opaque; for looking at a failure.
+Image diffImage(const Image& actual, const Image& expected);
+
+// Places `tile` into `canvas` with its top-left corner at (x, y), clipped to the canvas.
+void blit(Image& canvas, const Image& tile, int x, int y);
+void fillRect(Image& canvas, int x, int y, int w, int h, glm::u8vec4 color);
+// Draws text in a built-in 5×7 pixel font (upper-case letters, digits, space and - + / . : ( ) ×),
+// each font pixel `scale` image pixels wide. Lower-case letters are drawn as upper-case.
+void drawText(Image& canvas, int x, int y, std::string_view text, int scale, glm::u8vec4 color);
+int textWidth(std::string_view text, int scale);
+
+} // namespace shadelab

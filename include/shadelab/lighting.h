@@ -1,0 +1,79 @@
+// The lighting equations of DESIGN §3 on the CPU, in double. shaders/lighting.glsl is the GLSL mirror of
+// this file: a change to one is a change to both. The analytic reference (reference.h) shades with it.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <span>
+#include <string_view>
+
+#include <glm/glm.hpp>
+
+namespace shadelab {
+
+// Modes are typed enums with one spelling everywhere: CLI, scene files, keys, test names, report rows.
+enum class ShadingMode { Flat, Gouraud, Phong, Toon };
+enum class LightingModel { Phong, BlinnPhong };
+enum class LightType { Ambient, Directional, Point, Spot };
+
+inline constexpr std::array kShadingModes = {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong,
+                                             ShadingMode::Toon};
+inline constexpr std::array kLightingModels = {LightingModel::Phong, LightingModel::BlinnPhong};
+
+std::string_view toString(ShadingMode mode);    // "flat" | "gouraud" | "phong" | "toon"
+std::string_view toString(LightingModel model); // "phong" | "blinn-phong"
+std::string_view toString(LightType type);      // "ambient" | "directional" | "point" | "spot"
+std::optional<ShadingMode> parseShadingMode(std::string_view text);
+std::optional<LightingModel> parseLightingModel(std::string_view text);
+std::optional<LightType> parseLightType(std::string_view text);
+
+inline constexpr int kMaxLights = 8;
+inline constexpr int kToonBands = 4;          // diffuse bands in toon shading
+inline constexpr double kToonHighlight = 0.5; // spec above this is a full highlight, below it none
+
+struct Material {
+    glm::dvec3 ambient{0.1, 0.1, 0.1};
+    glm::dvec3 diffuse{0.7, 0.2, 0.2};
+    glm::dvec3 specular{1, 1, 1};
+    double shininess = 32; // α for Phong, β for Blinn-Phong; >= 1
+};
+
+struct Light {
+    LightType type = LightType::Point;
+    glm::dvec3 ambient{0, 0, 0};
+    glm::dvec3 diffuse{1, 1, 1};
+    glm::dvec3 specular{1, 1, 1};
+    glm::dvec3 position{0, 0, 0};  // point, spot
+    glm::dvec3 direction{0, 0, -1}; // directional, spot: the direction the light travels (non-zero)
+    double cutoffDeg = 90;          // spot
+    double exponent = 0;            // spot
+    glm::dvec3 attenuation{1, 0, 0}; // a, b, c of 1/(a + b·t + c·t²); point, spot
+};
+
+// Moves a light's position and direction into the space `m` maps to (positions by m, directions by its
+// upper 3×3). Used to bring world-space lights into view space.
+Light transformLight(const Light& light, const glm::dmat4& m);
+
+// A point to shade. All vectors in one space (view space in shadelab); `normal` and `toViewer` unit length.
+struct SurfacePoint {
+    glm::dvec3 position;
+    glm::dvec3 normal;
+    glm::dvec3 toViewer;
+};
+
+struct ShadeOptions {
+    LightingModel model = LightingModel::BlinnPhong;
+    bool toon = false;
+};
+
+// I = Σ_lights [k_a·I_a + att·spot·(k_d·I_d·max(l·n,0) + [l·n > 0]·k_s·I_s·spec)], not yet clamped.
+glm::dvec3 shade(const SurfacePoint& point, const Material& material, std::span<const Light> lights,
+                 ShadeOptions options);
+
+// Clamp to [0, 1] (a NaN becomes 0): what reaches a pixel.
+glm::dvec3 clampColor(const glm::dvec3& color);
+
+// normalize(v), or `fallback` when |v| is too small to normalize (DESIGN §3: normalize nothing that can be 0).
+glm::dvec3 safeNormalize(const glm::dvec3& v, const glm::dvec3& fallback);
+
+} // namespace shadelab

@@ -1,0 +1,71 @@
+// The scene description shared by the window, `shadelab render`, the reference, the report and the tests
+// (DESIGN §4). Parsing validates everything and names the JSON path of any bad value.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "shadelab/camera.h"
+#include "shadelab/lighting.h"
+#include "shadelab/sphere.h"
+
+namespace shadelab {
+
+enum class ProjectionType { Perspective, Frustum, Orthographic };
+std::string_view toString(ProjectionType type); // "perspective" | "frustum" | "orthographic"
+
+struct Projection {
+    ProjectionType type = ProjectionType::Perspective;
+    double fovyDeg = 40;                                // perspective
+    double left = -1, right = 1, bottom = -1, top = 1; // frustum (at the near plane), orthographic
+    double near = 0.5, far = 20;                        // positive distances
+};
+
+struct SceneObject {
+    glm::dvec3 center{0, 0, 0};
+    double radius = 1;
+    glm::dvec3 scale{1, 1, 1}; // non-uniform scale: an ellipsoid; negative components mirror
+    int subdivisions = 5;
+    Material material;
+};
+
+inline constexpr int kMaxImageSize = 16384;
+
+struct Scene {
+    int width = 512, height = 512;
+    glm::dvec3 background{0, 0, 0};
+    glm::dvec3 eye{0, 0, 4}, target{0, 0, 0}, up{0, 1, 0};
+    Projection projection;
+    ShadingMode shading = ShadingMode::Phong;
+    LightingModel lighting = LightingModel::BlinnPhong;
+    VertexNormals vertexNormals = VertexNormals::Averaged; // not in the file format; the demo toggles it
+    std::vector<SceneObject> objects{SceneObject{}};
+    std::vector<Light> lights{defaultLight()};
+
+    static Light defaultLight();
+};
+
+// Parses scene JSON text. `source` names the text in messages (a file name). Throws InputError with the
+// JSON path, e.g. "scene.json: lights[1].attenuation[2]: must be >= 0, got -1".
+Scene parseScene(std::string_view jsonText, std::string_view source = "scene");
+// Reads and parses a file; a missing or unreadable file is an InputError naming the path.
+Scene loadScene(const std::filesystem::path& path);
+
+// Checks the ranges of DESIGN §4 on a scene built in code or changed by flags (parseScene already does).
+void validateScene(const Scene& scene);
+
+// Matrices derived from a scene, in double.
+struct SceneView {
+    glm::dmat4 viewFromWorld;
+    glm::dmat4 clipFromView;
+    ViewVolume volume;
+    bool orthographic = false;
+};
+SceneView sceneView(const Scene& scene); // throws InputError for a degenerate camera or bad planes
+glm::dmat4 worldFromObject(const SceneObject& object); // translate(center)·scale(radius·scale)
+
+} // namespace shadelab

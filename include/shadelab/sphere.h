@@ -1,0 +1,58 @@
+// The unit sphere built by subdividing a tetrahedron (DESIGN §1). Pure CPU data, built in double;
+// uploading it is the GL layer's job.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace shadelab {
+
+inline constexpr int kMaxSubdivisions = 10;
+
+enum class VertexNormals { Averaged, Exact };
+
+struct SphereMesh {
+    int level = 0;
+    std::vector<glm::dvec3> positions;     // shared vertices on the unit sphere, object space
+    std::vector<glm::uvec3> triangles;     // indices into positions, counter-clockwise seen from outside
+    std::vector<glm::dvec3> faceNormals;   // one unit normal per triangle
+    std::vector<glm::dvec3> vertexNormals; // one unit normal per vertex, of the requested kind
+};
+
+// Counts for level n: V = 2·4ⁿ + 2 shared vertices, F = 4ⁿ⁺¹ triangles.
+std::size_t sphereVertexCount(int level);
+std::size_t sphereTriangleCount(int level);
+
+// Peak bytes buildSphere and the GPU-ready arrays need for a level (used in the error for too-high levels).
+std::size_t sphereMemoryBytes(int level);
+
+// Throws InputError naming `field`, the level, the maximum and the memory the level would need.
+void checkSubdivisionLevel(int level, const char* field = "subdivisions");
+
+SphereMesh buildSphere(int level, VertexNormals normals = VertexNormals::Averaged);
+
+// GPU-ready vertex layouts (float, converted once from the double mesh).
+struct SmoothVertex {
+    glm::vec3 position;
+    glm::vec3 normal;
+};
+// Flat shading: three vertices per triangle, each carrying the triangle's centroid and face normal, so
+// the lighting is evaluated once per triangle at its centroid (DESIGN §3) whichever vertex provokes.
+struct FlatVertex {
+    glm::vec3 position;
+    glm::vec3 centroid;
+    glm::vec3 faceNormal;
+};
+
+std::vector<SmoothVertex> smoothVertices(const SphereMesh& mesh);
+std::vector<std::uint32_t> smoothIndices(const SphereMesh& mesh);
+std::vector<FlatVertex> flatVertices(const SphereMesh& mesh);
+
+// Max radial deviation of the mesh from the unit sphere: 1 − min over triangles of the distance from the
+// origin to the triangle's plane (the deepest point of a face is its foot point or an edge/vertex).
+double maxRadialDeviation(const SphereMesh& mesh);
+
+} // namespace shadelab

@@ -1,0 +1,12 @@
+// Shader sources embedded at build time (cmake/embed_shaders.cmake generates the definition).
+#pragma once
+
+#include <optional>
+#include <string_view>
+
+namespace shadelab::gl {
+
+// The text of shaders/<name>, e.g. embeddedShader("surface.vert.glsl"); nullopt if there is no such file.
+std::optional<std::string_view> embeddedShader(std::string_view name);
+
+} // namespace shadelab::gl
