@@ -1,1 +1,131 @@
-// placeholder: being written
+#include "shadelab/lighting.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace shadelab {
+namespace {
+
+template <typename Enum, std::size_t N>
+std::optional<Enum> parseEnum(std::string_view text, const std::array<Enum, N>& values) {
+    for (Enum value : values)
+        if (toString(value) == text) return value;
+    return std::nullopt;
+}
+
+constexpr std::array kLightTypes = {LightType::Ambient, LightType::Directional, LightType::Point,
+                                    LightType::Spot};
+
+// Squared length below which a vector is treated as zero and not normalized.
+constexpr double kTinyLength2 = 1e-24;
+constexpr double kMinAttenuationDenominator = 1e-12; // same constant in shaders/lighting.glsl
+
+// (l, t): unit direction to the light and the distance to it (0 for directional lights).
+std::pair<glm::dvec3, double> toLight(const Light& light, const SurfacePoint& point) {
+    if (light.type == LightType::Directional) return {-safeNormalize(light.direction, point.normal), 0.0};
+    const glm::dvec3 d = light.position - point.position;
+    // A light exactly on the surface lights it head-on rather than from an undefined direction.
+    return {safeNormalize(d, point.normal), glm::length(d)};
+}
+
+double attenuation(const Light& light, double t) {
+    if (light.type == LightType::Directional) return 1;
+    const glm::dvec3& k = light.attenuation;
+    // a, b, c >= 0 with a positive sum is validated, but a = 0 with the light on the surface (t = 0) would
+    // still divide by zero: the floor keeps the result finite (the colour is clamped anyway).
+    return 1 / std::max(k.x + k.y * t + k.z * t * t, kMinAttenuationDenominator);
+}
+
+double spotFactor(const Light& light, const glm::dvec3& l) {
+    if (light.type != LightType::Spot) return 1;
+    const glm::dvec3 d = safeNormalize(light.direction, -l);
+    const double cosAngle = glm::dot(-l, d);
+    if (cosAngle < std::cos(light.cutoffDeg * std::numbers::pi / 180)) return 0;
+    // Exponent 0 gives 1 even at cos = 0 (a 90° cone's rim), where GLSL's pow(0, 0) is undefined.
+    return light.exponent > 0 ? std::pow(std::max(cosAngle, 0.0), light.exponent) : 1.0;
+}
+
+double specular(const SurfacePoint& p, const glm::dvec3& l, double lDotN, double shininess,
+                LightingModel model) {
+    const double exponent = std::max(shininess, 1.0); // pow(0, 0) is undefined in GLSL
+    if (model == LightingModel::Phong) {
+        const glm::dvec3 r = -l + 2 * lDotN * p.normal;
+        return std::pow(std::max(glm::dot(p.toViewer, r), 0.0), exponent);
+    }
+    const glm::dvec3 h = safeNormalize(p.toViewer + l, p.normal);
+    return std::pow(std::max(glm::dot(p.normal, h), 0.0), exponent);
+}
+
+} // namespace
+
+std::string_view toString(ShadingMode mode) {
+    switch (mode) {
+    case ShadingMode::Flat: return "flat";
+    case ShadingMode::Gouraud: return "gouraud";
+    case ShadingMode::Phong: return "phong";
+    case ShadingMode::Toon: return "toon";
+    }
+    return "?";
+}
+
+std::string_view toString(LightingModel model) {
+    return model == LightingModel::Phong ? "phong" : "blinn-phong";
+}
+
+std::string_view toString(LightType type) {
+    switch (type) {
+    case LightType::Ambient: return "ambient";
+    case LightType::Directional: return "directional";
+    case LightType::Point: return "point";
+    case LightType::Spot: return "spot";
+    }
+    return "?";
+}
+
+std::optional<ShadingMode> parseShadingMode(std::string_view text) { return parseEnum(text, kShadingModes); }
+std::optional<LightingModel> parseLightingModel(std::string_view text) {
+    return parseEnum(text, kLightingModels);
+}
+std::optional<LightType> parseLightType(std::string_view text) { return parseEnum(text, kLightTypes); }
+
+Light transformLight(const Light& light, const glm::dmat4& m) {
+    Light out = light;
+    out.position = glm::dvec3(m * glm::dvec4(light.position, 1.0));
+    out.direction = glm::dmat3(m) * light.direction;
+    return out;
+}
+
+glm::dvec3 safeNormalize(const glm::dvec3& v, const glm::dvec3& fallback) {
+    const double length2 = glm::dot(v, v);
+    if (!(length2 > kTinyLength2) || !std::isfinite(length2)) return fallback;
+    return v / std::sqrt(length2);
+}
+
+glm::dvec3 shade(const SurfacePoint& p, const Material& material, std::span<const Light> lights,
+                 ShadeOptions options) {
+    glm::dvec3 color(0.0);
+    for (const Light& light : lights) {
+        color += material.ambient * light.ambient; // neither attenuated nor spot-limited
+        if (light.type == LightType::Ambient) continue;
+
+        const auto [l, t] = toLight(light, p);
+        const double factor = attenuation(light, t) * spotFactor(light, l);
+        const double lDotN = glm::dot(l, p.normal);
+        double diffuse = std::max(lDotN, 0.0);
+        double spec = lDotN > 0 ? specular(p, l, lDotN, material.shininess, options.model) : 0.0;
+        if (options.toon) {
+            diffuse = std::ceil(diffuse * kToonBands) / kToonBands;
+            spec = spec > kToonHighlight ? 1.0 : 0.0;
+        }
+        color += factor * (material.diffuse * light.diffuse * diffuse + material.specular * light.specular * spec);
+    }
+    return color;
+}
+
+glm::dvec3 clampColor(const glm::dvec3& c) {
+    auto clamp01 = [](double x) { return x > 0 ? std::min(x, 1.0) : 0.0; }; // NaN → 0
+    return {clamp01(c.x), clamp01(c.y), clamp01(c.z)};
+}
+
+} // namespace shadelab

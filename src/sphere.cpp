@@ -1,1 +1,172 @@
-// placeholder: being written
+#include "shadelab/sphere.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <sstream>
+#include <unordered_map>
+
+#include "shadelab/errors.h"
+
+namespace shadelab {
+namespace {
+
+// DESIGN §1: the start tetrahedron and its counter-clockwise faces.
+const double kSqrt2 = std::sqrt(2.0), kSqrt6 = std::sqrt(6.0);
+const std::array<glm::dvec3, 4> kTetrahedron = {
+    glm::dvec3{0, 0, 1},
+    glm::dvec3{0, 2 * kSqrt2 / 3, -1.0 / 3},
+    glm::dvec3{-kSqrt6 / 3, -kSqrt2 / 3, -1.0 / 3},
+    glm::dvec3{kSqrt6 / 3, -kSqrt2 / 3, -1.0 / 3},
+};
+constexpr std::array<glm::uvec3, 4> kTetrahedronFaces = {
+    glm::uvec3{3, 2, 1}, glm::uvec3{0, 1, 2}, glm::uvec3{0, 3, 1}, glm::uvec3{0, 2, 3}};
+
+// The edge-midpoint map: each edge's midpoint vertex is made once and shared by both faces of the edge.
+class MidpointCache {
+public:
+    MidpointCache(std::vector<glm::dvec3>& positions, std::size_t edges) : positions_(positions) {
+        cache_.reserve(edges);
+    }
+    std::uint32_t midpoint(std::uint32_t a, std::uint32_t b) {
+        const std::uint64_t key = (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
+        auto [it, inserted] = cache_.try_emplace(key, std::uint32_t(positions_.size()));
+        if (inserted) positions_.push_back(glm::normalize((positions_[a] + positions_[b]) * 0.5));
+        return it->second;
+    }
+
+private:
+    std::vector<glm::dvec3>& positions_;
+    std::unordered_map<std::uint64_t, std::uint32_t> cache_;
+};
+
+glm::dvec3 faceNormal(const std::vector<glm::dvec3>& p, const glm::uvec3& t) {
+    return glm::normalize(glm::cross(p[t.y] - p[t.x], p[t.z] - p[t.x]));
+}
+
+std::string mebibytes(std::size_t bytes) {
+    std::ostringstream out;
+    out.precision(3);
+    out << double(bytes) / (1024.0 * 1024.0) << " MiB";
+    return out.str();
+}
+
+} // namespace
+
+std::size_t sphereVertexCount(int level) { return 2 * (std::size_t(1) << (2 * level)) + 2; }
+std::size_t sphereTriangleCount(int level) { return std::size_t(4) << (2 * level); }
+
+std::size_t sphereMemoryBytes(int level) {
+    const std::size_t v = sphereVertexCount(level), f = sphereTriangleCount(level);
+    const std::size_t cpu = v * 2 * sizeof(glm::dvec3) + f * (sizeof(glm::uvec3) + sizeof(glm::dvec3));
+    const std::size_t edgeMap = 6 * (f / 4) * (sizeof(std::uint64_t) + sizeof(std::uint32_t) + 16);
+    const std::size_t gpuReady = std::max(v * sizeof(SmoothVertex) + f * 3 * sizeof(std::uint32_t),
+                                          f * 3 * sizeof(FlatVertex));
+    return cpu + edgeMap + gpuReady;
+}
+
+void checkSubdivisionLevel(int level, const char* field) {
+    if (level < 0) {
+        throw InputError(std::string(field) + ": must be >= 0, got " + std::to_string(level));
+    }
+    if (level > kMaxSubdivisions) {
+        // Shifts past 62 overflow: name the memory only where it can be computed.
+        const std::string memory = level <= 30 ? "would need about " + mebibytes(sphereMemoryBytes(level)) +
+                                                     " (" + std::to_string(sphereTriangleCount(level)) +
+                                                     " triangles)"
+                                               : "would need more memory than any machine has";
+        throw InputError(std::string(field) + ": level " + std::to_string(level) + " " + memory +
+                         "; the maximum supported level is " + std::to_string(kMaxSubdivisions) + " (" +
+                         mebibytes(sphereMemoryBytes(kMaxSubdivisions)) + ")");
+    }
+}
+
+SphereMesh buildSphere(int level, VertexNormals normals) {
+    checkSubdivisionLevel(level);
+    SphereMesh mesh;
+    mesh.level = level;
+    mesh.positions.reserve(sphereVertexCount(level));
+    mesh.positions.assign(kTetrahedron.begin(), kTetrahedron.end());
+    mesh.triangles.assign(kTetrahedronFaces.begin(), kTetrahedronFaces.end());
+
+    std::vector<glm::uvec3> next;
+    next.reserve(sphereTriangleCount(level));
+    MidpointCache midpoints(mesh.positions, 6 * sphereTriangleCount(level) / 4);
+    for (int n = 0; n < level; ++n) {
+        next.clear();
+        for (const glm::uvec3& t : mesh.triangles) {
+            const std::uint32_t ab = midpoints.midpoint(t.x, t.y);
+            const std::uint32_t bc = midpoints.midpoint(t.y, t.z);
+            const std::uint32_t ac = midpoints.midpoint(t.x, t.z);
+            next.push_back({t.x, ab, ac});
+            next.push_back({ab, t.y, bc});
+            next.push_back({bc, t.z, ac});
+            next.push_back({ab, bc, ac});
+        }
+        std::swap(mesh.triangles, next);
+    }
+
+    mesh.faceNormals.resize(mesh.triangles.size());
+    for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
+        mesh.faceNormals[i] = faceNormal(mesh.positions, mesh.triangles[i]);
+
+    if (normals == VertexNormals::Exact) {
+        mesh.vertexNormals = mesh.positions; // the unit sphere's normal is its position
+    } else {
+        // The seed's definition: the normalized average of the unit normals of the incident faces.
+        mesh.vertexNormals.assign(mesh.positions.size(), glm::dvec3(0));
+        for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
+            for (int k = 0; k < 3; ++k) mesh.vertexNormals[mesh.triangles[i][k]] += mesh.faceNormals[i];
+        for (glm::dvec3& n : mesh.vertexNormals) n = glm::normalize(n);
+    }
+    return mesh;
+}
+
+std::vector<SmoothVertex> smoothVertices(const SphereMesh& mesh) {
+    std::vector<SmoothVertex> out(mesh.positions.size());
+    for (std::size_t i = 0; i < out.size(); ++i)
+        out[i] = {glm::vec3(mesh.positions[i]), glm::vec3(mesh.vertexNormals[i])};
+    return out;
+}
+
+std::vector<std::uint32_t> smoothIndices(const SphereMesh& mesh) {
+    std::vector<std::uint32_t> out;
+    out.reserve(mesh.triangles.size() * 3);
+    for (const glm::uvec3& t : mesh.triangles) out.insert(out.end(), {t.x, t.y, t.z});
+    return out;
+}
+
+std::vector<FlatVertex> flatVertices(const SphereMesh& mesh) {
+    std::vector<FlatVertex> out;
+    out.reserve(mesh.triangles.size() * 3);
+    for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+        const glm::uvec3& t = mesh.triangles[i];
+        const glm::dvec3 centroid = (mesh.positions[t.x] + mesh.positions[t.y] + mesh.positions[t.z]) / 3.0;
+        for (int k = 0; k < 3; ++k)
+            out.push_back({glm::vec3(mesh.positions[t[k]]), glm::vec3(centroid), glm::vec3(mesh.faceNormals[i])});
+    }
+    return out;
+}
+
+double maxRadialDeviation(const SphereMesh& mesh) {
+    // Vertices lie on the sphere, so the deepest point of a face is the foot of the perpendicular from the
+    // origin when it falls inside the face; otherwise it lies on an edge, whose deepest point is its
+    // midpoint (both ends are at radius 1).
+    double minDistance = 1;
+    for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+        const glm::uvec3& t = mesh.triangles[i];
+        const glm::dvec3 a = mesh.positions[t.x], b = mesh.positions[t.y], c = mesh.positions[t.z];
+        const glm::dvec3 n = mesh.faceNormals[i];
+        const glm::dvec3 foot = glm::dot(a, n) * n;
+        const bool inside = glm::dot(glm::cross(b - a, foot - a), n) >= 0 &&
+                            glm::dot(glm::cross(c - b, foot - b), n) >= 0 &&
+                            glm::dot(glm::cross(a - c, foot - c), n) >= 0;
+        const double d = inside ? glm::length(foot)
+                                : std::min({glm::length((a + b) * 0.5), glm::length((b + c) * 0.5),
+                                            glm::length((c + a) * 0.5)});
+        minDistance = std::min(minDistance, d);
+    }
+    return 1 - minDistance;
+}
+
+} // namespace shadelab

@@ -1,1 +1,92 @@
-int main() { return 0; }
+// shadelab's command line: the demo window (default), `render` and `reference` (DESIGN §5).
+#include <cstdio>
+#include <exception>
+
+#include <CLI/CLI.hpp>
+
+#include "app/commands.h"
+#include "shadelab/errors.h"
+
+namespace {
+
+using namespace shadelab;
+
+std::string joined(std::string_view a, std::string_view b, std::string_view c = {}, std::string_view d = {}) {
+    std::string out(a);
+    for (std::string_view s : {b, c, d})
+        if (!s.empty()) out.append(", ").append(s);
+    return out;
+}
+
+void addSceneFlags(CLI::App& command, app::SceneOverrides& o) {
+    command.add_option("--shading", o.shading,
+                       "Shading mode: " + joined("flat", "gouraud", "phong", "toon") + " (overrides the scene)");
+    command.add_option("--lighting", o.lighting, "Lighting model: phong, blinn-phong (overrides the scene)");
+    command.add_option("--subdivisions", o.subdivisions,
+                       "Subdivision level of every object, 0.." + std::to_string(kMaxSubdivisions));
+    command.add_option("--size", o.size, "Image size WxH, e.g. 512x512 (overrides the scene)");
+}
+
+int run(int argc, char** argv) {
+    CLI::App cli{"shadelab: flat, Gouraud, Phong and toon shading under Phong and Blinn-Phong lighting, on a "
+                 "sphere subdivided from a tetrahedron.\nWithout a subcommand: the demo window (or, with no "
+                 "display, the showcase PNG).",
+                 "shadelab"};
+    cli.set_help_all_flag("--help-all", "Help for every subcommand");
+    std::string demoScene, showcaseOut = "shadelab-showcase.png";
+    cli.add_option("scene", demoScene, "Scene file (JSON, DESIGN §4) for the demo");
+    cli.add_option("--showcase-out", showcaseOut, "Where the showcase goes when there is no display")
+        ->capture_default_str();
+
+    app::SceneOverrides renderFlags;
+    std::string renderScene, renderOut, backendName = "egl";
+    CLI::App* render = cli.add_subcommand("render", "Render a scene headless to a PNG");
+    render->add_option("scene", renderScene, "Scene file (JSON); the defaults of DESIGN §4 if omitted");
+    addSceneFlags(*render, renderFlags);
+    render->add_option("--backend", backendName, "Headless context: egl or osmesa")->capture_default_str();
+    render->add_option("--out", renderOut, "Output PNG")->required();
+
+    std::string referenceScene, referenceOut;
+    app::SceneOverrides referenceFlags;
+    CLI::App* reference = cli.add_subcommand("reference", "Ray-cast the exact spheres on the CPU to a PNG");
+    reference->add_option("scene", referenceScene, "Scene file (JSON)");
+    addSceneFlags(*reference, referenceFlags);
+    reference->add_option("--out", referenceOut, "Output PNG")->required();
+
+    try {
+        cli.parse(argc, argv);
+    } catch (const CLI::Success& e) {
+        return cli.exit(e);
+    } catch (const CLI::ParseError& e) {
+        cli.exit(e); // prints the message naming the argument
+        return kExitInputError;
+    }
+
+    if (*render) {
+        const Scene scene = app::composeScene(renderScene, renderFlags);
+        const Backend backend = app::backendFromArgument(backendName);
+        app::checkOutputPath(renderOut);
+        return app::runRender(scene, backend, renderOut);
+    }
+    if (*reference) {
+        const Scene scene = app::composeScene(referenceScene, referenceFlags);
+        app::checkOutputPath(referenceOut);
+        return app::runReference(scene, referenceOut);
+    }
+    app::checkOutputPath(showcaseOut, "--showcase-out");
+    return app::runDemo(app::composeScene(demoScene, {}), showcaseOut);
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const InputError& e) {
+        std::fprintf(stderr, "shadelab: %s\n", e.what());
+        return kExitInputError;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "shadelab: %s\n", e.what());
+        return kExitRuntimeError;
+    }
+}

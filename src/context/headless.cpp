@@ -1,1 +1,55 @@
-// placeholder: being written
+#include "shadelab/headless.h"
+
+#include "shadelab/errors.h"
+#include "shadelab/gl/loader.h"
+#include "shadelab/gl/render_target.h"
+#include "shadelab/gl/renderer.h"
+
+namespace shadelab {
+
+std::string_view toString(Backend backend) { return backend == Backend::Egl ? "egl" : "osmesa"; }
+
+std::optional<Backend> parseBackend(std::string_view text) {
+    if (text == "egl") return Backend::Egl;
+    if (text == "osmesa") return Backend::Osmesa;
+    return std::nullopt;
+}
+
+std::vector<Backend> availableBackends() {
+    if (SHADELAB_HAVE_OSMESA) return {Backend::Egl, Backend::Osmesa};
+    return {Backend::Egl};
+}
+
+#if !SHADELAB_HAVE_OSMESA
+std::unique_ptr<HeadlessContext> makeOsmesaContext() {
+    throw RuntimeError("osmesa: this shadelab was built without OSMesa (libosmesa6-dev was not found at "
+                       "configure time); use --backend egl");
+}
+#endif
+
+std::unique_ptr<HeadlessContext> makeHeadlessContext(Backend backend) {
+    return backend == Backend::Egl ? makeEglContext() : makeOsmesaContext();
+}
+
+HeadlessRenderer::HeadlessRenderer(Backend backend)
+    : backend_(backend), context_(makeHeadlessContext(backend)), renderer_(std::make_unique<gl::Renderer>()),
+      rendererString_(gl::rendererString()) {}
+
+// The renderer's GL objects must go while the context is still current.
+HeadlessRenderer::~HeadlessRenderer() { renderer_.reset(); }
+
+Image HeadlessRenderer::render(const Scene& scene) {
+    const gl::RenderTarget target(scene.width, scene.height, gl::ColorFormat::Rgba8);
+    target.bind();
+    renderer_->render(scene, scene.width, scene.height);
+    return target.readRgba8();
+}
+
+ImageF HeadlessRenderer::renderFloat(const Scene& scene) {
+    const gl::RenderTarget target(scene.width, scene.height, gl::ColorFormat::Rgba32F);
+    target.bind();
+    renderer_->render(scene, scene.width, scene.height);
+    return target.readFloat();
+}
+
+} // namespace shadelab

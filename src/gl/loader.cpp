@@ -1,1 +1,45 @@
-// placeholder: being written
+#include "shadelab/gl/loader.h"
+
+#include <glad/gl.h>
+
+#include "shadelab/errors.h"
+#include "shadelab/gl/handles.h"
+
+namespace shadelab::gl {
+
+void loadGl(ProcAddressFn getProcAddress, const char* backend) {
+    const int version = gladLoadGL(getProcAddress);
+    if (version == 0)
+        throw RuntimeError(std::string(backend) + ": loading OpenGL entry points failed (glad)");
+    const int major = GLAD_VERSION_MAJOR(version), minor = GLAD_VERSION_MINOR(version);
+    if (major < 3 || (major == 3 && minor < 3))
+        throw RuntimeError(std::string(backend) + ": the context offers OpenGL " + std::to_string(major) + "." +
+                           std::to_string(minor) + "; shadelab needs 3.3 core");
+}
+
+std::string rendererString() {
+    auto text = [](GLenum name) {
+        const auto* s = reinterpret_cast<const char*>(glGetString(name));
+        return std::string(s ? s : "?");
+    };
+    return text(GL_RENDERER) + ", OpenGL " + text(GL_VERSION);
+}
+
+void checkGlError(const char* stage) {
+    const GLenum error = glGetError();
+    if (error == GL_NO_ERROR) return;
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    char code[16];
+    std::snprintf(code, sizeof code, "0x%04X", error);
+    throw RuntimeError(std::string("GL error ") + code + " in " + stage);
+}
+
+void deleteBuffer(Id id) { glDeleteBuffers(1, &id); }
+void deleteVertexArray(Id id) { glDeleteVertexArrays(1, &id); }
+void deleteShader(Id id) { glDeleteShader(id); }
+void deleteProgram(Id id) { glDeleteProgram(id); }
+void deleteFramebuffer(Id id) { glDeleteFramebuffers(1, &id); }
+void deleteRenderbuffer(Id id) { glDeleteRenderbuffers(1, &id); }
+
+} // namespace shadelab::gl

@@ -1,1 +1,62 @@
-// placeholder: being written
+#include "shadelab/gl/mesh.h"
+
+#include <cstddef>
+
+#include <glad/gl.h>
+
+namespace shadelab::gl {
+namespace {
+
+template <typename T>
+void upload(GLenum target, const Buffer& buffer, const std::vector<T>& data) {
+    glBindBuffer(target, buffer.get());
+    glBufferData(target, GLsizeiptr(data.size() * sizeof(T)), data.data(), GL_STATIC_DRAW);
+}
+
+void attribute(GLuint location, GLsizei stride, std::size_t offset) {
+    glEnableVertexAttribArray(location);
+    glVertexAttribPointer(location, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(offset));
+}
+
+Id genVertexArray() {
+    Id id = 0;
+    glGenVertexArrays(1, &id);
+    return id;
+}
+
+Id genBuffer() {
+    Id id = 0;
+    glGenBuffers(1, &id);
+    return id;
+}
+
+} // namespace
+
+GpuMesh::GpuMesh(const SphereMesh& mesh, MeshLayout layout)
+    : layout_(layout), triangles_(int(mesh.triangles.size())), vao_(genVertexArray()), vertices_(genBuffer()) {
+    glBindVertexArray(vao_.get());
+    if (layout == MeshLayout::Smooth) {
+        upload(GL_ARRAY_BUFFER, vertices_, smoothVertices(mesh));
+        indices_ = Buffer(genBuffer());
+        upload(GL_ELEMENT_ARRAY_BUFFER, indices_, smoothIndices(mesh)); // recorded in the VAO
+        attribute(kPositionAttribute, sizeof(SmoothVertex), offsetof(SmoothVertex, position));
+        attribute(kNormalAttribute, sizeof(SmoothVertex), offsetof(SmoothVertex, normal));
+    } else {
+        upload(GL_ARRAY_BUFFER, vertices_, flatVertices(mesh));
+        attribute(kPositionAttribute, sizeof(FlatVertex), offsetof(FlatVertex, position));
+        attribute(kNormalAttribute, sizeof(FlatVertex), offsetof(FlatVertex, faceNormal));
+        attribute(kCentroidAttribute, sizeof(FlatVertex), offsetof(FlatVertex, centroid));
+    }
+    glBindVertexArray(0);
+}
+
+void GpuMesh::draw() const {
+    glBindVertexArray(vao_.get());
+    if (layout_ == MeshLayout::Smooth)
+        glDrawElements(GL_TRIANGLES, triangles_ * 3, GL_UNSIGNED_INT, nullptr);
+    else
+        glDrawArrays(GL_TRIANGLES, 0, triangles_ * 3);
+    glBindVertexArray(0);
+}
+
+} // namespace shadelab::gl

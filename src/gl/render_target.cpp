@@ -1,1 +1,85 @@
-// placeholder: being written
+#include "shadelab/gl/render_target.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include <glad/gl.h>
+
+#include "shadelab/errors.h"
+#include "shadelab/gl/loader.h"
+
+namespace shadelab::gl {
+namespace {
+
+Id genRenderbuffer(GLenum format, int width, int height) {
+    Id id = 0;
+    glGenRenderbuffers(1, &id);
+    glBindRenderbuffer(GL_RENDERBUFFER, id);
+    glRenderbufferStorage(GL_RENDERBUFFER, format, width, height);
+    return id;
+}
+
+void checkSize(int width, int height) {
+    GLint maxRenderbuffer = 0;
+    GLint maxViewport[2] = {0, 0};
+    glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxRenderbuffer);
+    glGetIntegerv(GL_MAX_VIEWPORT_DIMS, maxViewport);
+    const int limit = std::min({maxRenderbuffer, maxViewport[0], maxViewport[1]});
+    if (width < 1 || height < 1 || width > limit || height > limit)
+        throw InputError("image size " + std::to_string(width) + "x" + std::to_string(height) +
+                         ": this GL context renders at most " + std::to_string(limit) + "x" +
+                         std::to_string(limit) + "; choose a smaller --size");
+}
+
+// GL rows run bottom to top; images run top to bottom. This is the one place rows are flipped.
+template <typename T>
+void flipRows(std::vector<T>& pixels, int width, int height) {
+    const std::size_t row = std::size_t(width) * 4;
+    for (int y = 0; y < height / 2; ++y)
+        std::swap_ranges(pixels.begin() + std::ptrdiff_t(y * row), pixels.begin() + std::ptrdiff_t((y + 1) * row),
+                         pixels.begin() + std::ptrdiff_t((height - 1 - y) * row));
+}
+
+} // namespace
+
+RenderTarget::RenderTarget(int width, int height, ColorFormat format)
+    : width_(width), height_(height), format_(format) {
+    checkSize(width, height);
+    Id fbo = 0;
+    glGenFramebuffers(1, &fbo);
+    fbo_ = Framebuffer(fbo);
+    color_ = Renderbuffer(genRenderbuffer(format == ColorFormat::Rgba8 ? GL_RGBA8 : GL_RGBA32F, width, height));
+    depth_ = Renderbuffer(genRenderbuffer(GL_DEPTH_COMPONENT24, width, height));
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_.get());
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.get());
+    const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE)
+        throw RuntimeError("offscreen framebuffer " + std::to_string(width) + "x" + std::to_string(height) +
+                           " is incomplete (status " + std::to_string(status) + ")");
+    checkGlError("creating the offscreen framebuffer");
+}
+
+void RenderTarget::bind() const { glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get()); }
+
+Image RenderTarget::readRgba8() const {
+    Image image(width_, height_);
+    bind();
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+    checkGlError("reading back the image");
+    flipRows(image.rgba, width_, height_);
+    return image;
+}
+
+ImageF RenderTarget::readFloat() const {
+    ImageF image(width_, height_);
+    bind();
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, image.rgba.data());
+    checkGlError("reading back the float image");
+    flipRows(image.rgba, width_, height_);
+    return image;
+}
+
+} // namespace shadelab::gl

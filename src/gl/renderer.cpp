@@ -1,1 +1,129 @@
-// placeholder: being written
+#include "shadelab/gl/renderer.h"
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <glad/gl.h>
+
+#include "shadelab/gl/loader.h"
+
+namespace shadelab::gl {
+namespace {
+
+void setVec3(GLuint program, const std::string& name, const glm::dvec3& value) {
+    const glm::vec3 v(value);
+    glUniform3fv(glGetUniformLocation(program, name.c_str()), 1, glm::value_ptr(v));
+}
+
+void setFloat(GLuint program, const std::string& name, double value) {
+    glUniform1f(glGetUniformLocation(program, name.c_str()), float(value));
+}
+
+void setInt(GLuint program, const std::string& name, int value) {
+    glUniform1i(glGetUniformLocation(program, name.c_str()), value);
+}
+
+int lightTypeCode(LightType type) {
+    switch (type) { // the LIGHT_* constants of shaders/lighting.glsl
+    case LightType::Ambient: return 0;
+    case LightType::Directional: return 1;
+    case LightType::Point: return 2;
+    case LightType::Spot: return 3;
+    }
+    return 0;
+}
+
+// Lights are given in world space and lit in view space.
+void setLights(GLuint program, const std::vector<Light>& lights, const glm::dmat4& viewFromWorld) {
+    const int count = std::min<int>(int(lights.size()), kMaxLights); // validateScene rejects more
+    setInt(program, "uLightCount", count);
+    for (int i = 0; i < count; ++i) {
+        const Light view = transformLight(lights[std::size_t(i)], viewFromWorld);
+        const std::string prefix = "uLights[" + std::to_string(i) + "].";
+        setInt(program, prefix + "type", lightTypeCode(view.type));
+        setVec3(program, prefix + "ambient", view.ambient);
+        setVec3(program, prefix + "diffuse", view.diffuse);
+        setVec3(program, prefix + "specular", view.specular);
+        setVec3(program, prefix + "positionView", view.position);
+        setVec3(program, prefix + "directionView", safeNormalize(view.direction, glm::dvec3(0, 0, -1)));
+        setFloat(program, prefix + "cosCutoff", std::cos(view.cutoffDeg * std::numbers::pi / 180));
+        setFloat(program, prefix + "exponent", view.exponent);
+        setVec3(program, prefix + "attenuation", view.attenuation);
+    }
+}
+
+void setMaterial(GLuint program, const Material& material) {
+    setVec3(program, "uMaterialAmbient", material.ambient);
+    setVec3(program, "uMaterialDiffuse", material.diffuse);
+    setVec3(program, "uMaterialSpecular", material.specular);
+    setFloat(program, "uShininess", std::max(material.shininess, 1.0));
+}
+
+void setTransforms(GLuint program, const glm::dmat4& clipFromView, const glm::dmat4& viewFromObject) {
+    // Composed in double; only the camera-relative products are rounded to float.
+    const glm::mat4 clipFromObject(clipFromView * viewFromObject);
+    const glm::mat4 viewFromObjectF(viewFromObject);
+    const glm::mat3 normalViewFromObject(normalMatrix(viewFromObject));
+    glUniformMatrix4fv(glGetUniformLocation(program, "uClipFromObject"), 1, GL_FALSE,
+                       glm::value_ptr(clipFromObject));
+    glUniformMatrix4fv(glGetUniformLocation(program, "uViewFromObject"), 1, GL_FALSE,
+                       glm::value_ptr(viewFromObjectF));
+    glUniformMatrix3fv(glGetUniformLocation(program, "uNormalViewFromObject"), 1, GL_FALSE,
+                       glm::value_ptr(normalViewFromObject));
+    // A mirrored object turns its counter-clockwise faces clockwise on screen.
+    glFrontFace(glm::determinant(glm::dmat3(viewFromObject)) < 0 ? GL_CW : GL_CCW);
+}
+
+} // namespace
+
+Renderer::Renderer() = default;
+
+const GpuMesh& Renderer::mesh(int level, VertexNormals normals, MeshLayout layout) {
+    // Flat shading reads face normals only, so both vertex-normal kinds share one flat mesh.
+    if (layout == MeshLayout::Flat) normals = VertexNormals::Averaged;
+    auto& slot = meshes_[{level, normals, layout}];
+    if (!slot) slot = std::make_unique<GpuMesh>(buildSphere(level, normals), layout);
+    return *slot;
+}
+
+Id Renderer::program(const ProgramVariant& variant) {
+    auto& slot = programs_[variant];
+    if (!slot) slot = buildProgram(variant);
+    return slot.get();
+}
+
+void Renderer::render(const Scene& scene, int width, int height) {
+    if (width <= 0 || height <= 0) return; // a minimized window: nothing to draw, no NaN aspect
+    Scene sized = scene;
+    sized.width = width;
+    sized.height = height;
+    const SceneView view = sceneView(sized);
+
+    glViewport(0, 0, width, height);
+    glClearColor(float(scene.background.x), float(scene.background.y), float(scene.background.z), 0.0f);
+    // DESIGN §2: near maps to NDC z = +1, so the nearer surface has the greater depth.
+    glClearDepth(0.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_GREATER);
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+
+    const GLuint prog = program({scene.shading, scene.lighting});
+    glUseProgram(prog);
+    setLights(prog, scene.lights, view.viewFromWorld);
+    setInt(prog, "uOrthographic", view.orthographic ? 1 : 0);
+    const MeshLayout layout = scene.shading == ShadingMode::Flat ? MeshLayout::Flat : MeshLayout::Smooth;
+    for (const SceneObject& object : scene.objects) {
+        setMaterial(prog, object.material);
+        setTransforms(prog, view.clipFromView, view.viewFromWorld * worldFromObject(object));
+        mesh(object.subdivisions, scene.vertexNormals, layout).draw();
+    }
+    glUseProgram(0);
+    checkGlError("rendering the scene");
+}
+
+} // namespace shadelab::gl

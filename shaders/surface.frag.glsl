@@ -1,0 +1,25 @@
+// Fragment stage of every surface program. lighting.glsl is prepended.
+// Defines it responds to: SHADING_FLAT, SHADING_GOURAUD (colour from the vertex stage) or SHADING_PHONG,
+// SHADING_TOON (lighting per fragment with the interpolated, renormalized normal).
+// Alpha is coverage: 1 on objects; the background is cleared to alpha 0.
+
+out vec4 fragColor;
+
+#if defined(SHADING_FLAT)
+flat in vec3 vColor;
+#elif defined(SHADING_GOURAUD)
+in vec3 vColor;
+#else
+in vec3 vPositionView;
+in vec3 vNormalView;
+#endif
+
+void main() {
+#if defined(SHADING_FLAT) || defined(SHADING_GOURAUD)
+    fragColor = vec4(vColor, 1.0);
+#else
+    vec3 normalView = safeNormalize(vNormalView, vec3(0.0, 0.0, 1.0));
+    vec3 color = shade(vPositionView, normalView, toViewer(vPositionView, normalView));
+    fragColor = vec4(clamp(color, 0.0, 1.0), 1.0);
+#endif
+}

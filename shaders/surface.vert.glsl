@@ -1,0 +1,42 @@
+// Vertex stage of every surface program. lighting.glsl is prepended.
+// Defines it responds to (exactly one of):
+//   SHADING_FLAT     light once per triangle at its centroid with its face normal (attribute 2: centroid)
+//   SHADING_GOURAUD  light per vertex with the vertex normal, clamp, interpolate the colour
+//   SHADING_PHONG, SHADING_TOON  pass view-space position and normal on for per-fragment lighting
+
+layout(location = 0) in vec3 aPositionObject;
+layout(location = 1) in vec3 aNormalObject; // flat: the face normal
+#ifdef SHADING_FLAT
+layout(location = 2) in vec3 aCentroidObject;
+#endif
+
+uniform mat4 uClipFromObject;       // composed in double on the CPU
+uniform mat4 uViewFromObject;       // camera-relative: no large world coordinates reach float
+uniform mat3 uNormalViewFromObject; // cofactor of the upper 3×3: normals need renormalizing
+
+#if defined(SHADING_FLAT)
+flat out vec3 vColor;
+#elif defined(SHADING_GOURAUD)
+out vec3 vColor;
+#else
+out vec3 vPositionView;
+out vec3 vNormalView;
+#endif
+
+vec3 lightAt(vec3 pointObject) {
+    vec3 positionView = (uViewFromObject * vec4(pointObject, 1.0)).xyz;
+    vec3 normalView = safeNormalize(uNormalViewFromObject * aNormalObject, vec3(0.0, 0.0, 1.0));
+    return clamp(shade(positionView, normalView, toViewer(positionView, normalView)), 0.0, 1.0);
+}
+
+void main() {
+    gl_Position = uClipFromObject * vec4(aPositionObject, 1.0);
+#if defined(SHADING_FLAT)
+    vColor = lightAt(aCentroidObject);
+#elif defined(SHADING_GOURAUD)
+    vColor = lightAt(aPositionObject);
+#else
+    vPositionView = (uViewFromObject * vec4(aPositionObject, 1.0)).xyz;
+    vNormalView = uNormalViewFromObject * aNormalObject;
+#endif
+}

@@ -1,0 +1,91 @@
+#include <cstdio>
+#include <regex>
+
+#include "app/commands.h"
+#include "shadelab/errors.h"
+#include "shadelab/headless.h"
+#include "shadelab/reference.h"
+
+namespace shadelab::app {
+namespace {
+
+std::string quoted(const std::string& s) { return "\"" + s + "\""; }
+
+void applySize(Scene& scene, const std::string& text) {
+    static const std::regex kSize(R"(([0-9]{1,9})x([0-9]{1,9}))");
+    std::smatch m;
+    const std::string range = "1.." + std::to_string(kMaxImageSize);
+    if (!std::regex_match(text, m, kSize))
+        throw InputError("--size: expected WxH with W and H in " + range + " (e.g. 512x512), got " + quoted(text));
+    const long width = std::stol(m[1]), height = std::stol(m[2]);
+    if (width < 1 || height < 1 || width > kMaxImageSize || height > kMaxImageSize)
+        throw InputError("--size: W and H must be in " + range + ", got " + quoted(text));
+    scene.width = int(width);
+    scene.height = int(height);
+}
+
+} // namespace
+
+Scene composeScene(const std::string& path, const SceneOverrides& o) {
+    Scene scene = path.empty() ? Scene{} : loadScene(path);
+    if (o.shading) {
+        const auto mode = parseShadingMode(*o.shading);
+        if (!mode)
+            throw InputError("--shading: unknown value " + quoted(*o.shading) +
+                             "; expected one of flat, gouraud, phong, toon");
+        scene.shading = *mode;
+    }
+    if (o.lighting) {
+        const auto model = parseLightingModel(*o.lighting);
+        if (!model)
+            throw InputError("--lighting: unknown value " + quoted(*o.lighting) +
+                             "; expected one of phong, blinn-phong");
+        scene.lighting = *model;
+    }
+    if (o.subdivisions) {
+        checkSubdivisionLevel(*o.subdivisions, "--subdivisions");
+        for (SceneObject& object : scene.objects) object.subdivisions = *o.subdivisions;
+    }
+    if (o.size) applySize(scene, *o.size);
+    validateScene(scene);
+    return scene;
+}
+
+void checkOutputPath(const std::filesystem::path& out, const char* argument) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (out.empty()) throw InputError(std::string(argument) + ": the output path is empty");
+    if (fs::is_directory(out, ec))
+        throw InputError(std::string(argument) + ": " + quoted(out.string()) +
+                         " is a directory; give a file name such as out.png");
+    const fs::path folder = out.has_parent_path() ? out.parent_path() : fs::path(".");
+    if (!fs::is_directory(folder, ec))
+        throw InputError(std::string(argument) + ": the folder " + quoted(folder.string()) +
+                         " does not exist; create it first or choose another path");
+}
+
+Backend backendFromArgument(const std::string& name) {
+    const auto backend = parseBackend(name);
+    if (!backend) throw InputError("--backend: unknown value " + quoted(name) + "; expected egl or osmesa");
+    return *backend;
+}
+
+int runRender(const Scene& scene, Backend backend, const std::filesystem::path& out) {
+    HeadlessRenderer renderer(backend);
+    writePng(renderer.render(scene), out);
+    return kExitOk;
+}
+
+int runReference(const Scene& scene, const std::filesystem::path& out) {
+    writePng(toImage8(renderReference(scene).color), out);
+    return kExitOk;
+}
+
+int runShowcase(const Scene& scene, Backend backend, const std::filesystem::path& out) {
+    HeadlessRenderer renderer(backend);
+    writePng(renderShowcase(renderer, scene), out);
+    std::printf("%s\n", out.string().c_str());
+    return kExitOk;
+}
+
+} // namespace shadelab::app

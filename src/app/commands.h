@@ -1,0 +1,36 @@
+// The command-line entry points (DESIGN §5). Each returns the process exit code; bad input throws
+// InputError (exit 2) and run-time failures throw RuntimeError (exit 1), mapped in main.cpp.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "shadelab/context.h"
+#include "shadelab/scene.h"
+
+namespace shadelab::app {
+
+// Flags that override the scene file. Unset flags leave the scene's values.
+struct SceneOverrides {
+    std::optional<std::string> shading, lighting, size;
+    std::optional<int> subdivisions;
+};
+
+// The scene file (or the DESIGN §4 defaults when `path` is empty) with the overrides applied and the
+// result validated. Errors name the argument (e.g. "--size") or the JSON path.
+Scene composeScene(const std::string& path, const SceneOverrides& overrides);
+
+// Throws InputError naming `argument` if `out` cannot be a PNG output path (its folder missing, or it is a
+// folder itself), before any work is done.
+void checkOutputPath(const std::filesystem::path& out, const char* argument = "--out");
+
+Backend backendFromArgument(const std::string& name);
+
+int runRender(const Scene& scene, Backend backend, const std::filesystem::path& out);
+int runReference(const Scene& scene, const std::filesystem::path& out);
+// The window; without a display, the showcase rendered headless to `showcaseOut`.
+int runDemo(const Scene& scene, const std::filesystem::path& showcaseOut);
+int runShowcase(const Scene& scene, Backend backend, const std::filesystem::path& out);
+
+} // namespace shadelab::app
