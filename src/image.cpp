@@ -1,1 +1,286 @@
-// placeholder: being written
+// 8-bit and float images, atomic PNG I/O through libpng's simplified API, and the regression comparison.
+// The font lives in font.cpp.
+#include "shadelab/image.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <iomanip>
+#include <sstream>
+#include <system_error>
+#include <utility>
+
+#include <fcntl.h>
+#include <png.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "shadelab/errors.h"
+
+namespace shadelab {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::size_t checkedSize(int w, int h, std::size_t channels) {
+    if (w < 0 || h < 0)
+        throw InputError("image size " + std::to_string(w) + "x" + std::to_string(h) +
+                         ": width and height must be >= 0");
+    return std::size_t(w) * std::size_t(h) * channels;
+}
+
+std::string quoted(const fs::path& path) {
+    return "\"" + path.string() + "\"";
+}
+
+[[noreturn]] void writeFailed(const fs::path& path, const std::string& reason) {
+    throw RuntimeError("cannot write PNG " + quoted(path) + ": " + reason);
+}
+
+[[noreturn]] void readFailed(const fs::path& path, const std::string& reason) {
+    throw RuntimeError("cannot read PNG " + quoted(path) + ": " + reason);
+}
+
+// mkstemp creates files 0600; a finished render should get the permissions fopen would have given it.
+// umask can only be read by setting it, so this runs once.
+mode_t newFileMode() {
+    static const mode_t mode = [] {
+        const mode_t mask = ::umask(0);
+        ::umask(mask);
+        return mode_t(0666) & ~mask;
+    }();
+    return mode;
+}
+
+// A temporary file beside the target. Until commit() renames it over the target, the destructor removes it,
+// so an exception anywhere in writePng leaves the directory as it was.
+class TempFile {
+public:
+    explicit TempFile(const fs::path& target) : target_(target) {
+        const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+        std::string pattern = (dir / ("." + target.filename().string() + ".XXXXXX")).string();
+        const int fd = ::mkstemp(pattern.data());
+        if (fd < 0)
+            writeFailed(target,
+                        "cannot create a temporary file in " + quoted(dir) + ": " + std::strerror(errno));
+        path_ = pattern;
+        // A throwing constructor skips the destructor, so these failures clean up themselves.
+        if (::fchmod(fd, newFileMode()) != 0 || !(file_ = ::fdopen(fd, "wb"))) {
+            const std::string reason = std::strerror(errno);
+            ::close(fd);
+            cleanUp();
+            writeFailed(target, "cannot open the temporary file: " + reason);
+        }
+    }
+    TempFile(const TempFile&) = delete;
+    TempFile& operator=(const TempFile&) = delete;
+    ~TempFile() { cleanUp(); }
+
+    FILE* stream() const { return file_; }
+
+    // Everything must be on disk before the rename, or a crash could leave a complete-looking empty file.
+    void close() {
+        if (std::fflush(file_) != 0) fail("flush");
+        if (::fsync(::fileno(file_)) != 0) fail("fsync");
+        FILE* file = std::exchange(file_, nullptr);
+        if (std::fclose(file) != 0) fail("close");
+    }
+
+    void commit() {
+        std::error_code error;
+        fs::rename(path_, target_, error);
+        if (error) writeFailed(target_, "cannot rename " + quoted(path_) + " over it: " + error.message());
+        path_.clear();
+    }
+
+private:
+    [[noreturn]] void fail(const char* step) {
+        writeFailed(target_, std::string(step) + " " + quoted(path_) + ": " + std::strerror(errno));
+    }
+
+    void cleanUp() noexcept {
+        if (file_) std::fclose(std::exchange(file_, nullptr));
+        if (!path_.empty()) ::unlink(path_.c_str());
+        path_.clear();
+    }
+
+    fs::path target_, path_;
+    FILE* file_ = nullptr;
+};
+
+void checkWritable(const Image& image, const fs::path& path) {
+    if (image.width <= 0 || image.height <= 0)
+        writeFailed(path, "the image is empty (" + std::to_string(image.width) + "x" +
+                              std::to_string(image.height) + ")");
+    if (image.rgba.size() != checkedSize(image.width, image.height, 4))
+        writeFailed(path, "the pixel buffer does not match the image size");
+    if (!path.has_filename()) writeFailed(path, "the path names no file");
+    std::error_code error;
+    if (fs::is_directory(path, error)) writeFailed(path, "it is a directory");
+}
+
+// The file is opaque: alpha is coverage, which only matters before the image is composited.
+std::vector<std::uint8_t> dropAlpha(const Image& image) {
+    std::vector<std::uint8_t> rgb(image.rgba.size() / 4 * 3);
+    for (std::size_t src = 0, dst = 0; src < image.rgba.size(); src += 4, dst += 3)
+        std::copy_n(&image.rgba[src], 3, &rgb[dst]);
+    return rgb;
+}
+
+// Owns a png_image so every exit path releases libpng's state.
+struct PngImage {
+    png_image png{};
+    PngImage() { png.version = PNG_IMAGE_VERSION; }
+    PngImage(const PngImage&) = delete;
+    PngImage& operator=(const PngImage&) = delete;
+    ~PngImage() { png_image_free(&png); }
+};
+
+// Far beyond any render here; it stops a corrupt header from asking for gigabytes.
+constexpr png_uint_32 kMaxPngSide = 1 << 15;
+
+struct Span {
+    int begin, end;
+};
+
+// Clips [start, start + length) to [0, limit), in 64 bits so far-off rectangles cannot overflow.
+Span clipSpan(long long start, long long length, int limit) {
+    const long long begin = std::clamp(start, 0LL, (long long)limit);
+    const long long end = std::clamp(start + length, 0LL, (long long)limit);
+    return {int(begin), int(std::max(begin, end))};
+}
+
+} // namespace
+
+Image::Image(int w, int h) : width(w), height(h), rgba(checkedSize(w, h, 4), 0) {}
+
+ImageF::ImageF(int w, int h) : width(w), height(h), rgba(checkedSize(w, h, 4), 0.0f) {}
+
+std::uint8_t toUnorm8(double c) {
+    if (!(c > 0.0)) return 0; // also NaN
+    if (c >= 1.0) return 255;
+    return std::uint8_t(std::lround(c * 255.0));
+}
+
+Image toImage8(const ImageF& image) {
+    Image result(image.width, image.height);
+    std::transform(image.rgba.begin(), image.rgba.end(), result.rgba.begin(),
+                   [](float c) { return toUnorm8(c); });
+    return result;
+}
+
+void writePng(const Image& image, const fs::path& path) {
+    checkWritable(image, path);
+    const std::vector<std::uint8_t> rgb = dropAlpha(image);
+    TempFile temp(path);
+    PngImage out;
+    out.png.width = png_uint_32(image.width);
+    out.png.height = png_uint_32(image.height);
+    out.png.format = PNG_FORMAT_RGB;
+    if (!png_image_write_to_stdio(&out.png, temp.stream(), 0, rgb.data(), 0, nullptr))
+        writeFailed(path, std::string("libpng: ") + out.png.message);
+    temp.close();
+    temp.commit();
+}
+
+Image readPng(const fs::path& path) {
+    PngImage in;
+    if (!png_image_begin_read_from_file(&in.png, path.c_str())) readFailed(path, in.png.message);
+    if (in.png.width > kMaxPngSide || in.png.height > kMaxPngSide)
+        readFailed(path,
+                   "implausible size " + std::to_string(in.png.width) + "x" + std::to_string(in.png.height));
+    in.png.format = PNG_FORMAT_RGBA;
+    Image image(int(in.png.width), int(in.png.height));
+    if (!png_image_finish_read(&in.png, nullptr, image.rgba.data(), 0, nullptr))
+        readFailed(path, in.png.message);
+    return image;
+}
+
+// Non-finite values are counted only as non-finite, so the two counts never overlap.
+ValueScan scanValues(const ImageF& image, float lo, float hi) {
+    ValueScan scan;
+    for (float v : image.rgba) {
+        if (!std::isfinite(v))
+            ++scan.nonFinite;
+        else if (v < lo || v > hi)
+            ++scan.outOfRange;
+    }
+    return scan;
+}
+
+std::string Comparison::summary() const {
+    if (!sizeMatches) return "FAIL: the image sizes differ";
+    std::ostringstream text;
+    text << (passed ? "pass" : "FAIL") << ": max delta " << maxDelta << ", mean delta " << std::fixed
+         << std::setprecision(4) << meanDelta << " (limit " << tolerance.meanDelta << "), " << outliers
+         << " pixel(s) over the max-delta limit " << tolerance.maxDelta << " (budget " << tolerance.outlierBudget
+         << ")";
+    return text.str();
+}
+
+Comparison compareImages(const Image& actual, const Image& expected, const Tolerance& tolerance) {
+    Comparison result;
+    result.tolerance = tolerance;
+    if (actual.width != expected.width || actual.height != expected.height) {
+        result.sizeMatches = false;
+        return result;
+    }
+    const std::size_t pixels = std::size_t(actual.width) * std::size_t(actual.height);
+    std::uint64_t deltaSum = 0;
+    for (std::size_t i = 0; i < pixels * 4; i += 4) {
+        int pixelMax = 0;
+        for (std::size_t c = 0; c < 3; ++c) {
+            const int delta = std::abs(int(actual.rgba[i + c]) - int(expected.rgba[i + c]));
+            deltaSum += std::uint64_t(delta);
+            pixelMax = std::max(pixelMax, delta);
+        }
+        result.maxDelta = std::max(result.maxDelta, pixelMax);
+        if (pixelMax > tolerance.maxDelta) ++result.outliers;
+    }
+    result.meanDelta = pixels ? double(deltaSum) / (3.0 * double(pixels)) : 0.0;
+    result.passed = result.outliers <= tolerance.outlierBudget && result.meanDelta <= tolerance.meanDelta;
+    return result;
+}
+
+// Sizes may differ (that is one way to fail); the diff then covers both, and a pixel only one image has is
+// shown as a full difference.
+Image diffImage(const Image& actual, const Image& expected) {
+    Image diff(std::max(actual.width, expected.width), std::max(actual.height, expected.height));
+    for (int y = 0; y < diff.height; ++y) {
+        for (int x = 0; x < diff.width; ++x) {
+            std::uint8_t* out = diff.pixel(x, y);
+            const bool inBoth =
+                x < actual.width && y < actual.height && x < expected.width && y < expected.height;
+            for (int c = 0; c < 3; ++c) {
+                const int delta =
+                    inBoth ? std::abs(int(actual.pixel(x, y)[c]) - int(expected.pixel(x, y)[c])) : 255;
+                // ×8 makes a one-step difference visible without saturating everything else.
+                out[c] = std::uint8_t(std::min(delta * 8, 255));
+            }
+            out[3] = 255;
+        }
+    }
+    return diff;
+}
+
+void blit(Image& canvas, const Image& tile, int x, int y) {
+    const Span xs = clipSpan(x, tile.width, canvas.width);
+    const Span ys = clipSpan(y, tile.height, canvas.height);
+    if (xs.begin == xs.end) return;
+    for (int row = ys.begin; row < ys.end; ++row)
+        std::copy_n(tile.pixel(xs.begin - x, row - y), std::size_t(xs.end - xs.begin) * 4,
+                    canvas.pixel(xs.begin, row));
+}
+
+void fillRect(Image& canvas, int x, int y, int w, int h, glm::u8vec4 color) {
+    const Span xs = clipSpan(x, w, canvas.width);
+    const Span ys = clipSpan(y, h, canvas.height);
+    for (int row = ys.begin; row < ys.end; ++row)
+        for (int col = xs.begin; col < xs.end; ++col) std::copy_n(&color.x, 4, canvas.pixel(col, row));
+}
+
+} // namespace shadelab

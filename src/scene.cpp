@@ -1,1 +1,717 @@
-// placeholder: being written
+// Scene files (DESIGN §4): JSON → Scene, with every error naming the JSON path, the value and what is
+// expected. Parsing reads structure and types; the range checks live in one set of check* functions that
+// both parseScene (per entity, as it is read) and validateScene (after CLI overrides) call, so the two can
+// never disagree about what a valid scene is.
+#include "shadelab/scene.h"
+
+#include <array>
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <limits>
+#include <set>
+#include <span>
+#include <string>
+#include <system_error>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
+
+#include "shadelab/errors.h"
+
+namespace shadelab {
+
+namespace {
+
+using Json = nlohmann::json;
+
+// The format needs 5 levels (root → objects → object → material → colour); 64 leaves room for growth while
+// refusing inputs whose only purpose is to exhaust memory or stack in whatever walks the tree next.
+constexpr int kMaxNesting = 64;
+// A scene is a few kilobytes; a larger file is a mistake (a PNG, a log), not a scene.
+constexpr std::uintmax_t kMaxSceneFileBytes = 16u << 20;
+// Longest piece of a user's string quoted back in a message.
+constexpr std::size_t kMaxQuotedChars = 40;
+
+constexpr std::array kProjectionTypes = {ProjectionType::Perspective, ProjectionType::Frustum,
+                                         ProjectionType::Orthographic};
+constexpr std::array kLightTypes = {LightType::Ambient, LightType::Directional, LightType::Point,
+                                    LightType::Spot};
+
+struct IntRange {
+    int lo, hi;
+};
+constexpr IntRange kImageSizeRange{1, kMaxImageSize};
+constexpr IntRange kSubdivisionRange{0, kMaxSubdivisions};
+
+// ---- message pieces ----
+
+std::string formatNumber(double value) {
+    std::array<char, 32> buffer{};
+    auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+    return ec == std::errc{} ? std::string(buffer.data(), end) : std::string("?");
+}
+
+std::string formatVec(const glm::dvec3& v) {
+    return "[" + formatNumber(v.x) + ", " + formatNumber(v.y) + ", " + formatNumber(v.z) + "]";
+}
+
+// User text goes back out JSON-escaped and truncated, so a key full of control characters or a megabyte
+// string cannot garble the terminal or the message.
+std::string quotedText(std::string_view text) {
+    bool truncated = text.size() > kMaxQuotedChars;
+    std::string shown(text.substr(0, kMaxQuotedChars));
+    std::string out = Json(shown).dump(-1, ' ', false, Json::error_handler_t::replace);
+    if (truncated) out.insert(out.size() - 1, "...");
+    return out;
+}
+
+std::string describe(const Json& value) {
+    switch (value.type()) {
+    case Json::value_t::null: return "null";
+    case Json::value_t::boolean: return value.get<bool>() ? "true" : "false";
+    case Json::value_t::string: return "string " + quotedText(value.get_ref<const std::string&>());
+    case Json::value_t::number_integer:
+    case Json::value_t::number_unsigned:
+    case Json::value_t::number_float: return "number " + formatNumber(value.get<double>());
+    case Json::value_t::array:
+        return "array of " + std::to_string(value.size()) + (value.size() == 1 ? " element" : " elements");
+    case Json::value_t::object: return "object";
+    default: return "unsupported value";
+    }
+}
+
+template <class Enum, std::size_t N> std::string joinNames(const std::array<Enum, N>& values) {
+    std::string out;
+    for (Enum value : values) out += (out.empty() ? "" : ", ") + std::string(toString(value));
+    return out;
+}
+
+std::string joinKeys(std::span<const std::string_view> keys) {
+    std::string out;
+    for (std::string_view key : keys) out += (out.empty() ? "" : ", ") + std::string(key);
+    return out;
+}
+
+// ---- JSON paths: objects[0].material.diffuse[2] ----
+
+bool isPlainKey(std::string_view key) {
+    if (key.empty()) return false;
+    for (char c : key)
+        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-')) return false;
+    return true;
+}
+
+std::string keyPath(std::string_view parent, std::string_view key) {
+    if (!isPlainKey(key)) return std::string(parent) + "[" + quotedText(key) + "]";
+    return parent.empty() ? std::string(key) : std::string(parent) + "." + std::string(key);
+}
+
+std::string indexPath(std::string_view parent, std::size_t index) {
+    return std::string(parent) + "[" + std::to_string(index) + "]";
+}
+
+[[noreturn]] void fail(std::string_view path, std::string_view message) {
+    throw InputError(path.empty() ? std::string(message) : std::string(path) + ": " + std::string(message));
+}
+
+// ---- range checks, shared by parseScene and validateScene ----
+
+void checkFinite(double value, std::string_view path) {
+    if (!std::isfinite(value)) fail(path, "must be finite, got " + formatNumber(value));
+}
+
+void checkGreater(double value, double min, std::string_view path) {
+    checkFinite(value, path);
+    if (!(value > min)) fail(path, "must be > " + formatNumber(min) + ", got " + formatNumber(value));
+}
+
+void checkAtLeast(double value, double min, std::string_view path) {
+    checkFinite(value, path);
+    if (!(value >= min)) fail(path, "must be >= " + formatNumber(min) + ", got " + formatNumber(value));
+}
+
+void checkIntRange(int value, IntRange range, std::string_view path) {
+    if (value < range.lo || value > range.hi)
+        fail(path, "must be between " + std::to_string(range.lo) + " and " + std::to_string(range.hi) +
+                       ", got " + std::to_string(value));
+}
+
+void checkFiniteVec(const glm::dvec3& v, std::string_view path) {
+    for (int i = 0; i < 3; ++i) checkFinite(v[i], indexPath(path, i));
+}
+
+void checkColor(const glm::dvec3& color, std::string_view path) {
+    for (int i = 0; i < 3; ++i) checkAtLeast(color[i], 0, indexPath(path, i));
+}
+
+void checkNonZeroVec(const glm::dvec3& v, std::string_view path) {
+    checkFiniteVec(v, path);
+    if (v == glm::dvec3(0)) fail(path, "must be non-zero, got " + formatVec(v));
+}
+
+// Errors from camera.h and sphere.h may already name the field; add the path only where they don't.
+[[noreturn]] void failWithin(std::string_view path, const InputError& error) {
+    std::string_view message = error.what();
+    if (message.starts_with(path)) throw error;
+    fail(path, message);
+}
+
+void checkSubdivisions(int level, const std::string& path) {
+    if (level > kSubdivisionRange.hi) {
+        // Its message says how much memory the level would take, which is the useful part.
+        try {
+            checkSubdivisionLevel(level, path.c_str());
+        } catch (const InputError& e) {
+            failWithin(path, e);
+        }
+    }
+    checkIntRange(level, kSubdivisionRange, path);
+}
+
+void checkImageSize(const Scene& scene) {
+    checkIntRange(scene.width, kImageSizeRange, "image.width");
+    checkIntRange(scene.height, kImageSizeRange, "image.height");
+}
+
+void checkImage(const Scene& scene) {
+    checkImageSize(scene);
+    checkColor(scene.background, "image.background");
+}
+
+void checkCamera(const Scene& scene) {
+    checkFiniteVec(scene.eye, "camera.eye");
+    checkFiniteVec(scene.target, "camera.target");
+    checkFiniteVec(scene.up, "camera.up");
+    try {
+        cameraFrame(scene.eye, scene.target, scene.up);
+    } catch (const InputError& e) {
+        failWithin("camera", e);
+    }
+}
+
+void checkDistinct(double value, double other, std::string_view otherName, std::string_view path) {
+    checkFinite(value, path);
+    if (value == other)
+        fail(path, "must differ from " + std::string(otherName) + " (" + formatNumber(other) + "), got " +
+                       formatNumber(value));
+}
+
+void checkProjection(const Projection& p) {
+    if (p.type == ProjectionType::Perspective) {
+        checkGreater(p.fovyDeg, 0, "projection.fovy_deg");
+        if (!(p.fovyDeg < 180)) fail("projection.fovy_deg", "must be < 180, got " + formatNumber(p.fovyDeg));
+    } else {
+        checkFinite(p.left, "projection.left");
+        checkDistinct(p.right, p.left, "left", "projection.right");
+        checkFinite(p.bottom, "projection.bottom");
+        checkDistinct(p.top, p.bottom, "bottom", "projection.top");
+    }
+    checkGreater(p.near, 0, "projection.near");
+    checkFinite(p.far, "projection.far");
+    if (!(p.far > p.near))
+        fail("projection.far", "must be > near (" + formatNumber(p.near) + "), got " + formatNumber(p.far));
+}
+
+void checkMaterial(const Material& m, const std::string& path) {
+    checkColor(m.ambient, keyPath(path, "ambient"));
+    checkColor(m.diffuse, keyPath(path, "diffuse"));
+    checkColor(m.specular, keyPath(path, "specular"));
+    // pow(0, 0) is undefined in GLSL (DESIGN §3).
+    checkAtLeast(m.shininess, 1, keyPath(path, "shininess"));
+}
+
+void checkObject(const SceneObject& object, const std::string& path) {
+    checkFiniteVec(object.center, keyPath(path, "center"));
+    checkGreater(object.radius, 0, keyPath(path, "radius"));
+    std::string scalePath = keyPath(path, "scale");
+    checkFiniteVec(object.scale, scalePath);
+    // Negative components mirror (allowed); zero flattens the ellipsoid and its normal matrix.
+    for (int i = 0; i < 3; ++i)
+        if (object.scale[i] == 0) fail(indexPath(scalePath, i), "must be non-zero, got 0");
+    checkSubdivisions(object.subdivisions, keyPath(path, "subdivisions"));
+    checkMaterial(object.material, keyPath(path, "material"));
+}
+
+void checkLightCount(std::size_t count) {
+    if (count > static_cast<std::size_t>(kMaxLights))
+        fail("lights", "at most " + std::to_string(kMaxLights) + " lights are supported, got " +
+                           std::to_string(count));
+}
+
+// "an ambient light", "a point light".
+std::string lightName(LightType type) {
+    return (type == LightType::Ambient ? "an " : "a ") + std::string(toString(type)) + " light";
+}
+
+bool hasPosition(LightType type) { return type == LightType::Point || type == LightType::Spot; }
+bool hasDirection(LightType type) { return type == LightType::Directional || type == LightType::Spot; }
+
+void checkAttenuation(const glm::dvec3& a, const std::string& path) {
+    for (int i = 0; i < 3; ++i) checkAtLeast(a[i], 0, indexPath(path, i));
+    if (!(a.x + a.y + a.z > 0)) fail(path, "components must have a positive sum, got " + formatVec(a));
+}
+
+// Only the fields the light's type uses are checked: the others are ignored by the lighting code.
+void checkLight(const Light& light, const std::string& path) {
+    checkColor(light.ambient, keyPath(path, "ambient"));
+    checkColor(light.diffuse, keyPath(path, "diffuse"));
+    checkColor(light.specular, keyPath(path, "specular"));
+    if (hasPosition(light.type)) {
+        checkFiniteVec(light.position, keyPath(path, "position"));
+        checkAttenuation(light.attenuation, keyPath(path, "attenuation"));
+    }
+    if (hasDirection(light.type)) checkNonZeroVec(light.direction, keyPath(path, "direction"));
+    if (light.type == LightType::Spot) {
+        std::string cutoffPath = keyPath(path, "cutoff_deg");
+        checkAtLeast(light.cutoffDeg, 0, cutoffPath);
+        if (!(light.cutoffDeg <= 90)) fail(cutoffPath, "must be <= 90, got " + formatNumber(light.cutoffDeg));
+        checkAtLeast(light.exponent, 0, keyPath(path, "exponent"));
+    }
+}
+
+// ---- JSON text → tree ----
+
+// nlohmann's parser is iterative, but a hostile file nested a million deep still builds a million-node
+// tree for nothing. Count brackets outside strings first.
+void checkNesting(std::string_view text) {
+    int depth = 0;
+    bool inString = false, escaped = false;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        char c = text[i];
+        if (inString) {
+            if (escaped) escaped = false;
+            else if (c == '\\') escaped = true;
+            else if (c == '"') inString = false;
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == '[' || c == '{') {
+            if (++depth > kMaxNesting)
+                fail("", "invalid JSON at byte " + std::to_string(i + 1) + ": nested deeper than " +
+                             std::to_string(kMaxNesting) + " levels");
+        } else if (c == ']' || c == '}') {
+            --depth;
+        }
+    }
+}
+
+// Follows the parser's events to know the JSON path being parsed: nlohmann silently keeps the last of
+// duplicate keys (we reject them instead), and its number-overflow error names no position.
+class ParsePathTracker {
+public:
+    bool operator()(int /*depth*/, Json::parse_event_t event, Json& parsed) {
+        using Event = Json::parse_event_t;
+        switch (event) {
+        case Event::object_start: frames_.emplace_back(true); break;
+        case Event::array_start: frames_.emplace_back(false); break;
+        case Event::key: onKey(parsed.get_ref<const std::string&>()); break;
+        case Event::object_end:
+        case Event::array_end:
+            frames_.pop_back();
+            elementDone();
+            break;
+        case Event::value: elementDone(); break;
+        }
+        return true;
+    }
+
+    // The path of the value being parsed now.
+    std::string path() const {
+        std::string out;
+        for (const Frame& frame : frames_) out = frame.isObject ? keyPath(out, frame.key) : indexPath(out, frame.index);
+        return out;
+    }
+
+private:
+    struct Frame {
+        explicit Frame(bool object) : isObject(object) {}
+        bool isObject;
+        std::string key;
+        std::size_t index = 0;
+        std::set<std::string, std::less<>> keys;
+    };
+
+    void onKey(const std::string& key) {
+        Frame& frame = frames_.back();
+        frame.key = key;
+        if (!frame.keys.insert(key).second) fail(path(), "duplicate key");
+    }
+
+    void elementDone() {
+        if (!frames_.empty() && !frames_.back().isObject) ++frames_.back().index;
+    }
+
+    std::vector<Frame> frames_;
+};
+
+// nlohmann's messages start with "[json.exception.parse_error.101] "; the id means nothing to a user.
+std::string_view withoutExceptionId(std::string_view message) {
+    if (message.starts_with("[json.exception.")) {
+        std::size_t end = message.find("] ");
+        if (end != std::string_view::npos) return message.substr(end + 2);
+    }
+    return message;
+}
+
+// The text between the first and last single quote of "number overflow parsing '1e999'".
+std::string quotedToken(std::string_view message) {
+    std::size_t first = message.find('\''), last = message.rfind('\'');
+    if (first == std::string_view::npos || last <= first) return std::string(withoutExceptionId(message));
+    return std::string(message.substr(first + 1, last - first - 1));
+}
+
+Json parseJson(std::string_view text) {
+    checkNesting(text);
+    ParsePathTracker tracker;
+    try {
+        // std::ref: the parser copies its callback, and we read the tracker's state afterwards.
+        return Json::parse(text.begin(), text.end(), std::ref(tracker));
+    } catch (const Json::parse_error& e) {
+        fail("", "invalid JSON at byte " + std::to_string(e.byte) + ": " + std::string(withoutExceptionId(e.what())));
+    } catch (const Json::out_of_range& e) {
+        // 1e999: the lexer refuses to produce inf, and we report it as the non-finite number it is.
+        fail(tracker.path(), "must be finite, got " + quotedToken(e.what()));
+    } catch (const Json::exception& e) {
+        fail("", "invalid JSON: " + std::string(withoutExceptionId(e.what())));
+    }
+}
+
+// ---- tree → values (types and structure; ranges are the check* functions above) ----
+
+void requireObject(const Json& value, std::string_view path) {
+    if (!value.is_object()) fail(path.empty() ? "the top level" : path, "must be an object, got " + describe(value));
+}
+
+void checkKeys(const Json& object, std::string_view path, std::span<const std::string_view> allowed) {
+    for (auto it = object.begin(); it != object.end(); ++it) {
+        bool known = false;
+        for (std::string_view key : allowed) known = known || key == it.key();
+        if (!known) fail(keyPath(path, it.key()), "unknown key; expected one of " + joinKeys(allowed));
+    }
+}
+
+const Json* member(const Json& object, std::string_view key) {
+    auto it = object.find(key);
+    return it == object.end() ? nullptr : &*it;
+}
+
+double readNumber(const Json& value, std::string_view path) {
+    if (!value.is_number()) fail(path, "must be a number, got " + describe(value));
+    double number = value.get<double>();
+    checkFinite(number, path);
+    return number;
+}
+
+// Whole numbers beyond int are reported against the field's range before converting (which would overflow).
+int readInt(const Json& value, std::string_view path, IntRange range) {
+    double number = readNumber(value, path);
+    if (number != std::floor(number)) fail(path, "must be a whole number, got " + formatNumber(number));
+    if (number < std::numeric_limits<int>::min() || number > std::numeric_limits<int>::max())
+        fail(path, "must be between " + std::to_string(range.lo) + " and " + std::to_string(range.hi) +
+                       ", got " + formatNumber(number));
+    return static_cast<int>(number);
+}
+
+glm::dvec3 readVec3(const Json& value, std::string_view path) {
+    if (!value.is_array() || value.size() != 3)
+        fail(path, "must be an array of 3 numbers, got " + describe(value));
+    glm::dvec3 v;
+    for (int i = 0; i < 3; ++i) v[i] = readNumber(value[i], indexPath(path, i));
+    return v;
+}
+
+const std::string& readString(const Json& value, std::string_view path) {
+    if (!value.is_string()) fail(path, "must be a string, got " + describe(value));
+    return value.get_ref<const std::string&>();
+}
+
+template <class Enum, std::size_t N>
+Enum readEnum(const Json& value, std::string_view path, const std::array<Enum, N>& values) {
+    const std::string& text = readString(value, path);
+    for (Enum e : values)
+        if (toString(e) == text) return e;
+    fail(path, "unknown value " + quotedText(text) + "; expected one of " + joinNames(values));
+}
+
+// Optional fields: the output keeps its default when the key is absent. Returns whether it was present.
+bool readField(const Json& object, std::string_view path, std::string_view key, double& out) {
+    const Json* value = member(object, key);
+    if (value) out = readNumber(*value, keyPath(path, key));
+    return value != nullptr;
+}
+
+bool readField(const Json& object, std::string_view path, std::string_view key, glm::dvec3& out) {
+    const Json* value = member(object, key);
+    if (value) out = readVec3(*value, keyPath(path, key));
+    return value != nullptr;
+}
+
+void readIntField(const Json& object, std::string_view path, std::string_view key, IntRange range, int& out) {
+    if (const Json* value = member(object, key)) out = readInt(*value, keyPath(path, key), range);
+}
+
+void readImage(const Json& image, Scene& scene) {
+    static constexpr std::array<std::string_view, 3> kKeys = {"width", "height", "background"};
+    requireObject(image, "image");
+    checkKeys(image, "image", kKeys);
+    readIntField(image, "image", "width", kImageSizeRange, scene.width);
+    readIntField(image, "image", "height", kImageSizeRange, scene.height);
+    readField(image, "image", "background", scene.background);
+    checkImage(scene);
+}
+
+void readCamera(const Json& camera, Scene& scene) {
+    static constexpr std::array<std::string_view, 3> kKeys = {"eye", "target", "up"};
+    requireObject(camera, "camera");
+    checkKeys(camera, "camera", kKeys);
+    readField(camera, "camera", "eye", scene.eye);
+    readField(camera, "camera", "target", scene.target);
+    readField(camera, "camera", "up", scene.up);
+    checkCamera(scene);
+}
+
+// left/right/bottom/top may be omitted for frustum and orthographic and then default to -1, 1, -1, 1 (the
+// Projection defaults): the unit square, a sensible orthographic view of the default unit sphere.
+Projection readProjection(const Json& json) {
+    static constexpr std::array<std::string_view, 4> kPerspectiveKeys = {"type", "fovy_deg", "near", "far"};
+    static constexpr std::array<std::string_view, 7> kBoxKeys = {"type", "left",  "right", "bottom",
+                                                                 "top",  "near", "far"};
+    requireObject(json, "projection");
+    Projection p;
+    if (const Json* type = member(json, "type")) p.type = readEnum(*type, "projection.type", kProjectionTypes);
+    bool perspective = p.type == ProjectionType::Perspective;
+    checkKeys(json, "projection", perspective ? std::span<const std::string_view>(kPerspectiveKeys) : kBoxKeys);
+    readField(json, "projection", "fovy_deg", p.fovyDeg);
+    readField(json, "projection", "left", p.left);
+    readField(json, "projection", "right", p.right);
+    readField(json, "projection", "bottom", p.bottom);
+    readField(json, "projection", "top", p.top);
+    readField(json, "projection", "near", p.near);
+    readField(json, "projection", "far", p.far);
+    checkProjection(p);
+    return p;
+}
+
+Material readMaterial(const Json& json, const std::string& path) {
+    static constexpr std::array<std::string_view, 4> kKeys = {"ambient", "diffuse", "specular", "shininess"};
+    requireObject(json, path);
+    checkKeys(json, path, kKeys);
+    Material m;
+    readField(json, path, "ambient", m.ambient);
+    readField(json, path, "diffuse", m.diffuse);
+    readField(json, path, "specular", m.specular);
+    readField(json, path, "shininess", m.shininess);
+    return m;
+}
+
+SceneObject readObject(const Json& json, const std::string& path) {
+    static constexpr std::array<std::string_view, 5> kKeys = {"center", "radius", "scale", "subdivisions",
+                                                              "material"};
+    requireObject(json, path);
+    checkKeys(json, path, kKeys);
+    SceneObject object;
+    readField(json, path, "center", object.center);
+    readField(json, path, "radius", object.radius);
+    readField(json, path, "scale", object.scale);
+    readIntField(json, path, "subdivisions", kSubdivisionRange, object.subdivisions);
+    if (const Json* material = member(json, "material"))
+        object.material = readMaterial(*material, keyPath(path, "material"));
+    checkObject(object, path);
+    return object;
+}
+
+const Json& requireArray(const Json& value, std::string_view path) {
+    if (!value.is_array()) fail(path, "must be an array, got " + describe(value));
+    return value;
+}
+
+std::vector<SceneObject> readObjects(const Json& json) {
+    std::vector<SceneObject> objects;
+    for (std::size_t i = 0; i < requireArray(json, "objects").size(); ++i)
+        objects.push_back(readObject(json[i], indexPath("objects", i)));
+    return objects;
+}
+
+std::span<const std::string_view> lightKeys(LightType type) {
+    static constexpr std::array<std::string_view, 2> kAmbient = {"type", "ambient"};
+    static constexpr std::array<std::string_view, 5> kDirectional = {"type", "direction", "ambient", "diffuse",
+                                                                     "specular"};
+    static constexpr std::array<std::string_view, 6> kPoint = {"type",    "position", "attenuation",
+                                                               "ambient", "diffuse",  "specular"};
+    static constexpr std::array<std::string_view, 9> kSpot = {
+        "type", "position", "direction", "cutoff_deg", "exponent", "attenuation", "ambient", "diffuse", "specular"};
+    switch (type) {
+    case LightType::Ambient: return kAmbient;
+    case LightType::Directional: return kDirectional;
+    case LightType::Point: return kPoint;
+    case LightType::Spot: break;
+    }
+    return kSpot;
+}
+
+// A key another light type uses is not a typo but a misunderstanding; say which types it belongs to.
+void checkLightKeys(const Json& json, const std::string& path, LightType type) {
+    std::span<const std::string_view> allowed = lightKeys(type);
+    std::span<const std::string_view> all = lightKeys(LightType::Spot);
+    for (auto it = json.begin(); it != json.end(); ++it) {
+        auto in = [&](std::span<const std::string_view> keys) {
+            for (std::string_view key : keys)
+                if (key == it.key()) return true;
+            return false;
+        };
+        if (in(allowed)) continue;
+        if (in(all))
+            fail(keyPath(path, it.key()),
+                 "does not apply to " + lightName(type) + "; expected one of " + joinKeys(allowed));
+        fail(keyPath(path, it.key()), "unknown key; expected one of " + joinKeys(allowed));
+    }
+}
+
+void readRequired(const Json& json, const std::string& path, std::string_view key, LightType type,
+                  glm::dvec3& out) {
+    if (!readField(json, path, key, out))
+        fail(keyPath(path, key), "required for " + lightName(type));
+}
+
+Light readLight(const Json& json, const std::string& path) {
+    requireObject(json, path);
+    const Json* typeJson = member(json, "type");
+    if (!typeJson) fail(keyPath(path, "type"), "required; expected one of " + joinNames(kLightTypes));
+    Light light;
+    light.type = readEnum(*typeJson, keyPath(path, "type"), kLightTypes);
+    checkLightKeys(json, path, light.type);
+    if (light.type == LightType::Ambient) light.diffuse = light.specular = glm::dvec3(0);
+    if (hasPosition(light.type)) readRequired(json, path, "position", light.type, light.position);
+    if (hasDirection(light.type)) readRequired(json, path, "direction", light.type, light.direction);
+    if (light.type == LightType::Spot && !readField(json, path, "cutoff_deg", light.cutoffDeg))
+        fail(keyPath(path, "cutoff_deg"), "required for a spot light");
+    readField(json, path, "exponent", light.exponent);
+    readField(json, path, "attenuation", light.attenuation);
+    readField(json, path, "ambient", light.ambient);
+    readField(json, path, "diffuse", light.diffuse);
+    readField(json, path, "specular", light.specular);
+    checkLight(light, path);
+    return light;
+}
+
+std::vector<Light> readLights(const Json& json) {
+    checkLightCount(requireArray(json, "lights").size());
+    std::vector<Light> lights;
+    for (std::size_t i = 0; i < json.size(); ++i) lights.push_back(readLight(json[i], indexPath("lights", i)));
+    return lights;
+}
+
+Scene readScene(const Json& root) {
+    static constexpr std::array<std::string_view, 7> kKeys = {"image",   "camera",  "projection", "shading",
+                                                              "lighting", "objects", "lights"};
+    requireObject(root, "");
+    checkKeys(root, "", kKeys);
+    Scene scene;
+    if (const Json* image = member(root, "image")) readImage(*image, scene);
+    if (const Json* camera = member(root, "camera")) readCamera(*camera, scene);
+    if (const Json* projection = member(root, "projection")) scene.projection = readProjection(*projection);
+    if (const Json* shading = member(root, "shading")) scene.shading = readEnum(*shading, "shading", kShadingModes);
+    if (const Json* lighting = member(root, "lighting"))
+        scene.lighting = readEnum(*lighting, "lighting", kLightingModels);
+    if (const Json* objects = member(root, "objects")) scene.objects = readObjects(*objects);
+    if (const Json* lights = member(root, "lights")) scene.lights = readLights(*lights);
+    return scene;
+}
+
+std::string readFile(const std::filesystem::path& path) {
+    auto cannotRead = [&](const std::string& reason) {
+        throw InputError(path.string() + ": cannot read scene file: " + reason);
+    };
+    std::error_code ec;
+    auto status = std::filesystem::status(path, ec);
+    if (ec) cannotRead(ec.message());
+    if (std::filesystem::is_directory(status)) cannotRead("it is a directory");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) cannotRead(std::generic_category().message(errno));
+    std::string text;
+    std::array<char, 65536> chunk;
+    while (in.read(chunk.data(), chunk.size()) || in.gcount() > 0) {
+        text.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
+        if (text.size() > kMaxSceneFileBytes)
+            cannotRead("larger than " + std::to_string(kMaxSceneFileBytes >> 20) + " MiB; not a scene file");
+    }
+    if (in.bad()) cannotRead("read error");
+    return text;
+}
+
+} // namespace
+
+std::string_view toString(ProjectionType type) {
+    switch (type) {
+    case ProjectionType::Perspective: return "perspective";
+    case ProjectionType::Frustum: return "frustum";
+    case ProjectionType::Orthographic: return "orthographic";
+    }
+    return "unknown";
+}
+
+Light Scene::defaultLight() {
+    Light light;
+    light.type = LightType::Point;
+    light.position = {3, 3, 5};
+    light.ambient = glm::dvec3(0.1);
+    light.diffuse = glm::dvec3(1);
+    light.specular = glm::dvec3(1);
+    light.attenuation = {1, 0, 0};
+    return light;
+}
+
+Scene parseScene(std::string_view jsonText, std::string_view source) {
+    try {
+        return readScene(parseJson(jsonText));
+    } catch (const InputError& e) {
+        throw InputError(std::string(source) + ": " + e.what());
+    }
+}
+
+Scene loadScene(const std::filesystem::path& path) { return parseScene(readFile(path), path.string()); }
+
+void validateScene(const Scene& scene) {
+    checkImage(scene);
+    checkCamera(scene);
+    checkProjection(scene.projection);
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) checkObject(scene.objects[i], indexPath("objects", i));
+    checkLightCount(scene.lights.size());
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) checkLight(scene.lights[i], indexPath("lights", i));
+}
+
+SceneView sceneView(const Scene& scene) {
+    checkImageSize(scene);
+    checkProjection(scene.projection);
+    SceneView view;
+    try {
+        view.viewFromWorld = viewFromWorld(cameraFrame(scene.eye, scene.target, scene.up));
+    } catch (const InputError& e) {
+        failWithin("camera", e);
+    }
+    const Projection& p = scene.projection;
+    view.orthographic = p.type == ProjectionType::Orthographic;
+    try {
+        if (p.type == ProjectionType::Perspective) {
+            double aspect = static_cast<double>(scene.width) / scene.height;
+            view.volume = viewVolumeFromFovy(p.fovyDeg, aspect, p.near, p.far);
+        } else {
+            view.volume = ViewVolume{p.left, p.right, p.bottom, p.top, p.near, p.far};
+        }
+        validateViewVolume(view.volume);
+    } catch (const InputError& e) {
+        failWithin("projection", e);
+    }
+    view.clipFromView =
+        view.orthographic ? orthographicClipFromView(view.volume) : perspectiveClipFromView(view.volume);
+    return view;
+}
+
+glm::dmat4 worldFromObject(const SceneObject& object) {
+    return glm::scale(glm::translate(glm::dmat4(1), object.center), object.radius * object.scale);
+}
+
+} // namespace shadelab

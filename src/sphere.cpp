@@ -46,7 +46,8 @@ glm::dvec3 faceNormal(const std::vector<glm::dvec3>& p, const glm::uvec3& t) {
 
 std::string mebibytes(std::size_t bytes) {
     std::ostringstream out;
-    out.precision(3);
+    out << std::fixed;
+    out.precision(1);
     out << double(bytes) / (1024.0 * 1024.0) << " MiB";
     return out.str();
 }

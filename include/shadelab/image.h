@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -62,6 +63,7 @@ struct Comparison {
     double meanDelta = 0;
     int outliers = 0; // pixels with a channel difference > tolerance.maxDelta
     bool passed = false;
+    Tolerance tolerance; // the limits this was judged against, for summary()
     std::string summary() const;
 };
 Comparison compareImages(const Image& actual, const Image& expected, const Tolerance& tolerance);

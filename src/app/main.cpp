@@ -1,6 +1,7 @@
 // shadelab's command line: the demo window (default), `render` and `reference` (DESIGN §5).
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 
 #include <CLI/CLI.hpp>
 
@@ -58,6 +59,13 @@ int run(int argc, char** argv) {
     } catch (const CLI::Success& e) {
         return cli.exit(e);
     } catch (const CLI::ParseError& e) {
+        // A mistyped subcommand lands in the demo's scene argument; name it rather than the flags after it.
+        if (!demoScene.empty() && !std::filesystem::exists(demoScene)) {
+            std::fprintf(stderr, "shadelab: \"%s\" is neither a subcommand (render, reference) nor a scene file\n",
+                         demoScene.c_str());
+            return kExitInputError;
+        }
+        std::fprintf(stderr, "shadelab: ");
         cli.exit(e); // prints the message naming the argument
         return kExitInputError;
     }

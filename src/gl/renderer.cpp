@@ -73,8 +73,6 @@ void setTransforms(GLuint program, const glm::dmat4& clipFromView, const glm::dm
                        glm::value_ptr(viewFromObjectF));
     glUniformMatrix3fv(glGetUniformLocation(program, "uNormalViewFromObject"), 1, GL_FALSE,
                        glm::value_ptr(normalViewFromObject));
-    // A mirrored object turns its counter-clockwise faces clockwise on screen.
-    glFrontFace(glm::determinant(glm::dmat3(viewFromObject)) < 0 ? GL_CW : GL_CCW);
 }
 
 } // namespace
@@ -109,8 +107,9 @@ void Renderer::render(const Scene& scene, int width, int height) {
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_GREATER);
-    glEnable(GL_CULL_FACE);
-    glCullFace(GL_BACK);
+    // No back-face culling: where the near plane cuts an object open, its inside shows, as in the
+    // analytic reference; the depth test alone decides visibility.
+    glDisable(GL_CULL_FACE);
 
     const GLuint prog = program({scene.shading, scene.lighting});
     glUseProgram(prog);

@@ -1,1 +1,556 @@
-// placeholder: being written
+// The command line end to end, against DESIGN §5 (not against its implementation): exit codes, messages that
+// name the bad argument or JSON path and its value, atomic output (no partial or temporary file is ever
+// left), flags overriding the scene file, and the demo's headless showcase when there is no display.
+// The binary runs through fork/execve, never a shell, each test in a fresh temporary folder.
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cctype>
+#include <cerrno>
+#include <chrono>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <optional>
+#include <ostream>
+#include <regex>
+#include <set>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+extern char** environ;
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// A run that takes longer is hung (e.g. a demo window that opened by mistake); it is killed and fails.
+constexpr int kTimeoutSeconds = 180;
+
+struct Outcome {
+    int exitCode = -1; // -1 when the process did not exit normally
+    std::string out, err;
+};
+
+std::string describe(const Outcome& run) {
+    return "exit code " + std::to_string(run.exitCode) + "\n--- stdout:\n" + run.out + "--- stderr:\n" +
+           run.err;
+}
+
+// Display::None is for the demo's no-display path only; everything else sees the environment unchanged.
+enum class Display { Inherit, None };
+
+std::vector<std::string> childEnvironment(Display display) {
+    std::vector<std::string> env;
+    for (char** entry = environ; *entry != nullptr; ++entry) {
+        const std::string_view text(*entry);
+        if (display == Display::None &&
+            (text.starts_with("DISPLAY=") || text.starts_with("WAYLAND_DISPLAY=")))
+            continue;
+        env.emplace_back(text);
+    }
+    return env;
+}
+
+std::vector<char*> nullTerminated(std::vector<std::string>& strings) {
+    std::vector<char*> pointers;
+    for (std::string& s : strings) pointers.push_back(s.data());
+    pointers.push_back(nullptr);
+    return pointers;
+}
+
+// Reads both pipes until the child closes them (or the deadline passes), so neither can fill and block it.
+bool drain(int outFd, int errFd, Outcome& run) {
+    pollfd fds[2] = {{outFd, POLLIN, 0}, {errFd, POLLIN, 0}};
+    std::string* sinks[2] = {&run.out, &run.err};
+    int open = 2;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(kTimeoutSeconds);
+    while (open > 0) {
+        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+            deadline - std::chrono::steady_clock::now());
+        if (left.count() <= 0) return false;
+        if (::poll(fds, 2, int(left.count())) < 0) {
+            if (errno == EINTR) continue;
+            return false;
+        }
+        for (int i = 0; i < 2; ++i) {
+            if (fds[i].fd < 0 || fds[i].revents == 0) continue;
+            char buffer[4096];
+            const ssize_t n = ::read(fds[i].fd, buffer, sizeof buffer);
+            if (n > 0) {
+                sinks[i]->append(buffer, std::size_t(n));
+            } else if (n == 0 || errno != EINTR) {
+                ::close(std::exchange(fds[i].fd, -1));
+                --open;
+            }
+        }
+    }
+    return true;
+}
+
+// Runs shadelab with `args` in the folder `cwd`; stdout and stderr are captured separately.
+Outcome runShadelab(const std::vector<std::string>& args, const fs::path& cwd,
+                    Display display = Display::Inherit) {
+    std::vector<std::string> argStrings{SHADELAB_EXE};
+    argStrings.insert(argStrings.end(), args.begin(), args.end());
+    std::vector<std::string> envStrings = childEnvironment(display);
+    const std::vector<char*> argv = nullTerminated(argStrings), envp = nullTerminated(envStrings);
+    const std::string folder = cwd.string();
+
+    Outcome run;
+    int outPipe[2], errPipe[2];
+    if (::pipe2(outPipe, O_CLOEXEC) != 0 || ::pipe2(errPipe, O_CLOEXEC) != 0) {
+        ADD_FAILURE() << "pipe2: " << std::strerror(errno);
+        return run;
+    }
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+        // Only async-signal-safe calls between fork and exec; dup2 clears O_CLOEXEC on 1 and 2.
+        const int devNull = ::open("/dev/null", O_RDONLY);
+        if (devNull < 0 || ::dup2(devNull, 0) < 0 || ::dup2(outPipe[1], 1) < 0 || ::dup2(errPipe[1], 2) < 0 ||
+            ::chdir(folder.c_str()) != 0)
+            ::_exit(126);
+        ::execve(argv[0], argv.data(), envp.data());
+        ::_exit(127);
+    }
+    ::close(outPipe[1]);
+    ::close(errPipe[1]);
+    if (pid < 0) {
+        ADD_FAILURE() << "fork: " << std::strerror(errno);
+        ::close(outPipe[0]);
+        ::close(errPipe[0]);
+        return run;
+    }
+    const bool finished = drain(outPipe[0], errPipe[0], run);
+    if (!finished) {
+        ::kill(pid, SIGKILL);
+        ::close(outPipe[0]);
+        ::close(errPipe[0]);
+    }
+    int status = 0;
+    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    if (!finished) ADD_FAILURE() << "shadelab did not finish within " << kTimeoutSeconds << " s; killed";
+    if (WIFEXITED(status)) run.exitCode = WEXITSTATUS(status);
+    if (WIFSIGNALED(status)) run.err += "\n[killed by signal " + std::to_string(WTERMSIG(status)) + "]";
+    if (run.exitCode == 127 && run.out.empty() && run.err.empty())
+        ADD_FAILURE() << "could not execute " << SHADELAB_EXE;
+    return run;
+}
+
+void writeFile(const fs::path& path, std::string_view bytes) {
+    std::ofstream(path, std::ios::binary) << bytes;
+}
+
+std::string readFile(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Every entry under `folder`, relative, folders with a trailing '/': a leftover temp file shows up here.
+std::set<std::string> listing(const fs::path& folder) {
+    std::set<std::string> names;
+    for (const fs::directory_entry& entry : fs::recursive_directory_iterator(folder)) {
+        std::string name = fs::relative(entry.path(), folder).string();
+        if (entry.is_directory()) name += '/';
+        names.insert(name);
+    }
+    return names;
+}
+
+struct PngSize {
+    std::uint32_t width = 0, height = 0;
+};
+
+std::uint32_t bigEndian32(const std::string& bytes, std::size_t offset) {
+    std::uint32_t value = 0;
+    for (std::size_t i = 0; i < 4; ++i) value = value << 8 | std::uint8_t(bytes[offset + i]);
+    return value;
+}
+
+// The signature and the IHDR chunk, which the PNG spec requires first: length 13 at 8, type at 12,
+// width at 16, height at 20, all big-endian.
+std::optional<PngSize> pngSize(const std::string& bytes) {
+    static constexpr std::string_view kSignature("\x89PNG\r\n\x1a\n", 8);
+    if (bytes.size() < 24 || std::string_view(bytes).substr(0, 8) != kSignature) return std::nullopt;
+    if (bigEndian32(bytes, 8) != 13 || bytes.compare(12, 4, "IHDR") != 0) return std::nullopt;
+    return PngSize{bigEndian32(bytes, 16), bigEndian32(bytes, 20)};
+}
+
+// A scene that renders fast: 64×64, one low-level sphere, the default light.
+std::string smallScene(std::string_view shading = "phong", std::string_view lighting = "blinn-phong",
+                       int subdivisions = 3, int width = 64, int height = 64) {
+    return R"({ "image": { "width": )" + std::to_string(width) + R"(, "height": )" + std::to_string(height) +
+           R"( }, "shading": ")" + std::string(shading) + R"(", "lighting": ")" + std::string(lighting) +
+           R"(", "objects": [ { "subdivisions": )" + std::to_string(subdivisions) + " } ] }\n";
+}
+
+class CliTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        static std::atomic<int> counter{0};
+        std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+        for (char& c : name)
+            if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+        dir_ = fs::temp_directory_path() /
+               ("shadelab-cli-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + "-" + name);
+        fs::remove_all(dir_);
+        fs::create_directory(dir_);
+    }
+    void TearDown() override {
+        std::error_code ignored;
+        fs::remove_all(dir_, ignored);
+    }
+
+    Outcome shadelab(const std::vector<std::string>& args, Display display = Display::Inherit) const {
+        return runShadelab(args, dir_, display);
+    }
+    // Renders `args` and returns the PNG's bytes, failing the test if the run or the file is not right.
+    std::string renderBytes(std::vector<std::string> args, const std::string& out) const {
+        args.insert(args.end(), {"--out", out});
+        const Outcome run = shadelab(args);
+        EXPECT_EQ(run.exitCode, 0) << describe(run);
+        const std::string bytes = readFile(dir_ / out);
+        EXPECT_TRUE(pngSize(bytes)) << out << " is not a PNG\n" << describe(run);
+        return bytes;
+    }
+
+    fs::path dir_;
+};
+
+// --- Success: a PNG and nothing else ------------------------------------------------------------------
+
+TEST_F(CliTest, RenderWithoutSceneWritesOnlyThePng) {
+    const Outcome run = shadelab({"render", "--size", "64x64", "--out", "X.png"});
+    ASSERT_EQ(run.exitCode, 0) << describe(run);
+    EXPECT_EQ(listing(dir_), std::set<std::string>{"X.png"});
+    const auto size = pngSize(readFile(dir_ / "X.png"));
+    ASSERT_TRUE(size) << "X.png is not a PNG";
+    EXPECT_EQ(size->width, 64u);
+    EXPECT_EQ(size->height, 64u);
+}
+
+TEST_F(CliTest, RenderSceneFileToAbsolutePath) {
+    writeFile(dir_ / "scene.json", smallScene());
+    const Outcome run =
+        shadelab({"render", (dir_ / "scene.json").string(), "--out", (dir_ / "out.png").string()});
+    ASSERT_EQ(run.exitCode, 0) << describe(run);
+    EXPECT_EQ(listing(dir_), (std::set<std::string>{"out.png", "scene.json"}));
+    const auto size = pngSize(readFile(dir_ / "out.png"));
+    ASSERT_TRUE(size) << "out.png is not a PNG";
+    EXPECT_EQ(size->width, 64u) << "the scene's image.width";
+    EXPECT_EQ(size->height, 64u) << "the scene's image.height";
+}
+
+TEST_F(CliTest, RenderWithExplicitEglBackend) {
+    const Outcome run = shadelab({"render", "--backend", "egl", "--size", "64x64", "--out", "out.png"});
+    ASSERT_EQ(run.exitCode, 0) << describe(run);
+    EXPECT_EQ(listing(dir_), std::set<std::string>{"out.png"});
+    EXPECT_TRUE(pngSize(readFile(dir_ / "out.png")));
+}
+
+TEST_F(CliTest, RenderWithOsmesaBackend) {
+    const Outcome run = shadelab({"render", "--backend", "osmesa", "--size", "64x64", "--out", "out.png"});
+    if (run.exitCode != 0 && run.err.find("without OSMesa") != std::string::npos)
+        GTEST_SKIP() << "this shadelab was built without OSMesa: " << run.err;
+    ASSERT_EQ(run.exitCode, 0) << describe(run);
+    EXPECT_EQ(listing(dir_), std::set<std::string>{"out.png"});
+    const auto size = pngSize(readFile(dir_ / "out.png"));
+    ASSERT_TRUE(size) << "out.png is not a PNG";
+    EXPECT_EQ(size->width, 64u);
+    EXPECT_EQ(size->height, 64u);
+}
+
+TEST_F(CliTest, ReferenceWithoutSceneWritesOnlyThePng) {
+    const Outcome run = shadelab({"reference", "--size", "64x64", "--out", "ref.png"});
+    ASSERT_EQ(run.exitCode, 0) << describe(run);
+    EXPECT_EQ(listing(dir_), std::set<std::string>{"ref.png"});
+    const auto size = pngSize(readFile(dir_ / "ref.png"));
+    ASSERT_TRUE(size) << "ref.png is not a PNG";
+    EXPECT_EQ(size->width, 64u);
+    EXPECT_EQ(size->height, 64u);
+}
+
+TEST_F(CliTest, ReferenceSceneFile) {
+    writeFile(dir_ / "scene.json", smallScene());
+    const Outcome run = shadelab({"reference", "scene.json", "--out", "ref.png"});
+    ASSERT_EQ(run.exitCode, 0) << describe(run);
+    EXPECT_EQ(listing(dir_), (std::set<std::string>{"ref.png", "scene.json"}));
+    const auto size = pngSize(readFile(dir_ / "ref.png"));
+    ASSERT_TRUE(size) << "ref.png is not a PNG";
+    EXPECT_EQ(size->width, 64u);
+    EXPECT_EQ(size->height, 64u);
+}
+
+// --- Flags override the scene file --------------------------------------------------------------------
+
+TEST_F(CliTest, ShadingFlagOverridesScene) {
+    writeFile(dir_ / "flat.json", smallScene("flat"));
+    writeFile(dir_ / "phong.json", smallScene("phong"));
+    const std::string overridden =
+        renderBytes({"render", "flat.json", "--shading", "phong"}, "overridden.png");
+    const std::string phong = renderBytes({"render", "phong.json"}, "phong.png");
+    const std::string flat = renderBytes({"render", "flat.json"}, "flat.png");
+    EXPECT_TRUE(overridden == phong) << "flat scene + --shading phong differs from the phong scene";
+    EXPECT_TRUE(overridden != flat) << "--shading phong was ignored: the image equals the flat one";
+}
+
+TEST_F(CliTest, LightingFlagOverridesScene) {
+    writeFile(dir_ / "phong.json", smallScene("phong", "phong"));
+    writeFile(dir_ / "blinn.json", smallScene("phong", "blinn-phong"));
+    const std::string overridden =
+        renderBytes({"render", "phong.json", "--lighting", "blinn-phong"}, "o.png");
+    const std::string blinn = renderBytes({"render", "blinn.json"}, "blinn.png");
+    const std::string phong = renderBytes({"render", "phong.json"}, "phong.png");
+    EXPECT_TRUE(overridden == blinn)
+        << "phong scene + --lighting blinn-phong differs from the blinn-phong scene";
+    EXPECT_TRUE(overridden != phong) << "--lighting blinn-phong was ignored: the image equals the phong one";
+}
+
+TEST_F(CliTest, SubdivisionsFlagOverridesScene) {
+    writeFile(dir_ / "coarse.json", smallScene("flat", "blinn-phong", 1));
+    writeFile(dir_ / "fine.json", smallScene("flat", "blinn-phong", 4));
+    const std::string overridden = renderBytes({"render", "coarse.json", "--subdivisions", "4"}, "o.png");
+    const std::string fine = renderBytes({"render", "fine.json"}, "fine.png");
+    const std::string coarse = renderBytes({"render", "coarse.json"}, "coarse.png");
+    EXPECT_TRUE(overridden == fine) << "level-1 scene + --subdivisions 4 differs from the level-4 scene";
+    EXPECT_TRUE(overridden != coarse) << "--subdivisions 4 was ignored: the image equals the level-1 one";
+}
+
+TEST_F(CliTest, SizeFlagOverridesScene) {
+    writeFile(dir_ / "scene.json", smallScene("phong", "blinn-phong", 3, 48, 48));
+    const auto size = pngSize(renderBytes({"render", "scene.json", "--size", "64x32"}, "out.png"));
+    ASSERT_TRUE(size);
+    EXPECT_EQ(size->width, 64u) << "IHDR width";
+    EXPECT_EQ(size->height, 32u) << "IHDR height";
+}
+
+// --- Output files are replaced only on success --------------------------------------------------------
+
+constexpr std::string_view kPrecious = "not a PNG: the bytes of an earlier run that must survive a failure\n";
+
+TEST_F(CliTest, FailedRenderLeavesExistingOutputUnchanged) {
+    writeFile(dir_ / "out.png", kPrecious);
+    const Outcome run = shadelab({"render", "--shading", "bogus", "--size", "64x64", "--out", "out.png"});
+    EXPECT_EQ(run.exitCode, 2) << describe(run);
+    EXPECT_EQ(readFile(dir_ / "out.png"), kPrecious);
+    EXPECT_EQ(listing(dir_), std::set<std::string>{"out.png"});
+}
+
+TEST_F(CliTest, FailedReferenceLeavesExistingOutputUnchanged) {
+    writeFile(dir_ / "out.png", kPrecious);
+    const Outcome run =
+        shadelab({"reference", "--subdivisions", "11", "--size", "64x64", "--out", "out.png"});
+    EXPECT_EQ(run.exitCode, 2) << describe(run);
+    EXPECT_EQ(readFile(dir_ / "out.png"), kPrecious);
+    EXPECT_EQ(listing(dir_), std::set<std::string>{"out.png"});
+}
+
+TEST_F(CliTest, SuccessfulRenderReplacesExistingOutput) {
+    writeFile(dir_ / "out.png", kPrecious);
+    const Outcome run = shadelab({"render", "--size", "64x64", "--out", "out.png"});
+    ASSERT_EQ(run.exitCode, 0) << describe(run);
+    EXPECT_TRUE(pngSize(readFile(dir_ / "out.png"))) << "out.png was not replaced by a PNG";
+    EXPECT_EQ(listing(dir_), std::set<std::string>{"out.png"});
+}
+
+// An I/O failure is a run-time failure (exit 1), not bad input: /proc exists but takes no new files.
+TEST_F(CliTest, UnwritableOutputFolderIsRuntimeFailure) {
+    const std::string out = "/proc/shadelab-cli-test-" + std::to_string(::getpid()) + ".png";
+    const Outcome run = shadelab({"render", "--size", "64x64", "--out", out});
+    EXPECT_EQ(run.exitCode, 1) << describe(run);
+    EXPECT_NE(run.err.find(out), std::string::npos) << "stderr does not name the output path\n"
+                                                    << describe(run);
+    EXPECT_FALSE(fs::exists(out));
+    EXPECT_TRUE(listing(dir_).empty());
+}
+
+// --- Help and the demo --------------------------------------------------------------------------------
+
+TEST_F(CliTest, HelpListsTheSubcommands) {
+    const Outcome run = shadelab({"--help"});
+    ASSERT_EQ(run.exitCode, 0) << describe(run);
+    EXPECT_NE(run.out.find("render"), std::string::npos) << describe(run);
+    EXPECT_NE(run.out.find("reference"), std::string::npos) << describe(run);
+    EXPECT_TRUE(listing(dir_).empty());
+}
+
+TEST_F(CliTest, DemoWithoutDisplayWritesShowcase) {
+    const fs::path out = dir_ / "s.png";
+    const Outcome run = shadelab({"--showcase-out", out.string()}, Display::None);
+    ASSERT_EQ(run.exitCode, 0) << describe(run);
+    EXPECT_NE(run.out.find(out.string()), std::string::npos) << "the showcase path is not printed\n"
+                                                             << describe(run);
+    EXPECT_NE((run.out + run.err).find("display"), std::string::npos)
+        << "it does not say there is no display\n"
+        << describe(run);
+    EXPECT_EQ(listing(dir_), std::set<std::string>{"s.png"});
+    const auto size = pngSize(readFile(out));
+    ASSERT_TRUE(size) << "s.png is not a PNG";
+    EXPECT_GT(size->width, size->height) << "the showcase is 4 tiles wide and 2 (plus labels) high";
+}
+
+// --- Bad input: exit code 2, a message naming the argument or JSON path and the value, no file left ----
+
+enum class Prepare { Nothing, SceneFile, SceneIsDirectory, OutIsDirectory };
+
+struct BadInput {
+    const char* name;
+    std::vector<std::string> args;
+    std::vector<std::string> mentions; // substrings stderr must contain: what is wrong and the bad value
+    Prepare prepare = Prepare::Nothing;
+    std::string scene = smallScene(); // written to scene.json for Prepare::SceneFile
+    const char* pattern = nullptr;    // a regex stderr must also match, where substrings are not enough
+    Display display = Display::Inherit;
+};
+
+std::ostream& operator<<(std::ostream& out, const BadInput& c) {
+    return out << c.name;
+}
+
+const std::string kNegativeAttenuation =
+    R"({ "lights": [ { "type": "point", "position": [3, 3, 5], "attenuation": [1, 0, -1] } ] })";
+
+const BadInput kBadInputs[] = {
+    {.name = "shading_bogus",
+     .args = {"render", "--shading", "bogus", "--size", "64x64", "--out", "out.png"},
+     .mentions = {"--shading", "bogus"}},
+    {.name = "lighting_bogus",
+     .args = {"render", "--lighting", "bogus", "--size", "64x64", "--out", "out.png"},
+     .mentions = {"--lighting", "bogus"}},
+    {.name = "subdivisions_above_maximum",
+     .args = {"render", "--subdivisions", "11", "--size", "64x64", "--out", "out.png"},
+     .mentions = {"--subdivisions", "11", "MiB"},
+     .pattern = R"(maximum\D*10\b)"},
+    {.name = "subdivisions_negative",
+     .args = {"render", "--subdivisions", "-1", "--size", "64x64", "--out", "out.png"},
+     .mentions = {"--subdivisions", "-1"}},
+    {.name = "size_zero_width",
+     .args = {"render", "--size", "0x10", "--out", "out.png"},
+     .mentions = {"--size", "0x10"}},
+    {.name = "size_too_large",
+     .args = {"render", "--size", "20000x20000", "--out", "out.png"},
+     .mentions = {"--size", "20000x20000"}},
+    {.name = "size_not_wxh",
+     .args = {"render", "--size", "abc", "--out", "out.png"},
+     .mentions = {"--size", "abc"}},
+    {.name = "backend_vulkan",
+     .args = {"render", "--backend", "vulkan", "--size", "64x64", "--out", "out.png"},
+     .mentions = {"--backend", "vulkan"}},
+    {.name = "out_missing", .args = {"render", "--size", "64x64"}, .mentions = {"--out"}},
+    {.name = "out_folder_missing",
+     .args = {"render", "--size", "64x64", "--out", "no-such-folder/out.png"},
+     .mentions = {"--out", "no-such-folder"}},
+    {.name = "out_is_directory",
+     .args = {"render", "--size", "64x64", "--out", "out.png"},
+     .mentions = {"--out", "out.png"},
+     .prepare = Prepare::OutIsDirectory},
+    {.name = "scene_missing",
+     .args = {"render", "no-such-scene.json", "--size", "64x64", "--out", "out.png"},
+     .mentions = {"no-such-scene.json"}},
+    {.name = "scene_is_directory",
+     .args = {"render", "scene.json", "--size", "64x64", "--out", "out.png"},
+     .mentions = {"scene.json"},
+     .prepare = Prepare::SceneIsDirectory},
+    {.name = "scene_malformed_json",
+     .args = {"render", "scene.json", "--size", "64x64", "--out", "out.png"},
+     .mentions = {"scene.json"},
+     .prepare = Prepare::SceneFile,
+     .scene = R"({ "shading": "phong", "objects": [ { "radius": 1 )"},
+    {.name = "scene_unknown_key",
+     .args = {"render", "scene.json", "--size", "64x64", "--out", "out.png"},
+     .mentions = {"objects[0]", "radious"},
+     .prepare = Prepare::SceneFile,
+     .scene = R"({ "objects": [ { "radius": 1, "radious": 2 } ] })"},
+    {.name = "scene_negative_attenuation",
+     .args = {"render", "scene.json", "--size", "64x64", "--out", "out.png"},
+     .mentions = {"lights[0].attenuation[2]", "-1"},
+     .prepare = Prepare::SceneFile,
+     .scene = kNegativeAttenuation},
+    // A mistyped subcommand is the bad argument; the message must name it, not only the flags after it.
+    {.name = "unknown_subcommand",
+     .args = {"rendr", "--size", "64x64", "--out", "out.png"},
+     .mentions = {"rendr"}},
+    {.name = "extra_positional",
+     .args = {"render", "scene.json", "extra.json", "--size", "64x64", "--out", "out.png"},
+     .mentions = {"extra.json"},
+     .prepare = Prepare::SceneFile},
+    {.name = "reference_shading_bogus",
+     .args = {"reference", "--shading", "bogus", "--size", "64x64", "--out", "out.png"},
+     .mentions = {"--shading", "bogus"}},
+    {.name = "reference_scene_negative_attenuation",
+     .args = {"reference", "scene.json", "--size", "64x64", "--out", "out.png"},
+     .mentions = {"lights[0].attenuation[2]", "-1"},
+     .prepare = Prepare::SceneFile,
+     .scene = kNegativeAttenuation},
+    {.name = "reference_out_missing", .args = {"reference", "--size", "64x64"}, .mentions = {"--out"}},
+    {.name = "subdivisions_not_an_integer",
+     .args = {"render", "--subdivisions", "1.5", "--size", "64x64", "--out", "out.png"},
+     .mentions = {"--subdivisions", "1.5"}},
+    {.name = "out_empty", .args = {"render", "--size", "64x64", "--out", ""}, .mentions = {"--out"}},
+    {.name = "scene_non_finite_number",
+     .args = {"render", "scene.json", "--size", "64x64", "--out", "out.png"},
+     .mentions = {"objects[0].radius", "1e999"},
+     .prepare = Prepare::SceneFile,
+     .scene = R"({ "objects": [ { "radius": 1e999 } ] })"},
+    {.name = "scene_wrong_type",
+     .args = {"render", "scene.json", "--size", "64x64", "--out", "out.png"},
+     .mentions = {"shading", "3"},
+     .prepare = Prepare::SceneFile,
+     .scene = R"({ "shading": 3 })"},
+    // The demo validates its arguments before it looks for a display or renders the showcase.
+    {.name = "demo_scene_missing",
+     .args = {"no-such-scene.json", "--showcase-out", "s.png"},
+     .mentions = {"no-such-scene.json"},
+     .display = Display::None},
+    {.name = "showcase_out_folder_missing",
+     .args = {"--showcase-out", "no-such-folder/s.png"},
+     .mentions = {"--showcase-out", "no-such-folder"},
+     .display = Display::None},
+};
+
+class CliBadInputTest : public CliTest, public ::testing::WithParamInterface<BadInput> {};
+
+TEST_P(CliBadInputTest, ExitsWithTwoNamesTheValueAndWritesNothing) {
+    const BadInput& c = GetParam();
+    switch (c.prepare) {
+    case Prepare::Nothing:
+        break;
+    case Prepare::SceneFile:
+        writeFile(dir_ / "scene.json", c.scene);
+        break;
+    case Prepare::SceneIsDirectory:
+        fs::create_directory(dir_ / "scene.json");
+        break;
+    case Prepare::OutIsDirectory:
+        fs::create_directory(dir_ / "out.png");
+        break;
+    }
+    const std::set<std::string> before = listing(dir_);
+    const Outcome run = shadelab(c.args, c.display);
+    EXPECT_EQ(run.exitCode, 2) << describe(run);
+    for (const std::string& mention : c.mentions)
+        EXPECT_NE(run.err.find(mention), std::string::npos) << "stderr does not mention " << mention << "\n"
+                                                            << describe(run);
+    if (c.pattern) {
+        EXPECT_TRUE(std::regex_search(run.err, std::regex(c.pattern)))
+            << "stderr does not match /" << c.pattern << "/\n"
+            << describe(run);
+    }
+    EXPECT_EQ(listing(dir_), before) << "a file was written or left behind";
+}
+
+INSTANTIATE_TEST_SUITE_P(Table, CliBadInputTest, ::testing::ValuesIn(kBadInputs),
+                         [](const ::testing::TestParamInfo<BadInput>& info) { return info.param.name; });
+
+} // namespace

@@ -1,1 +1,78 @@
-// placeholder: being written
+#include "gl/gl_test_support.h"
+
+#include <memory>
+
+#include "shadelab/errors.h"
+
+namespace shadelab::test {
+
+Backend backendUnderTest() {
+    const char* name = std::getenv("SHADELAB_TEST_BACKEND");
+    if (!name) return Backend::Egl;
+    const auto backend = parseBackend(name);
+    if (!backend) throw InputError(std::string("SHADELAB_TEST_BACKEND: unknown backend ") + name);
+    return *backend;
+}
+
+HeadlessRenderer* glRenderer(std::string& why) {
+    static std::unique_ptr<HeadlessRenderer> renderer;
+    static std::string failure;
+    if (!renderer && failure.empty()) {
+        try {
+            renderer = std::make_unique<HeadlessRenderer>(backendUnderTest());
+        } catch (const std::exception& e) {
+            failure = e.what();
+        }
+    }
+    why = failure;
+    return renderer.get();
+}
+
+InteriorError interiorError(const ImageF& rendered, const ReferenceImage& reference, int erode) {
+    const int w = rendered.width, h = rendered.height;
+    // The rendered coverage (alpha) as ids: the object is taken from the reference where both cover.
+    std::vector<int> renderedIds(reference.objectId.size(), -1);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            if (rendered.pixel(x, y)[3] > 0.5f) renderedIds[std::size_t(y) * w + x] = reference.objectId[std::size_t(y) * w + x];
+    const std::vector<bool> inReference = interiorMask(reference.objectId, w, h, erode);
+    const std::vector<bool> inRendered = interiorMask(renderedIds, w, h, erode);
+    InteriorError error;
+    double sum = 0;
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            const std::size_t i = std::size_t(y) * w + x;
+            if (!inReference[i] || !inRendered[i]) continue;
+            for (int c = 0; c < 3; ++c) {
+                const double d = 255.0 * std::abs(double(rendered.pixel(x, y)[c]) - reference.color.pixel(x, y)[c]);
+                sum += d;
+                error.max = std::max(error.max, d);
+            }
+            ++error.pixels;
+        }
+    }
+    error.mean = error.pixels ? sum / (3.0 * double(error.pixels)) : 0;
+    return error;
+}
+
+Scene litSphereScene(int size, LightType type) {
+    Scene scene;
+    scene.width = scene.height = size;
+    Light light;
+    light.type = type;
+    light.ambient = {0.1, 0.1, 0.1};
+    light.diffuse = {1, 1, 1};
+    light.specular = {1, 1, 1};
+    light.position = {2, 2, 3};
+    light.direction = {-2, -2, -3};
+    if (type == LightType::Ambient) light.ambient = {0.6, 0.6, 0.6};
+    if (type == LightType::Point || type == LightType::Spot) light.attenuation = {0.6, 0.05, 0.01};
+    if (type == LightType::Spot) {
+        light.cutoffDeg = 12;
+        light.exponent = 8;
+    }
+    scene.lights = {light};
+    return scene;
+}
+
+} // namespace shadelab::test

@@ -1,0 +1,40 @@
+// What every GL test needs: the backend under test (SHADELAB_TEST_BACKEND, set per CTest registration),
+// one headless renderer per test process, and scenes built in code.
+#pragma once
+
+#include <cstdlib>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "shadelab/headless.h"
+#include "shadelab/reference.h"
+
+namespace shadelab::test {
+
+Backend backendUnderTest();
+
+// The process's renderer, or nullptr with the reason in `why` when no context can be made.
+HeadlessRenderer* glRenderer(std::string& why);
+
+// Interior error of an image against the analytic reference: |Δ| per colour channel, in 8-bit units,
+// over pixels interior to the same object in both (each coverage eroded by `erode` pixels).
+struct InteriorError {
+    double mean = 0, max = 0;
+    std::size_t pixels = 0;
+};
+InteriorError interiorError(const ImageF& rendered, const ReferenceImage& reference, int erode = 2);
+
+// A sphere scene of size×size with one light of the given type, lit from the upper right front.
+Scene litSphereScene(int size, LightType light);
+
+} // namespace shadelab::test
+
+// Without a GL context a test skips with the reason, except in CI (CI set), where it fails.
+#define SHADELAB_REQUIRE_GL(renderer)                                                                      \
+    std::string renderer##Why;                                                                             \
+    HeadlessRenderer* renderer = ::shadelab::test::glRenderer(renderer##Why);                              \
+    if (!renderer) {                                                                                       \
+        if (std::getenv("CI")) FAIL() << "no GL context in CI: " << renderer##Why;                         \
+        GTEST_SKIP() << "no GL context: " << renderer##Why;                                                \
+    }
