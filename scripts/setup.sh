@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Installs whatever shadelab needs that this Debian 12 machine lacks (as root, or through sudo), then
+# configures and builds into build/. Used by scripts/run.sh and scripts/test.sh; safe to run again.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(
+  # toolchain
+  g++ cmake make pkg-config ca-certificates
+  # libraries, all found by find_package / pkg-config
+  libglfw3-dev libglm-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libosmesa6-dev libpng-dev
+  nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev python3-glad
+  # the demo under a virtual display, and driving it in tests
+  xvfb xauth xdotool x11-apps
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "shadelab: installing ${missing[*]}"
+  sudo=()
+  [ "$(id -u)" -eq 0 ] || sudo=(sudo)
+  "${sudo[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+build_type=${SHADELAB_BUILD_TYPE:-RelWithDebInfo}
+cmake -S . -B build -DCMAKE_BUILD_TYPE="$build_type"
+cmake --build build -j"$(nproc)"
