@@ -1,3 +1,4 @@
+#include <cctype>
 #include <string>
 
 #include "shadelab/headless.h"
@@ -5,10 +6,11 @@
 namespace shadelab {
 namespace {
 
-constexpr glm::u8vec4 kLabelColor{235, 235, 235, 255};
+constexpr glm::u8vec4 kTextColor{235, 235, 235, 255};
+constexpr glm::u8vec4 kBannerColor{52, 58, 74, 255};
 constexpr glm::u8vec4 kPanelColor{24, 24, 28, 255};
-constexpr int kLabelScale = 2;
-constexpr int kLabelHeight = 7 * kLabelScale + 12; // one line of the 5×7 font plus padding
+constexpr int kTextScale = 2;
+constexpr int kStripHeight = 7 * kTextScale + 12; // one line of the 5×7 font plus padding
 
 std::string upper(std::string_view text) {
     std::string out(text);
@@ -16,25 +18,32 @@ std::string upper(std::string_view text) {
     return out;
 }
 
+void centredText(Image& canvas, int x, int y, int width, const std::string& text) {
+    drawText(canvas, x + (width - textWidth(text, kTextScale)) / 2, y + 6, text, kTextScale, kTextColor);
+}
+
 } // namespace
 
+// Rows: one per lighting model, headed by a banner naming it; columns: one per shading mode, each tile
+// headed by the mode's name.
 Image renderShowcase(HeadlessRenderer& renderer, const Scene& scene, int tileSize) {
     const int columns = int(kShadingModes.size()), rows = int(kLightingModels.size());
-    const int cellHeight = tileSize + kLabelHeight;
-    Image canvas(columns * tileSize, rows * cellHeight);
+    const int rowHeight = 2 * kStripHeight + tileSize;
+    Image canvas(columns * tileSize, rows * rowHeight);
     fillRect(canvas, 0, 0, canvas.width, canvas.height, kPanelColor);
 
     Scene tile = scene;
     tile.width = tile.height = tileSize;
     for (int row = 0; row < rows; ++row) {
+        tile.lighting = kLightingModels[std::size_t(row)];
+        const int y = row * rowHeight;
+        fillRect(canvas, 0, y, canvas.width, kStripHeight, kBannerColor);
+        centredText(canvas, 0, y, canvas.width, upper(toString(tile.lighting)) + " LIGHTING");
         for (int column = 0; column < columns; ++column) {
             tile.shading = kShadingModes[std::size_t(column)];
-            tile.lighting = kLightingModels[std::size_t(row)];
-            const int x = column * tileSize, y = row * cellHeight;
-            const std::string label = upper(toString(tile.shading)) + " / " + upper(toString(tile.lighting));
-            drawText(canvas, x + (tileSize - textWidth(label, kLabelScale)) / 2, y + 6, label, kLabelScale,
-                     kLabelColor);
-            blit(canvas, renderer.render(tile), x, y + kLabelHeight);
+            const int x = column * tileSize;
+            centredText(canvas, x, y + kStripHeight, tileSize, upper(toString(tile.shading)) + " SHADING");
+            blit(canvas, renderer.render(tile), x, y + 2 * kStripHeight);
         }
     }
     return canvas;
