@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <utility>
 #include <sstream>
 
 #include "shadelab/errors.h"
@@ -28,11 +29,11 @@ CameraFrame cameraFrame(const glm::dvec3& eye, const glm::dvec3& target, const g
         throw InputError("camera: eye " + str(eye) + " equals target " + str(target) +
                          "; move the eye away from the target");
     const glm::dvec3 w = back / distance;
-    const glm::dvec3 side = glm::cross(up, w);
-    // |t × w| = |t|·sin θ: relative to |t|, so the test is scale-free. 1e-9 rad is far below any usable
-    // camera and far above rounding noise.
+    // Normalizing up first makes the test scale-free and keeps a tiny up (1e-151) from underflowing:
+    // |t̂ × w| = sin θ, and 1e-9 rad is far below any usable camera and far above rounding noise.
     const double upLength = glm::length(up);
-    if (!(upLength > 0) || !(glm::length(side) > 1e-9 * upLength))
+    const glm::dvec3 side = upLength > 0 ? glm::cross(up / upLength, w) : glm::dvec3(0);
+    if (!(glm::length(side) > 1e-9))
         throw InputError("camera: up " + str(up) + " is parallel to the view direction " + str(-w) +
                          "; choose an up vector not parallel to target − eye");
     const glm::dvec3 u = glm::normalize(side);
@@ -52,8 +53,13 @@ glm::dmat4 viewFromWorld(const CameraFrame& f) {
 }
 
 void validateViewVolume(const ViewVolume& vv) {
-    for (double x : {vv.left, vv.right, vv.bottom, vv.top, vv.near, vv.far})
-        if (!std::isfinite(x)) throw InputError("projection: planes must be finite numbers");
+    const std::pair<const char*, double> planes[] = {{"left", vv.left},     {"right", vv.right},
+                                                     {"bottom", vv.bottom}, {"top", vv.top},
+                                                     {"near", vv.near},     {"far", vv.far}};
+    for (const auto& [name, value] : planes)
+        if (!std::isfinite(value))
+            throw InputError(std::string("projection.") + name + ": must be a finite number, got " +
+                             std::to_string(value));
     if (!(vv.near > 0))
         throw InputError("projection.near: must be > 0 (a distance in front of the eye), got " +
                          std::to_string(vv.near));
@@ -71,6 +77,7 @@ void validateViewVolume(const ViewVolume& vv) {
 ViewVolume viewVolumeFromFovy(double fovyDeg, double aspect, double near, double far) {
     if (!(fovyDeg > 0 && fovyDeg < 180))
         throw InputError("projection.fovy_deg: must be in (0, 180), got " + std::to_string(fovyDeg));
+    validateViewVolume({-1, 1, -1, 1, near, far}); // near and far first: they scale every other plane
     if (!(aspect > 0) || !std::isfinite(aspect))
         throw InputError("image: aspect ratio must be positive and finite");
     const double top = near * std::tan(fovyDeg * std::numbers::pi / 360.0);

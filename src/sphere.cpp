@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <unordered_map>
 
@@ -44,11 +45,27 @@ glm::dvec3 faceNormal(const std::vector<glm::dvec3>& p, const glm::uvec3& t) {
     return glm::normalize(glm::cross(p[t.y] - p[t.x], p[t.z] - p[t.x]));
 }
 
-std::string mebibytes(std::size_t bytes) {
+// Bytes for a level, in double so that absurd levels (asked for by mistake) do not wrap around.
+double memoryBytes(int level) {
+    const double f = std::ldexp(4.0, 2 * level), v = std::ldexp(2.0, 2 * level) + 2;
+    const double cpu = v * 2 * sizeof(glm::dvec3) + f * (sizeof(glm::uvec3) + sizeof(glm::dvec3));
+    const double edgeMap = 6 * (f / 4) * (sizeof(std::uint64_t) + sizeof(std::uint32_t) + 16);
+    const double gpuReady = std::max(v * sizeof(SmoothVertex) + f * 3 * sizeof(std::uint32_t),
+                                     f * 3 * sizeof(FlatVertex));
+    return cpu + edgeMap + gpuReady;
+}
+
+std::string humanBytes(double bytes) {
+    static constexpr const char* kUnits[] = {"B", "KiB", "MiB", "GiB", "TiB", "PiB", "EiB", "ZiB", "YiB"};
+    int unit = 0;
+    while (bytes >= 1024 && unit < 8) {
+        bytes /= 1024;
+        ++unit;
+    }
     std::ostringstream out;
     out << std::fixed;
     out.precision(1);
-    out << double(bytes) / (1024.0 * 1024.0) << " MiB";
+    out << bytes << " " << kUnits[unit];
     return out.str();
 }
 
@@ -58,12 +75,9 @@ std::size_t sphereVertexCount(int level) { return 2 * (std::size_t(1) << (2 * le
 std::size_t sphereTriangleCount(int level) { return std::size_t(4) << (2 * level); }
 
 std::size_t sphereMemoryBytes(int level) {
-    const std::size_t v = sphereVertexCount(level), f = sphereTriangleCount(level);
-    const std::size_t cpu = v * 2 * sizeof(glm::dvec3) + f * (sizeof(glm::uvec3) + sizeof(glm::dvec3));
-    const std::size_t edgeMap = 6 * (f / 4) * (sizeof(std::uint64_t) + sizeof(std::uint32_t) + 16);
-    const std::size_t gpuReady = std::max(v * sizeof(SmoothVertex) + f * 3 * sizeof(std::uint32_t),
-                                          f * 3 * sizeof(FlatVertex));
-    return cpu + edgeMap + gpuReady;
+    const double bytes = memoryBytes(level);
+    return bytes < double(std::numeric_limits<std::size_t>::max()) ? std::size_t(bytes)
+                                                                   : std::numeric_limits<std::size_t>::max();
 }
 
 void checkSubdivisionLevel(int level, const char* field) {
@@ -71,14 +85,12 @@ void checkSubdivisionLevel(int level, const char* field) {
         throw InputError(std::string(field) + ": must be >= 0, got " + std::to_string(level));
     }
     if (level > kMaxSubdivisions) {
-        // Shifts past 62 overflow: name the memory only where it can be computed.
-        const std::string memory = level <= 30 ? "would need about " + mebibytes(sphereMemoryBytes(level)) +
-                                                     " (" + std::to_string(sphereTriangleCount(level)) +
-                                                     " triangles)"
-                                               : "would need more memory than any machine has";
-        throw InputError(std::string(field) + ": level " + std::to_string(level) + " " + memory +
-                         "; the maximum supported level is " + std::to_string(kMaxSubdivisions) + " (" +
-                         mebibytes(sphereMemoryBytes(kMaxSubdivisions)) + ")");
+        const std::string triangles =
+            level <= 30 ? " (" + std::to_string(sphereTriangleCount(level)) + " triangles)" : "";
+        throw InputError(std::string(field) + ": level " + std::to_string(level) + " would need about " +
+                         humanBytes(memoryBytes(level)) + triangles + "; the maximum supported level is " +
+                         std::to_string(kMaxSubdivisions) + " (" + humanBytes(memoryBytes(kMaxSubdivisions)) +
+                         ")");
     }
 }
 

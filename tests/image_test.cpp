@@ -123,8 +123,16 @@ TEST_F(ImageFileTest, WriteOverADirectoryThrows) {
     EXPECT_EQ(entries(), std::vector<fs::path>{path});
 }
 
+// Root ignores directory permissions, so as root the unwritable folder is /proc, where nobody can create
+// a file.
+TEST_F(ImageFileTest, WriteIntoProcThrowsAndLeavesNothing) {
+    const std::string message = runtimeErrorMessage([&] { writePng(gradient(2, 2), "/proc/shadelab-out.png"); });
+    EXPECT_NE(message.find("/proc/shadelab-out.png"), std::string::npos) << message;
+    EXPECT_FALSE(fs::exists("/proc/shadelab-out.png"));
+}
+
 TEST_F(ImageFileTest, WriteIntoUnwritableDirectoryThrows) {
-    if (::geteuid() == 0) GTEST_SKIP() << "root ignores directory permissions";
+    if (::geteuid() == 0) GTEST_SKIP() << "root ignores directory permissions (WriteIntoProc covers root)";
     const fs::path locked = dir_ / "locked";
     fs::create_directory(locked);
     fs::permissions(locked, fs::perms::owner_read | fs::perms::owner_exec);
