@@ -3,7 +3,7 @@
 // Defines it responds to:
 //   MAX_LIGHTS            size of the light array (always defined by the loader)
 //   LIGHTING_BLINN_PHONG  Blinn-Phong specular max(n·h,0)^β; otherwise Phong max(v·r,0)^α
-//   SHADING_TOON          diffuse quantized into TOON_BANDS bands, highlight thresholded at TOON_HIGHLIGHT
+//   SHADING_TOON          diffuse quantized into uToonBands bands, highlight thresholded at TOON_HIGHLIGHT
 
 const int LIGHT_AMBIENT = 0;
 const int LIGHT_DIRECTIONAL = 1;
@@ -29,6 +29,7 @@ uniform vec3 uMaterialDiffuse;
 uniform vec3 uMaterialSpecular;
 uniform float uShininess;    // >= 1: pow(0, 0) is undefined in GLSL
 uniform bool uOrthographic;  // parallel projection: the viewer direction is +z everywhere
+uniform float uToonBands;    // SHADING_TOON only
 
 // normalize(v), or the fallback where v is too short to normalize (DESIGN §3 guards).
 vec3 safeNormalize(vec3 v, vec3 fallback) {
@@ -77,7 +78,7 @@ vec3 shade(vec3 positionView, vec3 normalView, vec3 toViewerView) {
         float diffuse = max(lDotN, 0.0);
         float spec = lDotN > 0.0 ? specularTerm(normalView, toViewerView, toLightView, lDotN) : 0.0;
 #ifdef SHADING_TOON
-        diffuse = ceil(diffuse * float(TOON_BANDS)) / float(TOON_BANDS);
+        diffuse = ceil(diffuse * uToonBands) / uToonBands;
         spec = spec > TOON_HIGHLIGHT ? 1.0 : 0.0;
 #endif
         color += factor * (uMaterialDiffuse * uLights[i].diffuse * diffuse +

@@ -13,11 +13,9 @@
 #include <system_error>
 #include <utility>
 
-#include <fcntl.h>
 #include <png.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
+#include "shadelab/atomic_file.h"
 #include "shadelab/errors.h"
 
 namespace shadelab {
@@ -38,79 +36,12 @@ std::string quoted(const fs::path& path) {
 }
 
 [[noreturn]] void writeFailed(const fs::path& path, const std::string& reason) {
-    throw RuntimeError("cannot write PNG " + quoted(path) + ": " + reason);
+    failWrite("PNG", path, reason);
 }
 
 [[noreturn]] void readFailed(const fs::path& path, const std::string& reason) {
     throw RuntimeError("cannot read PNG " + quoted(path) + ": " + reason);
 }
-
-// mkstemp creates files 0600; a finished render should get the permissions fopen would have given it.
-// umask can only be read by setting it, so this runs once.
-mode_t newFileMode() {
-    static const mode_t mode = [] {
-        const mode_t mask = ::umask(0);
-        ::umask(mask);
-        return mode_t(0666) & ~mask;
-    }();
-    return mode;
-}
-
-// A temporary file beside the target. Until commit() renames it over the target, the destructor removes it,
-// so an exception anywhere in writePng leaves the directory as it was.
-class TempFile {
-public:
-    explicit TempFile(const fs::path& target) : target_(target) {
-        const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-        std::string pattern = (dir / ("." + target.filename().string() + ".XXXXXX")).string();
-        const int fd = ::mkstemp(pattern.data());
-        if (fd < 0)
-            writeFailed(target,
-                        "cannot create a temporary file in " + quoted(dir) + ": " + std::strerror(errno));
-        path_ = pattern;
-        // A throwing constructor skips the destructor, so these failures clean up themselves.
-        if (::fchmod(fd, newFileMode()) != 0 || !(file_ = ::fdopen(fd, "wb"))) {
-            const std::string reason = std::strerror(errno);
-            ::close(fd);
-            cleanUp();
-            writeFailed(target, "cannot open the temporary file: " + reason);
-        }
-    }
-    TempFile(const TempFile&) = delete;
-    TempFile& operator=(const TempFile&) = delete;
-    ~TempFile() { cleanUp(); }
-
-    FILE* stream() const { return file_; }
-
-    // Everything must be on disk before the rename, or a crash could leave a complete-looking empty file.
-    void close() {
-        if (std::fflush(file_) != 0) fail("flush");
-        if (::fsync(::fileno(file_)) != 0) fail("fsync");
-        FILE* file = std::exchange(file_, nullptr);
-        if (std::fclose(file) != 0) fail("close");
-    }
-
-    void commit() {
-        std::error_code error;
-        fs::rename(path_, target_, error);
-        if (error) writeFailed(target_, "cannot rename " + quoted(path_) + " over it: " + error.message());
-        path_.clear();
-    }
-
-private:
-    [[noreturn]] void fail(const char* step) {
-        writeFailed(target_, std::string(step) + " " + quoted(path_) + ": " + std::strerror(errno));
-    }
-
-    void cleanUp() noexcept {
-        if (file_) std::fclose(std::exchange(file_, nullptr));
-        if (!path_.empty()) ::unlink(path_.c_str());
-        path_.clear();
-    }
-
-    fs::path target_, path_;
-    FILE* file_ = nullptr;
-};
 
 void checkWritable(const Image& image, const fs::path& path) {
     if (image.width <= 0 || image.height <= 0)
@@ -176,15 +107,14 @@ Image toImage8(const ImageF& image) {
 void writePng(const Image& image, const fs::path& path) {
     checkWritable(image, path);
     const std::vector<std::uint8_t> rgb = dropAlpha(image);
-    TempFile temp(path);
-    PngImage out;
-    out.png.width = png_uint_32(image.width);
-    out.png.height = png_uint_32(image.height);
-    out.png.format = PNG_FORMAT_RGB;
-    if (!png_image_write_to_stdio(&out.png, temp.stream(), 0, rgb.data(), 0, nullptr))
-        writeFailed(path, std::string("libpng: ") + out.png.message);
-    temp.close();
-    temp.commit();
+    writeFileAtomically(path, "PNG", [&](std::FILE* file) {
+        PngImage out;
+        out.png.width = png_uint_32(image.width);
+        out.png.height = png_uint_32(image.height);
+        out.png.format = PNG_FORMAT_RGB;
+        if (!png_image_write_to_stdio(&out.png, file, 0, rgb.data(), 0, nullptr))
+            writeFailed(path, std::string("libpng: ") + out.png.message);
+    });
 }
 
 Image readPng(const fs::path& path) {
@@ -217,8 +147,8 @@ std::string Comparison::summary() const {
     std::ostringstream text;
     text << (passed ? "pass" : "FAIL") << ": max delta " << maxDelta << ", mean delta " << std::fixed
          << std::setprecision(4) << meanDelta << " (limit " << tolerance.meanDelta << "), " << outliers
-         << " pixel(s) over the max-delta limit " << tolerance.maxDelta << " (budget " << tolerance.outlierBudget
-         << ")";
+         << " pixel(s) over the max-delta limit " << tolerance.maxDelta << " (budget "
+         << tolerance.outlierBudget << ")";
     return text.str();
 }
 

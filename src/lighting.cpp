@@ -119,7 +119,7 @@ glm::dvec3 shade(const SurfacePoint& p, const Material& material, std::span<cons
         double diffuse = std::max(lDotN, 0.0);
         double spec = lDotN > 0 ? specular(p, l, lDotN, material.shininess, options.model) : 0.0;
         if (options.toon) {
-            diffuse = std::ceil(diffuse * kToonBands) / kToonBands;
+            diffuse = std::ceil(diffuse * options.toonBands) / options.toonBands;
             spec = spec > kToonHighlight ? 1.0 : 0.0;
         }
         color += factor * (material.diffuse * light.diffuse * diffuse + material.specular * light.specular * spec);

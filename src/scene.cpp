@@ -4,13 +4,13 @@
 // never disagree about what a valid scene is.
 #include "shadelab/scene.h"
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <fstream>
-#include <functional>
 #include <limits>
 #include <set>
 #include <span>
@@ -20,6 +20,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
+#include "shadelab/atomic_file.h"
 #include "shadelab/errors.h"
 
 namespace shadelab {
@@ -46,6 +47,7 @@ struct IntRange {
 };
 constexpr IntRange kImageSizeRange{1, kMaxImageSize};
 constexpr IntRange kSubdivisionRange{0, kMaxSubdivisions};
+constexpr IntRange kToonBandRange{kMinToonBands, kMaxToonBands};
 
 // ---- message pieces ----
 
@@ -71,16 +73,22 @@ std::string quotedText(std::string_view text) {
 
 std::string describe(const Json& value) {
     switch (value.type()) {
-    case Json::value_t::null: return "null";
-    case Json::value_t::boolean: return value.get<bool>() ? "true" : "false";
-    case Json::value_t::string: return "string " + quotedText(value.get_ref<const std::string&>());
+    case Json::value_t::null:
+        return "null";
+    case Json::value_t::boolean:
+        return value.get<bool>() ? "true" : "false";
+    case Json::value_t::string:
+        return "string " + quotedText(value.get_ref<const std::string&>());
     case Json::value_t::number_integer:
     case Json::value_t::number_unsigned:
-    case Json::value_t::number_float: return "number " + formatNumber(value.get<double>());
+    case Json::value_t::number_float:
+        return "number " + formatNumber(value.get<double>());
     case Json::value_t::array:
         return "array of " + std::to_string(value.size()) + (value.size() == 1 ? " element" : " elements");
-    case Json::value_t::object: return "object";
-    default: return "unsupported value";
+    case Json::value_t::object:
+        return "object";
+    default:
+        return "unsupported value";
     }
 }
 
@@ -238,17 +246,26 @@ void checkObject(const SceneObject& object, const std::string& path) {
 
 void checkLightCount(std::size_t count) {
     if (count > static_cast<std::size_t>(kMaxLights))
-        fail("lights", "at most " + std::to_string(kMaxLights) + " lights are supported, got " +
-                           std::to_string(count));
+        fail("lights",
+             "at most " + std::to_string(kMaxLights) + " lights are supported, got " + std::to_string(count));
 }
 
 // "an ambient light", "a point light".
-std::string lightName(LightType type) {
-    return (type == LightType::Ambient ? "an " : "a ") + std::string(toString(type)) + " light";
+std::string withArticle(std::string_view noun) {
+    bool vowel = !noun.empty() && std::string_view("aeiou").find(noun.front()) != std::string_view::npos;
+    return (vowel ? "an " : "a ") + std::string(noun);
 }
 
-bool hasPosition(LightType type) { return type == LightType::Point || type == LightType::Spot; }
-bool hasDirection(LightType type) { return type == LightType::Directional || type == LightType::Spot; }
+std::string lightName(LightType type) {
+    return withArticle(std::string(toString(type)) + " light");
+}
+
+bool hasPosition(LightType type) {
+    return type == LightType::Point || type == LightType::Spot;
+}
+bool hasDirection(LightType type) {
+    return type == LightType::Directional || type == LightType::Spot;
+}
 
 void checkAttenuation(const glm::dvec3& a, const std::string& path) {
     for (int i = 0; i < 3; ++i) checkAtLeast(a[i], 0, indexPath(path, i));
@@ -283,9 +300,12 @@ void checkNesting(std::string_view text) {
     for (std::size_t i = 0; i < text.size(); ++i) {
         char c = text[i];
         if (inString) {
-            if (escaped) escaped = false;
-            else if (c == '\\') escaped = true;
-            else if (c == '"') inString = false;
+            if (escaped)
+                escaped = false;
+            else if (c == '\\')
+                escaped = true;
+            else if (c == '"')
+                inString = false;
         } else if (c == '"') {
             inString = true;
         } else if (c == '[' || c == '{') {
@@ -298,31 +318,45 @@ void checkNesting(std::string_view text) {
     }
 }
 
-// Follows the parser's events to know the JSON path being parsed: nlohmann silently keeps the last of
-// duplicate keys (we reject them instead), and its number-overflow error names no position.
-class ParsePathTracker {
+// nlohmann's messages start with "[json.exception.parse_error.101] "; the id means nothing to a user.
+std::string_view withoutExceptionId(std::string_view message) {
+    if (message.starts_with("[json.exception.")) {
+        std::size_t end = message.find("] ");
+        if (end != std::string_view::npos) return message.substr(end + 2);
+    }
+    return message;
+}
+
+// A first pass over the text that builds nothing and knows the JSON path of every value. The DOM parser
+// silently keeps the last of duplicate keys (we reject them) and reports a number overflow without saying
+// where (we name the path). Not a parse callback: nlohmann rescans the parent array after every element
+// built with a callback, which made a 100 000-element array take minutes.
+class PathTrackingSax : public nlohmann::json_sax<Json> {
 public:
-    bool operator()(int /*depth*/, Json::parse_event_t event, Json& parsed) {
-        using Event = Json::parse_event_t;
-        switch (event) {
-        case Event::object_start: frames_.emplace_back(true); break;
-        case Event::array_start: frames_.emplace_back(false); break;
-        case Event::key: onKey(parsed.get_ref<const std::string&>()); break;
-        case Event::object_end:
-        case Event::array_end:
-            frames_.pop_back();
-            elementDone();
-            break;
-        case Event::value: elementDone(); break;
-        }
+    bool null() override { return valueDone(); }
+    bool boolean(bool) override { return valueDone(); }
+    bool number_integer(number_integer_t) override { return valueDone(); }
+    bool number_unsigned(number_unsigned_t) override { return valueDone(); }
+    bool number_float(number_float_t, const string_t&) override { return valueDone(); }
+    bool string(string_t&) override { return valueDone(); }
+    bool binary(binary_t&) override { return valueDone(); }
+    bool start_object(std::size_t) override { return frames_.emplace_back(true), true; }
+    bool start_array(std::size_t) override { return frames_.emplace_back(false), true; }
+    bool end_object() override { return frames_.pop_back(), valueDone(); }
+    bool end_array() override { return frames_.pop_back(), valueDone(); }
+
+    bool key(string_t& key) override {
+        Frame& frame = frames_.back();
+        frame.key = key;
+        if (!frame.keys.insert(key).second) fail(path(), "duplicate key");
         return true;
     }
 
-    // The path of the value being parsed now.
-    std::string path() const {
-        std::string out;
-        for (const Frame& frame : frames_) out = frame.isObject ? keyPath(out, frame.key) : indexPath(out, frame.index);
-        return out;
+    bool parse_error(std::size_t byte, const std::string& lastToken, const Json::exception& e) override {
+        // 406 is "number overflow": 1e999 would be inf, which the format forbids like any non-finite number.
+        if (e.id == 406) fail(path(), "must be finite, got " + lastToken);
+        fail("", "invalid JSON at byte " + std::to_string(byte) + ": " +
+                     std::string(withoutExceptionId(e.what())));
     }
 
 private:
@@ -334,47 +368,29 @@ private:
         std::set<std::string, std::less<>> keys;
     };
 
-    void onKey(const std::string& key) {
-        Frame& frame = frames_.back();
-        frame.key = key;
-        if (!frame.keys.insert(key).second) fail(path(), "duplicate key");
+    // The path of the value being parsed now.
+    std::string path() const {
+        std::string out;
+        for (const Frame& frame : frames_)
+            out = frame.isObject ? keyPath(out, frame.key) : indexPath(out, frame.index);
+        return out;
     }
 
-    void elementDone() {
+    bool valueDone() {
         if (!frames_.empty() && !frames_.back().isObject) ++frames_.back().index;
+        return true;
     }
 
     std::vector<Frame> frames_;
 };
 
-// nlohmann's messages start with "[json.exception.parse_error.101] "; the id means nothing to a user.
-std::string_view withoutExceptionId(std::string_view message) {
-    if (message.starts_with("[json.exception.")) {
-        std::size_t end = message.find("] ");
-        if (end != std::string_view::npos) return message.substr(end + 2);
-    }
-    return message;
-}
-
-// The text between the first and last single quote of "number overflow parsing '1e999'".
-std::string quotedToken(std::string_view message) {
-    std::size_t first = message.find('\''), last = message.rfind('\'');
-    if (first == std::string_view::npos || last <= first) return std::string(withoutExceptionId(message));
-    return std::string(message.substr(first + 1, last - first - 1));
-}
-
 Json parseJson(std::string_view text) {
     checkNesting(text);
-    ParsePathTracker tracker;
+    PathTrackingSax checker;
+    Json::sax_parse(text.begin(), text.end(), &checker);
     try {
-        // std::ref: the parser copies its callback, and we read the tracker's state afterwards.
-        return Json::parse(text.begin(), text.end(), std::ref(tracker));
-    } catch (const Json::parse_error& e) {
-        fail("", "invalid JSON at byte " + std::to_string(e.byte) + ": " + std::string(withoutExceptionId(e.what())));
-    } catch (const Json::out_of_range& e) {
-        // 1e999: the lexer refuses to produce inf, and we report it as the non-finite number it is.
-        fail(tracker.path(), "must be finite, got " + quotedToken(e.what()));
-    } catch (const Json::exception& e) {
+        return Json::parse(text.begin(), text.end());
+    } catch (const Json::exception& e) { // unreachable after the first pass, but never crash on input
         fail("", "invalid JSON: " + std::string(withoutExceptionId(e.what())));
     }
 }
@@ -382,14 +398,28 @@ Json parseJson(std::string_view text) {
 // ---- tree → values (types and structure; ranges are the check* functions above) ----
 
 void requireObject(const Json& value, std::string_view path) {
-    if (!value.is_object()) fail(path.empty() ? "the top level" : path, "must be an object, got " + describe(value));
+    if (!value.is_object())
+        fail(path.empty() ? "the top level" : path, "must be an object, got " + describe(value));
 }
 
 void checkKeys(const Json& object, std::string_view path, std::span<const std::string_view> allowed) {
+    for (auto it = object.begin(); it != object.end(); ++it)
+        if (std::find(allowed.begin(), allowed.end(), it.key()) == allowed.end())
+            fail(keyPath(path, it.key()), "unknown key; expected one of " + joinKeys(allowed));
+}
+
+// For objects whose keys depend on their type (projections, lights): a key that another type takes is not a
+// typo but a misunderstanding, so say that it does not apply rather than that it is unknown.
+void checkKeysOfType(const Json& object, std::string_view path, std::span<const std::string_view> allowed,
+                     std::span<const std::string_view> anyType, std::string_view typeName) {
+    auto contains = [](std::span<const std::string_view> keys, std::string_view key) {
+        return std::find(keys.begin(), keys.end(), key) != keys.end();
+    };
     for (auto it = object.begin(); it != object.end(); ++it) {
-        bool known = false;
-        for (std::string_view key : allowed) known = known || key == it.key();
-        if (!known) fail(keyPath(path, it.key()), "unknown key; expected one of " + joinKeys(allowed));
+        if (contains(allowed, it.key())) continue;
+        std::string problem =
+            contains(anyType, it.key()) ? "does not apply to " + std::string(typeName) : "unknown key";
+        fail(keyPath(path, it.key()), problem + "; expected one of " + joinKeys(allowed));
     }
 }
 
@@ -477,13 +507,18 @@ void readCamera(const Json& camera, Scene& scene) {
 // Projection defaults): the unit square, a sensible orthographic view of the default unit sphere.
 Projection readProjection(const Json& json) {
     static constexpr std::array<std::string_view, 4> kPerspectiveKeys = {"type", "fovy_deg", "near", "far"};
-    static constexpr std::array<std::string_view, 7> kBoxKeys = {"type", "left",  "right", "bottom",
+    static constexpr std::array<std::string_view, 7> kBoxKeys = {"type", "left", "right", "bottom",
                                                                  "top",  "near", "far"};
     requireObject(json, "projection");
     Projection p;
-    if (const Json* type = member(json, "type")) p.type = readEnum(*type, "projection.type", kProjectionTypes);
+    if (const Json* type = member(json, "type"))
+        p.type = readEnum(*type, "projection.type", kProjectionTypes);
+    static constexpr std::array<std::string_view, 8> kAnyKeys = {"type",   "fovy_deg", "left", "right",
+                                                                 "bottom", "top",      "near", "far"};
     bool perspective = p.type == ProjectionType::Perspective;
-    checkKeys(json, "projection", perspective ? std::span<const std::string_view>(kPerspectiveKeys) : kBoxKeys);
+    checkKeysOfType(json, "projection",
+                    perspective ? std::span<const std::string_view>(kPerspectiveKeys) : kBoxKeys, kAnyKeys,
+                    withArticle(std::string(toString(p.type)) + " projection"));
     readField(json, "projection", "fovy_deg", p.fovyDeg);
     readField(json, "projection", "left", p.left);
     readField(json, "projection", "right", p.right);
@@ -537,43 +572,29 @@ std::vector<SceneObject> readObjects(const Json& json) {
 
 std::span<const std::string_view> lightKeys(LightType type) {
     static constexpr std::array<std::string_view, 2> kAmbient = {"type", "ambient"};
-    static constexpr std::array<std::string_view, 5> kDirectional = {"type", "direction", "ambient", "diffuse",
-                                                                     "specular"};
+    static constexpr std::array<std::string_view, 5> kDirectional = {"type", "direction", "ambient",
+                                                                     "diffuse", "specular"};
     static constexpr std::array<std::string_view, 6> kPoint = {"type",    "position", "attenuation",
                                                                "ambient", "diffuse",  "specular"};
-    static constexpr std::array<std::string_view, 9> kSpot = {
-        "type", "position", "direction", "cutoff_deg", "exponent", "attenuation", "ambient", "diffuse", "specular"};
+    static constexpr std::array<std::string_view, 9> kSpot = {"type",       "position", "direction",
+                                                              "cutoff_deg", "exponent", "attenuation",
+                                                              "ambient",    "diffuse",  "specular"};
     switch (type) {
-    case LightType::Ambient: return kAmbient;
-    case LightType::Directional: return kDirectional;
-    case LightType::Point: return kPoint;
-    case LightType::Spot: break;
+    case LightType::Ambient:
+        return kAmbient;
+    case LightType::Directional:
+        return kDirectional;
+    case LightType::Point:
+        return kPoint;
+    case LightType::Spot:
+        break;
     }
     return kSpot;
 }
 
-// A key another light type uses is not a typo but a misunderstanding; say which types it belongs to.
-void checkLightKeys(const Json& json, const std::string& path, LightType type) {
-    std::span<const std::string_view> allowed = lightKeys(type);
-    std::span<const std::string_view> all = lightKeys(LightType::Spot);
-    for (auto it = json.begin(); it != json.end(); ++it) {
-        auto in = [&](std::span<const std::string_view> keys) {
-            for (std::string_view key : keys)
-                if (key == it.key()) return true;
-            return false;
-        };
-        if (in(allowed)) continue;
-        if (in(all))
-            fail(keyPath(path, it.key()),
-                 "does not apply to " + lightName(type) + "; expected one of " + joinKeys(allowed));
-        fail(keyPath(path, it.key()), "unknown key; expected one of " + joinKeys(allowed));
-    }
-}
-
 void readRequired(const Json& json, const std::string& path, std::string_view key, LightType type,
                   glm::dvec3& out) {
-    if (!readField(json, path, key, out))
-        fail(keyPath(path, key), "required for " + lightName(type));
+    if (!readField(json, path, key, out)) fail(keyPath(path, key), "required for " + lightName(type));
 }
 
 Light readLight(const Json& json, const std::string& path) {
@@ -582,7 +603,7 @@ Light readLight(const Json& json, const std::string& path) {
     if (!typeJson) fail(keyPath(path, "type"), "required; expected one of " + joinNames(kLightTypes));
     Light light;
     light.type = readEnum(*typeJson, keyPath(path, "type"), kLightTypes);
-    checkLightKeys(json, path, light.type);
+    checkKeysOfType(json, path, lightKeys(light.type), lightKeys(LightType::Spot), lightName(light.type));
     if (light.type == LightType::Ambient) light.diffuse = light.specular = glm::dvec3(0);
     if (hasPosition(light.type)) readRequired(json, path, "position", light.type, light.position);
     if (hasDirection(light.type)) readRequired(json, path, "direction", light.type, light.direction);
@@ -600,22 +621,26 @@ Light readLight(const Json& json, const std::string& path) {
 std::vector<Light> readLights(const Json& json) {
     checkLightCount(requireArray(json, "lights").size());
     std::vector<Light> lights;
-    for (std::size_t i = 0; i < json.size(); ++i) lights.push_back(readLight(json[i], indexPath("lights", i)));
+    for (std::size_t i = 0; i < json.size(); ++i)
+        lights.push_back(readLight(json[i], indexPath("lights", i)));
     return lights;
 }
 
 Scene readScene(const Json& root) {
-    static constexpr std::array<std::string_view, 7> kKeys = {"image",   "camera",  "projection", "shading",
-                                                              "lighting", "objects", "lights"};
+    static constexpr std::array<std::string_view, 8> kKeys = {"image",   "camera", "projection", "shading",
+                                                              "lighting", "toon_bands", "objects", "lights"};
     requireObject(root, "");
     checkKeys(root, "", kKeys);
     Scene scene;
     if (const Json* image = member(root, "image")) readImage(*image, scene);
     if (const Json* camera = member(root, "camera")) readCamera(*camera, scene);
     if (const Json* projection = member(root, "projection")) scene.projection = readProjection(*projection);
-    if (const Json* shading = member(root, "shading")) scene.shading = readEnum(*shading, "shading", kShadingModes);
+    if (const Json* shading = member(root, "shading"))
+        scene.shading = readEnum(*shading, "shading", kShadingModes);
     if (const Json* lighting = member(root, "lighting"))
         scene.lighting = readEnum(*lighting, "lighting", kLightingModels);
+    readIntField(root, "", "toon_bands", kToonBandRange, scene.toonBands);
+    checkIntRange(scene.toonBands, kToonBandRange, "toon_bands");
     if (const Json* objects = member(root, "objects")) scene.objects = readObjects(*objects);
     if (const Json* lights = member(root, "lights")) scene.lights = readLights(*lights);
     return scene;
@@ -638,7 +663,7 @@ std::string readFile(const std::filesystem::path& path) {
         if (text.size() > kMaxSceneFileBytes)
             cannotRead("larger than " + std::to_string(kMaxSceneFileBytes >> 20) + " MiB; not a scene file");
     }
-    if (in.bad()) cannotRead("read error");
+    if (in.bad()) cannotRead("read error: " + std::generic_category().message(errno));
     return text;
 }
 
@@ -646,9 +671,12 @@ std::string readFile(const std::filesystem::path& path) {
 
 std::string_view toString(ProjectionType type) {
     switch (type) {
-    case ProjectionType::Perspective: return "perspective";
-    case ProjectionType::Frustum: return "frustum";
-    case ProjectionType::Orthographic: return "orthographic";
+    case ProjectionType::Perspective:
+        return "perspective";
+    case ProjectionType::Frustum:
+        return "frustum";
+    case ProjectionType::Orthographic:
+        return "orthographic";
     }
     return "unknown";
 }
@@ -672,13 +700,91 @@ Scene parseScene(std::string_view jsonText, std::string_view source) {
     }
 }
 
-Scene loadScene(const std::filesystem::path& path) { return parseScene(readFile(path), path.string()); }
+namespace {
+
+Json toJson(const glm::dvec3& v) { return Json::array({v.x, v.y, v.z}); }
+
+Json toJson(const Projection& p) {
+    Json json = {{"type", toString(p.type)}, {"near", p.near}, {"far", p.far}};
+    if (p.type == ProjectionType::Perspective) {
+        json["fovy_deg"] = p.fovyDeg;
+    } else {
+        json["left"] = p.left;
+        json["right"] = p.right;
+        json["bottom"] = p.bottom;
+        json["top"] = p.top;
+    }
+    return json;
+}
+
+Json toJson(const SceneObject& o) {
+    const Material& m = o.material;
+    return {{"center", toJson(o.center)},
+            {"radius", o.radius},
+            {"scale", toJson(o.scale)},
+            {"subdivisions", o.subdivisions},
+            {"material",
+             {{"ambient", toJson(m.ambient)},
+              {"diffuse", toJson(m.diffuse)},
+              {"specular", toJson(m.specular)},
+              {"shininess", m.shininess}}}};
+}
+
+// Only the keys the light's type reads: the others are errors in a scene file.
+Json toJson(const Light& l) {
+    Json json = {{"type", toString(l.type)}, {"ambient", toJson(l.ambient)}};
+    if (l.type == LightType::Ambient) return json;
+    json["diffuse"] = toJson(l.diffuse);
+    json["specular"] = toJson(l.specular);
+    if (hasPosition(l.type)) {
+        json["position"] = toJson(l.position);
+        json["attenuation"] = toJson(l.attenuation);
+    }
+    if (hasDirection(l.type)) json["direction"] = toJson(l.direction);
+    if (l.type == LightType::Spot) {
+        json["cutoff_deg"] = l.cutoffDeg;
+        json["exponent"] = l.exponent;
+    }
+    return json;
+}
+
+} // namespace
+
+std::string sceneToJson(const Scene& scene) {
+    Json objects = Json::array(), lights = Json::array();
+    for (const SceneObject& o : scene.objects) objects.push_back(toJson(o));
+    for (const Light& l : scene.lights) lights.push_back(toJson(l));
+    const Json root = {
+        {"image", {{"width", scene.width}, {"height", scene.height}, {"background", toJson(scene.background)}}},
+        {"camera", {{"eye", toJson(scene.eye)}, {"target", toJson(scene.target)}, {"up", toJson(scene.up)}}},
+        {"projection", toJson(scene.projection)},
+        {"shading", toString(scene.shading)},
+        {"lighting", toString(scene.lighting)},
+        {"toon_bands", scene.toonBands},
+        {"objects", objects},
+        {"lights", lights}};
+    return root.dump(2) + "\n";
+}
+
+void saveScene(const Scene& scene, const std::filesystem::path& path) {
+    const std::string text = sceneToJson(scene);
+    writeFileAtomically(path, "scene", [&](std::FILE* file) {
+        if (std::fwrite(text.data(), 1, text.size(), file) != text.size())
+            failWrite("scene", path, std::generic_category().message(errno));
+    });
+}
+
+Scene loadScene(const std::filesystem::path& path) {
+    return parseScene(readFile(path), path.string());
+}
 
 void validateScene(const Scene& scene) {
     checkImage(scene);
+    checkIntRange(scene.toonBands, kToonBandRange, "toon_bands");
     checkCamera(scene);
     checkProjection(scene.projection);
-    for (std::size_t i = 0; i < scene.objects.size(); ++i) checkObject(scene.objects[i], indexPath("objects", i));
+    for (std::size_t i = 0; i < scene.objects.size(); ++i)
+        checkObject(scene.objects[i], indexPath("objects", i));
     checkLightCount(scene.lights.size());
     for (std::size_t i = 0; i < scene.lights.size(); ++i) checkLight(scene.lights[i], indexPath("lights", i));
 }

@@ -28,7 +28,8 @@ std::optional<LightingModel> parseLightingModel(std::string_view text);
 std::optional<LightType> parseLightType(std::string_view text);
 
 inline constexpr int kMaxLights = 8;
-inline constexpr int kToonBands = 4;          // diffuse bands in toon shading
+inline constexpr int kToonBands = 4;          // default diffuse bands in toon shading
+inline constexpr int kMinToonBands = 2, kMaxToonBands = 16;
 inline constexpr double kToonHighlight = 0.5; // spec above this is a full highlight, below it none
 
 struct Material {
@@ -64,6 +65,7 @@ struct SurfacePoint {
 struct ShadeOptions {
     LightingModel model = LightingModel::BlinnPhong;
     bool toon = false;
+    int toonBands = kToonBands;
 };
 
 // I = Σ_lights [k_a·I_a + att·spot·(k_d·I_d·max(l·n,0) + [l·n > 0]·k_s·I_s·spec)], not yet clamped.

@@ -42,6 +42,7 @@ struct Scene {
     Projection projection;
     ShadingMode shading = ShadingMode::Phong;
     LightingModel lighting = LightingModel::BlinnPhong;
+    int toonBands = kToonBands; // "toon_bands": diffuse bands of toon shading, kMinToonBands..kMaxToonBands
     VertexNormals vertexNormals = VertexNormals::Averaged; // not in the file format; the demo toggles it
     std::vector<SceneObject> objects{SceneObject{}};
     std::vector<Light> lights{defaultLight()};
@@ -54,6 +55,12 @@ struct Scene {
 Scene parseScene(std::string_view jsonText, std::string_view source = "scene");
 // Reads and parses a file; a missing or unreadable file is an InputError naming the path.
 Scene loadScene(const std::filesystem::path& path);
+
+// The whole scene as JSON that parseScene reads back to the same scene (every field written, doubles in
+// shortest round-trip form). The demo saves it beside each screenshot.
+std::string sceneToJson(const Scene& scene);
+// sceneToJson written atomically to `path`; throws RuntimeError naming the path.
+void saveScene(const Scene& scene, const std::filesystem::path& path);
 
 // Checks the ranges of DESIGN §4 on a scene built in code or changed by flags (parseScene already does).
 void validateScene(const Scene& scene);

@@ -25,7 +25,6 @@ std::string_view shaderText(const char* name) {
 
 std::string variantDefines(const ProgramVariant& variant) {
     std::string defines = "#define MAX_LIGHTS " + std::to_string(kMaxLights) + "\n";
-    defines += "#define TOON_BANDS " + std::to_string(kToonBands) + "\n";
     defines += "#define TOON_HIGHLIGHT " + std::to_string(kToonHighlight) + "\n";
     static constexpr const char* kShadingDefines[] = {"SHADING_FLAT", "SHADING_GOURAUD", "SHADING_PHONG",
                                                       "SHADING_TOON"};

@@ -115,6 +115,7 @@ void Renderer::render(const Scene& scene, int width, int height) {
     glUseProgram(prog);
     setLights(prog, scene.lights, view.viewFromWorld);
     setInt(prog, "uOrthographic", view.orthographic ? 1 : 0);
+    if (scene.shading == ShadingMode::Toon) setFloat(prog, "uToonBands", scene.toonBands);
     const MeshLayout layout = scene.shading == ShadingMode::Flat ? MeshLayout::Flat : MeshLayout::Smooth;
     for (const SceneObject& object : scene.objects) {
         setMaterial(prog, object.material);
