@@ -31,10 +31,13 @@ uniform float uShininess;    // >= 1: pow(0, 0) is undefined in GLSL
 uniform bool uOrthographic;  // parallel projection: the viewer direction is +z everywhere
 uniform float uToonBands;    // SHADING_TOON only
 
-// normalize(v), or the fallback where v is too short to normalize (DESIGN §3 guards).
+// normalize(v), or the fallback where v is too short to normalize (DESIGN §3 guards). Scaling by the
+// largest component first keeps dot(v, v) from overflowing or underflowing float.
 vec3 safeNormalize(vec3 v, vec3 fallback) {
-    float length2 = dot(v, v);
-    return length2 > 1e-24 ? v * inversesqrt(length2) : fallback;
+    float largest = max(max(abs(v.x), abs(v.y)), abs(v.z));
+    if (!(largest > 1e-30)) return fallback;
+    vec3 scaled = v / largest;
+    return scaled * inversesqrt(dot(scaled, scaled));
 }
 
 vec3 toViewer(vec3 positionView, vec3 normalView) {

@@ -17,8 +17,9 @@ std::optional<Enum> parseEnum(std::string_view text, const std::array<Enum, N>& 
 constexpr std::array kLightTypes = {LightType::Ambient, LightType::Directional, LightType::Point,
                                     LightType::Spot};
 
-// Length below which a vector is treated as zero and not normalized (GLSL: |v|² > 1e-24).
-constexpr double kTinyLength = 1e-12;
+// Largest component below which a vector is treated as zero and not normalized (the same in GLSL, where
+// 1e-30 is still a normal float).
+constexpr double kTinyComponent = 1e-30;
 constexpr double kMinAttenuationDenominator = 1e-12; // same constant in shaders/lighting.glsl
 
 // (l, t): unit direction to the light and the distance to it (0 for directional lights).
@@ -99,11 +100,9 @@ Light transformLight(const Light& light, const glm::dmat4& m) {
 glm::dvec3 safeNormalize(const glm::dvec3& v, const glm::dvec3& fallback) {
     // Scaling by the largest component first keeps |v|² from overflowing for huge vectors.
     const double largest = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
-    if (!(largest > 0) || !std::isfinite(largest)) return fallback;
+    if (!(largest > kTinyComponent) || !std::isfinite(largest)) return fallback;
     const glm::dvec3 scaled = v / largest;
-    const double scaledLength = glm::length(scaled); // in [1, √3]
-    if (!(largest * scaledLength > kTinyLength)) return fallback;
-    return scaled / scaledLength;
+    return scaled / glm::length(scaled);
 }
 
 glm::dvec3 shade(const SurfacePoint& p, const Material& material, std::span<const Light> lights,

@@ -21,6 +21,9 @@ class HeadlessContext {
 public:
     virtual ~HeadlessContext() = default;
     virtual Backend backend() const = 0;
+    // Makes this context current on the calling thread and the loader's entry points its own (two
+    // contexts may live in one process: EGL and OSMesa resolve entry points differently).
+    virtual void makeCurrent() = 0;
 };
 
 // Each throws RuntimeError naming the step that failed (with the EGL error, or the OSMesa call).

@@ -71,18 +71,31 @@ public:
                                            EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
         context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, contextAttributes);
         if (context_ == EGL_NO_CONTEXT) fail("eglCreateContext (OpenGL 3.3 core)");
-        // Surfaceless: we draw into our own framebuffer object only.
+        try {
+            makeCurrent();
+        } catch (...) {
+            release(); // the destructor does not run for a throwing constructor
+            throw;
+        }
+    }
+
+    // Surfaceless: we draw into our own framebuffer object only.
+    void makeCurrent() override {
         if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_)) fail("eglMakeCurrent");
         gl::loadGl(eglGetProcAddress, "egl");
     }
 
-    ~EglContext() override {
+    ~EglContext() override { release(); }
+
+private:
+    void release() {
         eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         eglDestroyContext(display_, context_);
         // No eglTerminate: the display is one per process and is reused by the next context; Mesa's EGL
         // teardown leaks and crashes in some versions, and process exit releases it anyway.
     }
 
+public:
     Backend backend() const override { return Backend::Egl; }
 
 private:

@@ -35,10 +35,18 @@ HeadlessRenderer::HeadlessRenderer(Backend backend)
     : backend_(backend), context_(makeHeadlessContext(backend)), renderer_(std::make_unique<gl::Renderer>()),
       rendererString_(gl::rendererString()) {}
 
-// The renderer's GL objects must go while the context is still current.
-HeadlessRenderer::~HeadlessRenderer() { renderer_.reset(); }
+// The renderer's GL objects must go while its context is current.
+HeadlessRenderer::~HeadlessRenderer() {
+    try {
+        context_->makeCurrent();
+        renderer_.reset();
+    } catch (...) {
+        (void)renderer_.release(); // the context is unusable: deleting its objects elsewhere would be worse
+    }
+}
 
 Image HeadlessRenderer::render(const Scene& scene) {
+    context_->makeCurrent();
     const gl::RenderTarget target(scene.width, scene.height, gl::ColorFormat::Rgba8);
     target.bind();
     renderer_->render(scene, scene.width, scene.height);
@@ -46,6 +54,7 @@ Image HeadlessRenderer::render(const Scene& scene) {
 }
 
 ImageF HeadlessRenderer::renderFloat(const Scene& scene) {
+    context_->makeCurrent();
     const gl::RenderTarget target(scene.width, scene.height, gl::ColorFormat::Rgba32F);
     target.bind();
     renderer_->render(scene, scene.width, scene.height);

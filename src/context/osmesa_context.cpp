@@ -26,11 +26,18 @@ public:
                                   0};
         context_ = OSMesaCreateContextAttribs(attributes, nullptr);
         if (!context_) throw RuntimeError("osmesa: OSMesaCreateContextAttribs (OpenGL 3.3 core) failed");
-        // OSMesa needs a colour buffer to make a context current; 1×1 is enough since nothing draws to it.
-        if (!OSMesaMakeCurrent(context_, buffer_, GL_UNSIGNED_BYTE, 1, 1)) {
-            OSMesaDestroyContext(context_);
-            throw RuntimeError("osmesa: OSMesaMakeCurrent failed");
+        try {
+            makeCurrent();
+        } catch (...) {
+            OSMesaDestroyContext(context_); // the destructor does not run for a throwing constructor
+            throw;
         }
+    }
+
+    // OSMesa needs a colour buffer to make a context current; 1×1 is enough since nothing draws to it.
+    void makeCurrent() override {
+        if (!OSMesaMakeCurrent(context_, buffer_, GL_UNSIGNED_BYTE, 1, 1))
+            throw RuntimeError("osmesa: OSMesaMakeCurrent failed");
         gl::loadGl(OSMesaGetProcAddress, "osmesa");
     }
 

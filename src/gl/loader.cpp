@@ -8,6 +8,10 @@
 namespace shadelab::gl {
 
 void loadGl(ProcAddressFn getProcAddress, const char* backend) {
+    // Entry points from one getProcAddress serve every context of that kind; reload only on a change.
+    static ProcAddressFn loadedFrom = nullptr;
+    if (getProcAddress == loadedFrom) return;
+    loadedFrom = nullptr;
     const int version = gladLoadGL(getProcAddress);
     if (version == 0)
         throw RuntimeError(std::string(backend) + ": loading OpenGL entry points failed (glad)");
@@ -15,6 +19,7 @@ void loadGl(ProcAddressFn getProcAddress, const char* backend) {
     if (major < 3 || (major == 3 && minor < 3))
         throw RuntimeError(std::string(backend) + ": the context offers OpenGL " + std::to_string(major) + "." +
                            std::to_string(minor) + "; shadelab needs 3.3 core");
+    loadedFrom = getProcAddress;
 }
 
 std::string rendererString() {
@@ -33,6 +38,24 @@ void checkGlError(const char* stage) {
     char code[16];
     std::snprintf(code, sizeof code, "0x%04X", error);
     throw RuntimeError(std::string("GL error ") + code + " in " + stage);
+}
+
+void finish() { glFinish(); }
+
+bool enableDebugOutput(std::function<void(const std::string&)>* sink) {
+    if (!GLAD_GL_KHR_debug && !GLAD_GL_VERSION_4_3) return false;
+    GLint flags = 0;
+    glGetIntegerv(GL_CONTEXT_FLAGS, &flags);
+    if (!(flags & GL_CONTEXT_FLAG_DEBUG_BIT)) return false;
+    glEnable(GL_DEBUG_OUTPUT);
+    glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS); // messages arrive inside the offending call
+    glDebugMessageCallback(
+        [](GLenum, GLenum, GLuint, GLenum, GLsizei length, const GLchar* message, const void* user) {
+            (*static_cast<std::function<void(const std::string&)>*>(const_cast<void*>(user)))(
+                std::string(message, std::size_t(length)));
+        },
+        sink);
+    return true;
 }
 
 void deleteBuffer(Id id) { glDeleteBuffers(1, &id); }

@@ -66,7 +66,13 @@ void setTransforms(GLuint program, const glm::dmat4& clipFromView, const glm::dm
     // Composed in double; only the camera-relative products are rounded to float.
     const glm::mat4 clipFromObject(clipFromView * viewFromObject);
     const glm::mat4 viewFromObjectF(viewFromObject);
-    const glm::mat3 normalViewFromObject(normalMatrix(viewFromObject));
+    // The cofactor scales like radius²: divided by its largest entry it fits float for radii from 1e-30 to
+    // 1e30 (normals are renormalized in the shader anyway).
+    glm::dmat3 normal = normalMatrix(viewFromObject);
+    double largest = 0;
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r) largest = std::max(largest, std::abs(normal[c][r]));
+    const glm::mat3 normalViewFromObject(largest > 0 ? normal / largest : normal);
     glUniformMatrix4fv(glGetUniformLocation(program, "uClipFromObject"), 1, GL_FALSE,
                        glm::value_ptr(clipFromObject));
     glUniformMatrix4fv(glGetUniformLocation(program, "uViewFromObject"), 1, GL_FALSE,
