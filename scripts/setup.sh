@@ -9,7 +9,7 @@ packages=(
   g++ cmake make pkg-config ca-certificates
   # libraries, all found by find_package / pkg-config
   libglfw3-dev libglm-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libosmesa6-dev libpng-dev
-  nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev python3-glad
+  nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev python3-glad libimgui-dev libstb-dev
   # the demo under a virtual display, and driving it in tests
   xvfb xauth xdotool x11-apps
 )

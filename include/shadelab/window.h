@@ -6,6 +6,8 @@
 #include <memory>
 #include <string>
 
+#include "shadelab/errors.h"
+
 namespace shadelab {
 
 // Key codes are GLFW's (printable keys are their upper-case ASCII code); the few others used are here.
@@ -14,13 +16,22 @@ inline constexpr int kKeyF1 = 290;
 inline constexpr int kKeyKeypadSubtract = 333;
 inline constexpr int kKeyKeypadAdd = 334;
 
+// The display named in the environment could not be opened (a stale DISPLAY, over ssh or in a container):
+// the demo falls back to the headless showcase. A display that opens but gives no GL context is a plain
+// RuntimeError.
+class DisplayUnavailable : public RuntimeError {
+public:
+    using RuntimeError::RuntimeError;
+};
+
 class Window {
 public:
     // True when an X11 or Wayland display is named in the environment.
     static bool displayNamed();
 
     // Throws RuntimeError naming the GLFW error when the display cannot give a window or a GL context.
-    Window(int width, int height, const std::string& title);
+    // `debugContext` asks for a KHR_debug context (see gl::enableDebugOutput).
+    Window(int width, int height, const std::string& title, bool debugContext = false);
     ~Window();
     Window(const Window&) = delete;
     Window& operator=(const Window&) = delete;
@@ -33,6 +44,12 @@ public:
     void waitEvents(double timeoutSeconds);
     // Called once per key press (GLFW_PRESS only: a held key does not repeat).
     void onKeyPress(std::function<void(int key)> handler);
+    // Cursor movement in window pixels while the left button is held.
+    void onDrag(std::function<void(double dx, double dy)> handler);
+    // Wheel steps: positive away from the user.
+    void onScroll(std::function<void(double steps)> handler);
+    // The GLFWwindow*, for Dear ImGui's GLFW backend.
+    void* nativeHandle() const;
 
 private:
     struct State;

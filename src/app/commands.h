@@ -29,8 +29,15 @@ Backend backendFromArgument(const std::string& name);
 
 int runRender(const Scene& scene, Backend backend, const std::filesystem::path& out);
 int runReference(const Scene& scene, const std::filesystem::path& out);
-// The window; without a display, the showcase rendered headless to `showcaseOut`.
-int runDemo(const Scene& scene, const std::filesystem::path& showcaseOut);
+struct DemoOptions {
+    std::filesystem::path showcaseOut = "shadelab-showcase.png"; // where the showcase goes without a display
+    std::filesystem::path screenshotDir = ".";                   // where S saves PNG + scene JSON
+    bool hidePanel = false; // start with the control panel hidden (C shows it)
+    bool glDebug = false;   // a KHR_debug context; every GL message is printed and counted
+};
+
+// The window; without a display, the showcase rendered headless to options.showcaseOut.
+int runDemo(const Scene& scene, const DemoOptions& options);
 int runShowcase(const Scene& scene, Backend backend, const std::filesystem::path& out);
 
 } // namespace shadelab::app

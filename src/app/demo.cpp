@@ -1,63 +1,173 @@
-// The demo window. Its full key set and control panel come later; here: every shading mode on a key,
-// Phong ↔ Blinn-Phong, quit. It draws through the same Renderer and Scene as `shadelab render`.
+// The demo window: every mode on a key, an orbit camera, a live control panel. It draws through the same
+// Renderer and Scene as `shadelab render`, so a screenshot (S) is the picture `render` gives for the
+// scene JSON saved beside it.
 #include <chrono>
 #include <cstdio>
 #include <string>
 #include <thread>
 
 #include "app/commands.h"
+#include "app/demo_state.h"
+#include "app/panel.h"
 #include "shadelab/errors.h"
+#include "shadelab/gl/loader.h"
+#include "shadelab/gl/render_target.h"
 #include "shadelab/gl/renderer.h"
 #include "shadelab/window.h"
 
 namespace shadelab::app {
 namespace {
 
-constexpr double kFrameSeconds = 1.0 / 60; // caps the frame rate where there is no vsync (Xvfb)
+using Clock = std::chrono::steady_clock;
 
-std::string title(const Scene& scene) {
-    return "shadelab — " + std::string(toString(scene.shading)) + " shading, " +
-           std::string(toString(scene.lighting)) + " lighting   [1-4 / F G P T: shading, B: lighting, Esc]";
+// Caps the frame rate where nothing else does (Xvfb has no vsync), so a test machine is not saturated.
+constexpr auto kFramePeriod = std::chrono::microseconds(1'000'000 / 60);
+
+std::string modes(const Scene& scene) {
+    return std::string(toString(scene.shading)) + " shading, " + std::string(toString(scene.lighting)) +
+           " lighting";
 }
 
-void handleKey(int key, Scene& scene, Window& window) {
-    switch (key) {
-    case '1': case 'F': scene.shading = ShadingMode::Flat; break;
-    case '2': case 'G': scene.shading = ShadingMode::Gouraud; break;
-    case '3': case 'P': scene.shading = ShadingMode::Phong; break;
-    case '4': case 'T': scene.shading = ShadingMode::Toon; break;
-    case 'B':
-        scene.lighting =
-            scene.lighting == LightingModel::Phong ? LightingModel::BlinnPhong : LightingModel::Phong;
-        break;
-    case kKeyEscape: window.requestClose(); break;
-    default: return;
+std::string title(const DemoState& state, double frameMs) {
+    char timing[32];
+    std::snprintf(timing, sizeof timing, "%.2f ms", frameMs);
+    return "shadelab — " + modes(state.current()) + " | level " + std::to_string(state.level()) + " | " +
+           std::to_string(state.triangleCount()) + " triangles | " + timing + " | H: keys";
+}
+
+std::string status(const DemoState& state) {
+    const Scene scene = state.current();
+    return modes(scene) + "\nlevel " + std::to_string(state.level()) + ", " +
+           (state.orthographic() ? "orthographic" : "perspective") + ", " +
+           (scene.vertexNormals == VertexNormals::Averaged ? "averaged" : "exact") + " normals\nmaterial: " +
+           state.materialName() + ", lights: " + state.lightsName();
+}
+
+// Exponential moving average of the GPU-synchronized draw time.
+class FrameTimer {
+public:
+    void add(double ms) { average_ = average_ == 0 ? ms : 0.9 * average_ + 0.1 * ms; }
+    double ms() const { return average_; }
+
+private:
+    double average_ = 0;
+};
+
+class Demo {
+public:
+    Demo(const Scene& scene, const DemoOptions& options)
+        : options_(options), state_(scene),
+          window_(scene.width, scene.height, title(state_, 0), options.glDebug), panel_(window_) {
+        state_.showPanel = !options.hidePanel;
+        if (options.glDebug && !gl::enableDebugOutput(&debugSink_))
+            std::fprintf(stderr, "shadelab: --gl-debug: the context has no KHR_debug; no GL messages will show\n");
+        window_.onKeyPress([this](int key) { onKey(key); });
+        window_.onDrag([this](double dx, double dy) {
+            if (!panel_.wantsMouse()) state_.camera().drag(dx, dy);
+        });
+        window_.onScroll([this](double steps) {
+            if (!panel_.wantsMouse()) state_.camera().zoom(steps);
+        });
     }
-    window.setTitle(title(scene));
+
+    int run() {
+        std::string shownTitle;
+        while (!window_.shouldClose()) {
+            const auto start = Clock::now();
+            drawFrame();
+            const std::string now = title(state_, timer_.ms());
+            if (now != shownTitle) window_.setTitle(shownTitle = now);
+            window_.swapBuffers();
+            window_.waitEvents(0.001);
+            std::this_thread::sleep_until(start + kFramePeriod);
+        }
+        if (options_.glDebug) std::fprintf(stderr, "shadelab: %d GL debug message(s)\n", debugMessages_);
+        return kExitOk;
+    }
+
+private:
+    void drawFrame() {
+        int width = 0, height = 0;
+        window_.framebufferSize(width, height);
+        if (width <= 0 || height <= 0) return; // minimized: nothing to draw, no NaN aspect
+        const auto start = Clock::now();
+        renderer_.render(sized(width, height), width, height);
+        gl::finish();
+        timer_.add(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+        panel_.draw(state_, status(state_));
+    }
+
+    Scene sized(int width, int height) const {
+        Scene scene = state_.current();
+        scene.width = width;
+        scene.height = height;
+        return scene;
+    }
+
+    void onKey(int key) {
+        if (panel_.wantsKeyboard()) return;
+        const auto command = commandForKey(key);
+        if (!command || state_.apply(*command)) return;
+        if (*command == Command::Quit) window_.requestClose();
+        if (*command == Command::Screenshot) saveScreenshot();
+    }
+
+    // The scene JSON first, the PNG last: a reader that sees the PNG finds its scene beside it.
+    void saveScreenshot() {
+        int width = 0, height = 0;
+        window_.framebufferSize(width, height);
+        if (width <= 0 || height <= 0) return;
+        const Scene scene = sized(width, height);
+        char name[32];
+        std::snprintf(name, sizeof name, "shadelab-%03d", ++screenshots_);
+        const auto stem = options_.screenshotDir / name;
+        const gl::RenderTarget target(width, height);
+        target.bind();
+        renderer_.render(scene, width, height);
+        const Image image = target.readRgba8();
+        gl::bindDefaultFramebuffer();
+        try {
+            saveScene(scene, stem.string() + ".json");
+            writePng(image, stem.string() + ".png");
+            std::printf("%s.png\n", stem.c_str());
+            std::fflush(stdout);
+        } catch (const RuntimeError& e) {
+            std::fprintf(stderr, "shadelab: screenshot not saved: %s\n", e.what());
+        }
+    }
+
+    DemoOptions options_;
+    // Before the window: the context may report messages until it is destroyed.
+    int debugMessages_ = 0;
+    std::function<void(const std::string&)> debugSink_ = [this](const std::string& message) {
+        ++debugMessages_;
+        std::fprintf(stderr, "shadelab: GL debug: %s\n", message.c_str());
+    };
+    DemoState state_;
+    Window window_;
+    Panel panel_;
+    gl::Renderer renderer_; // after the window: its GL objects go while the context lives
+    FrameTimer timer_;
+    int screenshots_ = 0;
+};
+
+int showcaseInstead(const Scene& scene, const DemoOptions& options, const std::string& why) {
+    std::fprintf(stderr, "shadelab: %s; rendering the showcase headless instead\n", why.c_str());
+    return runShowcase(scene, Backend::Egl, options.showcaseOut);
 }
 
 } // namespace
 
-int runDemo(const Scene& initial, const std::filesystem::path& showcaseOut) {
-    if (!Window::displayNamed()) {
-        std::fprintf(stderr, "shadelab: no display (DISPLAY and WAYLAND_DISPLAY are unset); rendering the "
-                             "showcase headless instead\n");
-        return runShowcase(initial, Backend::Egl, showcaseOut);
+int runDemo(const Scene& scene, const DemoOptions& options) {
+    if (!Window::displayNamed())
+        return showcaseInstead(scene, options, "no display (DISPLAY and WAYLAND_DISPLAY are unset)");
+    std::unique_ptr<Demo> demo;
+    try {
+        demo = std::make_unique<Demo>(scene, options);
+    } catch (const DisplayUnavailable& e) {
+        return showcaseInstead(scene, options, e.what());
     }
-    Scene scene = initial;
-    Window window(scene.width, scene.height, title(scene));
-    window.onKeyPress([&](int key) { handleKey(key, scene, window); });
-    gl::Renderer renderer;
-    while (!window.shouldClose()) {
-        const auto start = std::chrono::steady_clock::now();
-        int width = 0, height = 0;
-        window.framebufferSize(width, height);
-        renderer.render(scene, width, height); // 0×0 when minimized: draws nothing
-        window.swapBuffers();
-        window.waitEvents(kFrameSeconds);
-        std::this_thread::sleep_until(start + std::chrono::duration<double>(kFrameSeconds));
-    }
-    return kExitOk;
+    return demo->run();
 }
 
 } // namespace shadelab::app

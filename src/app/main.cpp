@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/commands.h"
+#include "app/demo_state.h"
 #include "shadelab/errors.h"
 
 namespace {
@@ -34,10 +35,19 @@ int run(int argc, char** argv) {
                  "display, the showcase PNG).",
                  "shadelab"};
     cli.set_help_all_flag("--help-all", "Help for every subcommand");
-    std::string demoScene, showcaseOut = "shadelab-showcase.png";
-    cli.add_option("scene", demoScene, "Scene file (JSON, DESIGN §4) for the demo");
-    cli.add_option("--showcase-out", showcaseOut, "Where the showcase goes when there is no display")
+    std::string demoScene;
+    app::DemoOptions demo;
+    app::SceneOverrides demoFlags;
+    cli.add_option("scene", demoScene, "Scene file (JSON) for the demo; the defaults if omitted");
+    addSceneFlags(cli, demoFlags);
+    cli.add_option("--showcase-out", demo.showcaseOut, "Where the showcase goes when there is no display")
         ->capture_default_str();
+    cli.add_option("--screenshot-dir", demo.screenshotDir, "Where S saves shadelab-NNN.png and .json")
+        ->capture_default_str()
+        ->check(CLI::ExistingDirectory);
+    cli.add_flag("--hide-panel", demo.hidePanel, "Start with the control panel hidden (C shows it)");
+    cli.add_flag("--gl-debug", demo.glDebug, "Ask for a KHR_debug context and print every GL message");
+    cli.footer("Demo keys:\n" + app::keyHelpText());
 
     app::SceneOverrides renderFlags;
     std::string renderScene, renderOut, backendName = "egl";
@@ -81,8 +91,8 @@ int run(int argc, char** argv) {
         app::checkOutputPath(referenceOut);
         return app::runReference(scene, referenceOut);
     }
-    app::checkOutputPath(showcaseOut, "--showcase-out");
-    return app::runDemo(app::composeScene(demoScene, {}), showcaseOut);
+    app::checkOutputPath(demo.showcaseOut, "--showcase-out");
+    return app::runDemo(app::composeScene(demoScene, demoFlags), demo);
 }
 
 } // namespace

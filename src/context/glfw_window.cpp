@@ -26,6 +26,10 @@ std::string lastGlfwError() {
 struct Window::State {
     GLFWwindow* window = nullptr;
     std::function<void(int)> keyHandler;
+    std::function<void(double, double)> dragHandler;
+    std::function<void(double)> scrollHandler;
+    bool dragging = false;
+    double lastX = 0, lastY = 0;
 };
 
 bool Window::displayNamed() {
@@ -34,13 +38,15 @@ bool Window::displayNamed() {
     return (x11 && *x11) || (wayland && *wayland);
 }
 
-Window::Window(int width, int height, const std::string& title) : state_(std::make_unique<State>()) {
-    if (!glfwInit()) throw RuntimeError("window: cannot open the display: " + lastGlfwError());
+Window::Window(int width, int height, const std::string& title, bool debugContext)
+    : state_(std::make_unique<State>()) {
+    if (!glfwInit()) throw DisplayUnavailable("window: cannot open the display: " + lastGlfwError());
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     glfwWindowHint(GLFW_DEPTH_BITS, 24);
+    glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, debugContext ? GLFW_TRUE : GLFW_FALSE);
     state_->window = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
     if (!state_->window) {
         const std::string error = lastGlfwError();
@@ -54,6 +60,22 @@ Window::Window(int width, int height, const std::string& title) : state_(std::ma
     glfwSetKeyCallback(state_->window, [](GLFWwindow* w, int key, int, int action, int) {
         auto* state = static_cast<State*>(glfwGetWindowUserPointer(w));
         if (action == GLFW_PRESS && state->keyHandler) state->keyHandler(key);
+    });
+    glfwSetMouseButtonCallback(state_->window, [](GLFWwindow* w, int button, int action, int) {
+        auto* state = static_cast<State*>(glfwGetWindowUserPointer(w));
+        if (button != GLFW_MOUSE_BUTTON_LEFT) return;
+        state->dragging = action == GLFW_PRESS;
+        glfwGetCursorPos(w, &state->lastX, &state->lastY);
+    });
+    glfwSetCursorPosCallback(state_->window, [](GLFWwindow* w, double x, double y) {
+        auto* state = static_cast<State*>(glfwGetWindowUserPointer(w));
+        if (state->dragging && state->dragHandler) state->dragHandler(x - state->lastX, y - state->lastY);
+        state->lastX = x;
+        state->lastY = y;
+    });
+    glfwSetScrollCallback(state_->window, [](GLFWwindow* w, double, double steps) {
+        auto* state = static_cast<State*>(glfwGetWindowUserPointer(w));
+        if (state->scrollHandler) state->scrollHandler(steps);
     });
 }
 
@@ -71,5 +93,8 @@ void Window::framebufferSize(int& width, int& height) const {
 void Window::swapBuffers() { glfwSwapBuffers(state_->window); }
 void Window::waitEvents(double timeoutSeconds) { glfwWaitEventsTimeout(timeoutSeconds); }
 void Window::onKeyPress(std::function<void(int)> handler) { state_->keyHandler = std::move(handler); }
+void Window::onDrag(std::function<void(double, double)> handler) { state_->dragHandler = std::move(handler); }
+void Window::onScroll(std::function<void(double)> handler) { state_->scrollHandler = std::move(handler); }
+void* Window::nativeHandle() const { return state_->window; }
 
 } // namespace shadelab

@@ -60,6 +60,8 @@ RenderTarget::RenderTarget(int width, int height, ColorFormat format)
     checkGlError("creating the offscreen framebuffer");
 }
 
+void bindDefaultFramebuffer() { glBindFramebuffer(GL_FRAMEBUFFER, 0); }
+
 void RenderTarget::bind() const { glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get()); }
 
 Image RenderTarget::readRgba8() const {

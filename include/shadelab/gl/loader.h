@@ -3,6 +3,7 @@
 // line, such calls would silently do nothing under OSMesa).
 #pragma once
 
+#include <functional>
 #include <string>
 
 namespace shadelab::gl {
@@ -18,5 +19,12 @@ std::string rendererString();
 
 // Throws RuntimeError naming `stage` if glGetError reports an error.
 void checkGlError(const char* stage);
+
+// Waits until the GPU has finished every command issued so far (for timing).
+void finish();
+
+// Routes KHR_debug messages of the current (debug) context to `sink`; returns false where the context
+// offers no KHR_debug. The sink must outlive the context.
+bool enableDebugOutput(std::function<void(const std::string& message)>* sink);
 
 } // namespace shadelab::gl

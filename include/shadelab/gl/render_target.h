@@ -27,4 +27,7 @@ private:
     Renderbuffer color_, depth_;
 };
 
+// Binds the window's own framebuffer again after drawing offscreen.
+void bindDefaultFramebuffer();
+
 } // namespace shadelab::gl

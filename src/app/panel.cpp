@@ -1,0 +1,129 @@
+#include "app/panel.h"
+
+#include <algorithm>
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include "shadelab/window.h"
+
+namespace shadelab::app {
+namespace {
+
+// ImGui edits floats; the scene is double. Edits a colour in place, clamped to >= 0 (DESIGN §4).
+bool colorEdit(const char* label, glm::dvec3& color) {
+    float c[3] = {float(color.x), float(color.y), float(color.z)};
+    if (!ImGui::ColorEdit3(label, c, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR)) return false;
+    color = glm::max(glm::dvec3(c[0], c[1], c[2]), glm::dvec3(0));
+    return true;
+}
+
+bool dragVec3(const char* label, glm::dvec3& v, float speed) {
+    float f[3] = {float(v.x), float(v.y), float(v.z)};
+    if (!ImGui::DragFloat3(label, f, speed)) return false;
+    v = glm::dvec3(f[0], f[1], f[2]);
+    return true;
+}
+
+bool materialControls(Material& m) {
+    bool changed = colorEdit("k_a ambient", m.ambient);
+    changed |= colorEdit("k_d diffuse", m.diffuse);
+    changed |= colorEdit("k_s specular", m.specular);
+    float shininess = float(m.shininess);
+    if (ImGui::SliderFloat("shininess", &shininess, 1, 1000, "%.1f", ImGuiSliderFlags_Logarithmic)) {
+        m.shininess = std::max(1.0f, shininess); // DESIGN §3: exponents >= 1
+        changed = true;
+    }
+    return changed;
+}
+
+void lightControls(Light& light, int index) {
+    ImGui::PushID(index);
+    if (ImGui::TreeNodeEx("light", ImGuiTreeNodeFlags_DefaultOpen, "light %d: %s", index + 1,
+                          std::string(toString(light.type)).c_str())) {
+        if (light.type == LightType::Point || light.type == LightType::Spot)
+            dragVec3("position", light.position, 0.05f);
+        if (light.type == LightType::Directional || light.type == LightType::Spot) {
+            glm::dvec3 direction = light.direction;
+            if (dragVec3("direction", direction, 0.02f) && glm::length(direction) > 1e-6) light.direction = direction;
+        }
+        colorEdit("I_a ambient", light.ambient);
+        if (light.type != LightType::Ambient) {
+            colorEdit("I_d diffuse", light.diffuse);
+            colorEdit("I_s specular", light.specular);
+        }
+        if (light.type == LightType::Point || light.type == LightType::Spot) {
+            glm::dvec3 a = light.attenuation;
+            if (dragVec3("attenuation a b c", a, 0.01f)) {
+                a = glm::max(a, glm::dvec3(0)); // DESIGN §3: a, b, c >= 0 with a positive sum
+                if (a.x + a.y + a.z > 0) light.attenuation = a;
+            }
+        }
+        if (light.type == LightType::Spot) {
+            float cutoff = float(light.cutoffDeg), exponent = float(light.exponent);
+            if (ImGui::SliderFloat("cutoff (deg)", &cutoff, 0, 90)) light.cutoffDeg = std::clamp(cutoff, 0.0f, 90.0f);
+            if (ImGui::SliderFloat("exponent", &exponent, 0, 128)) light.exponent = std::max(exponent, 0.0f);
+        }
+        ImGui::TreePop();
+    }
+    ImGui::PopID();
+}
+
+} // namespace
+
+Panel::Panel(Window& window) {
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr; // no imgui.ini left in the user's folder
+    ImGui::StyleColorsDark();
+    ImGui_ImplGlfw_InitForOpenGL(static_cast<GLFWwindow*>(window.nativeHandle()), true);
+    ImGui_ImplOpenGL3_Init("#version 330 core");
+}
+
+Panel::~Panel() {
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+}
+
+bool Panel::wantsKeyboard() const { return ImGui::GetIO().WantCaptureKeyboard; }
+bool Panel::wantsMouse() const { return ImGui::GetIO().WantCaptureMouse; }
+
+void Panel::draw(DemoState& state, const std::string& status) {
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    Scene& scene = state.scene();
+    if (state.showPanel) {
+        ImGui::SetNextWindowPos({8, 8}, ImGuiCond_FirstUseEver);
+        ImGui::SetNextWindowSize({430, 0}, ImGuiCond_FirstUseEver);
+        ImGui::Begin("shadelab controls (C hides, H helps)");
+        ImGui::TextUnformatted(status.c_str());
+        ImGui::Checkbox("B keeps the highlight size (beta = 4 alpha)", &state.matchHighlight);
+        if (!scene.objects.empty() && ImGui::CollapsingHeader("material", ImGuiTreeNodeFlags_DefaultOpen)) {
+            // The panel edits "the" material of the demo: an edit applies to every object.
+            if (materialControls(scene.objects[0].material))
+                for (SceneObject& o : scene.objects) o.material = scene.objects[0].material;
+        }
+        if (ImGui::CollapsingHeader("lights", ImGuiTreeNodeFlags_DefaultOpen))
+            for (std::size_t i = 0; i < scene.lights.size(); ++i) lightControls(scene.lights[i], int(i));
+        if (ImGui::CollapsingHeader("toon")) {
+            int bands = scene.toonBands;
+            if (ImGui::SliderInt("bands", &bands, kMinToonBands, kMaxToonBands))
+                scene.toonBands = std::clamp(bands, kMinToonBands, kMaxToonBands);
+        }
+        ImGui::End();
+    }
+    if (state.showHelp) {
+        ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Always, {0.5f, 0.5f});
+        ImGui::Begin("keys", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse);
+        ImGui::TextUnformatted(keyHelpText().c_str());
+        ImGui::End();
+    }
+    ImGui::Render();
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}
+
+} // namespace shadelab::app

@@ -1,0 +1,31 @@
+// The demo's control panel and help overlay, drawn with Dear ImGui (Debian's libimgui-dev) over the scene.
+#pragma once
+
+#include <string>
+
+#include "app/demo_state.h"
+
+namespace shadelab {
+class Window;
+}
+
+namespace shadelab::app {
+
+class Panel {
+public:
+    explicit Panel(Window& window); // installs ImGui's GLFW callbacks, chained to the window's own
+    ~Panel();
+    Panel(const Panel&) = delete;
+    Panel& operator=(const Panel&) = delete;
+
+    // True while ImGui is using the keyboard or mouse (typing in a field, dragging a slider): the demo's
+    // own keys and orbit are then left alone.
+    bool wantsKeyboard() const;
+    bool wantsMouse() const;
+
+    // Builds and draws this frame's panel and help over the bound framebuffer. Every edited value is
+    // clamped to its valid range here, so nothing invalid reaches the scene or the shader.
+    void draw(DemoState& state, const std::string& status);
+};
+
+} // namespace shadelab::app
