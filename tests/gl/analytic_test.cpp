@@ -1,6 +1,8 @@
 // Rendered images against the analytic reference (an exact ray-cast with the same lighting code):
 // Phong shading converges to it, and each mode's error falls at the rate its interpolation predicts.
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 
 #include "gl/gl_test_support.h"
@@ -76,6 +78,80 @@ TEST_P(PhongAgainstReference, InteriorErrorIsBelowHalfALevel) {
 INSTANTIATE_TEST_SUITE_P(Scenes, PhongAgainstReference, testing::ValuesIn(kCases),
                          [](const auto& info) { return std::string(info.param.name); });
 
+// Per-pixel error on the interior: the largest |Δ| over the colour channels, in 1/255 units, for each pixel
+// interior to the same object in both images (each coverage eroded by `erode` px, as interiorError does).
+std::vector<double> interiorPixelErrors(const ImageF& rendered, const ReferenceImage& reference,
+                                        int erode = 2) {
+    const int w = rendered.width, h = rendered.height;
+    std::vector<int> renderedIds(reference.objectId.size(), -1);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            if (rendered.pixel(x, y)[3] > 0.5f)
+                renderedIds[std::size_t(y) * w + x] = reference.objectId[std::size_t(y) * w + x];
+    const std::vector<bool> inReference = interiorMask(reference.objectId, w, h, erode);
+    const std::vector<bool> inRendered = interiorMask(renderedIds, w, h, erode);
+    std::vector<double> errors;
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            const std::size_t i = std::size_t(y) * w + x;
+            if (!inReference[i] || !inRendered[i]) continue;
+            double e = 0;
+            for (int c = 0; c < 3; ++c)
+                e = std::max(
+                    e, 255.0 * std::abs(double(rendered.pixel(x, y)[c]) - reference.color.pixel(x, y)[c]));
+            errors.push_back(e);
+        }
+    }
+    return errors;
+}
+
+struct ErrorStats {
+    double median = 0, fractionOver = 0; // fraction of pixels with error > the threshold
+};
+ErrorStats errorStats(std::vector<double> errors, double threshold) {
+    ErrorStats stats;
+    if (errors.empty()) return stats;
+    stats.fractionOver =
+        double(std::count_if(errors.begin(), errors.end(), [&](double e) { return e > threshold; })) /
+        double(errors.size());
+    const auto middle = errors.begin() + std::ptrdiff_t(errors.size() / 2);
+    std::nth_element(errors.begin(), middle, errors.end());
+    stats.median = *middle;
+    return stats;
+}
+
+class ToonAgainstReference : public testing::TestWithParam<AnalyticCase> {};
+
+// DESIGN §3: toon shading is per-fragment lighting with the diffuse term quantized into bands and a
+// thresholded highlight; the reference quantizes the exact lighting the same way. At level 8 the mesh's
+// normals are nearly exact, so most pixels match to float rounding; but a pixel whose centre lies within the
+// tiny normal error of a band edge or the highlight threshold lands in the neighbouring band and is off by
+// a whole band. Those are a thin line of pixels: at most 1% of the interior may exceed 2/255, and the median
+// must stay below 0.5/255. Catches: toon falling back to smooth Phong (every lit pixel off by up to a band),
+// a different band count or rounding (floor vs ceil), a different highlight threshold, bands not quantized
+// per light, the wrong lighting model in the toon programs.
+TEST_P(ToonAgainstReference, MatchesExceptAtBandEdges) {
+    SHADELAB_REQUIRE_GL(renderer);
+    Scene scene = GetParam().scene();
+    scene.shading = ShadingMode::Toon;
+    for (SceneObject& o : scene.objects) o.subdivisions = 8;
+    for (LightingModel model : kLightingModels) {
+        scene.lighting = model;
+        SCOPED_TRACE(std::string(toString(model)));
+        const std::vector<double> errors =
+            interiorPixelErrors(renderer->renderFloat(scene), renderReference(scene));
+        const ErrorStats stats = errorStats(errors, 2.0);
+        std::printf("toon %s/%s: %zu interior pixels, %.3f%% over 2/255, median %.4f/255\n", GetParam().name,
+                    toString(model).data(), errors.size(), 100 * stats.fractionOver, stats.median);
+        ASSERT_GT(errors.size(), 1000u) << "the interior is nearly empty: the scene does not show its object";
+        EXPECT_LE(stats.fractionOver, 0.01) << "fraction of interior pixels off by more than 2/255";
+        EXPECT_LT(stats.median, 0.5) << "median interior error in 1/255 units";
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, ToonAgainstReference, testing::ValuesIn(kCases),
+                         [](const auto& info) { return std::string(info.param.name); });
+
 // Mean interior error per level n = 3..6 at 512×512 with the sphere's radius ≈ 250 px (DESIGN §6).
 std::vector<double> errorByLevel(HeadlessRenderer& renderer, ShadingMode mode) {
     Scene scene = litSphereScene(512, LightType::Point);
@@ -93,12 +169,17 @@ std::vector<double> errorByLevel(HeadlessRenderer& renderer, ShadingMode mode) {
 
 std::string describe(const std::vector<double>& errors) {
     std::string out;
-    for (std::size_t i = 0; i < errors.size(); ++i) out += "n=" + std::to_string(3 + i) + ": " + std::to_string(errors[i]) + "  ";
+    for (std::size_t i = 0; i < errors.size(); ++i)
+        out += "n=" + std::to_string(3 + i) + ": " + std::to_string(errors[i]) + "  ";
     return out;
 }
 
 // Smooth modes interpolate over triangles of edge h ~ 2⁻ⁿ with O(h²) error: ~4× per level; the issue
-// asks for at least 3×.
+// asks for at least 3×. The margin is thin. Measured on Mesa 22.3 llvmpipe (EGL and OSMesa alike), mean
+// error n=3..6: Phong 4.85, 1.57, 0.460, 0.129 — ratios 3.08 at n=3→4 (the shininess-16 highlight is not
+// yet resolved by level-3 triangles, so the error is not yet in its O(h²) regime), then 3.42 and 3.57;
+// Gouraud 8.79, 2.75, 0.847, 0.246 — ratios 3.19, 3.25, 3.45. A small change to the scene or the interior
+// mask can push the n=3→4 ratio under 3 without any rendering fault: look at the later ratios first.
 TEST(Convergence, GouraudAndPhongFallAtLeast3xPerLevel) {
     SHADELAB_REQUIRE_GL(renderer);
     for (ShadingMode mode : {ShadingMode::Gouraud, ShadingMode::Phong}) {
