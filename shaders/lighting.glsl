@@ -1,9 +1,16 @@
 // The lighting equations of DESIGN §3: the GLSL mirror of src/lighting.cpp (change both together).
 // Prepended to both stages of every program. All vectors are in view space; the viewer is at the origin.
 // Defines it responds to:
-//   MAX_LIGHTS            size of the light array (always defined by the loader)
+//   MAX_LIGHTS            size of the uber program's light array (always defined by the loader)
 //   LIGHTING_BLINN_PHONG  Blinn-Phong specular max(n·h,0)^β; otherwise Phong max(v·r,0)^α
 //   SHADING_TOON          diffuse quantized into uToonBands bands, highlight thresholded at TOON_HIGHLIGHT
+//   SPECIALIZED           a program for one scene's light set-up (gl/program_key.h), with
+//     NUM_DIRECTIONAL, NUM_POINT, NUM_SPOT  light counts per type as compile-time constants
+//     HAS_AMBIENT       some light has a non-zero ambient term (summed on the CPU: uAmbientLight)
+//     HAS_ATTENUATION   some point or spot light has attenuation other than (1, 0, 0)
+//     HAS_SPECULAR      some object's k_s and some light's I_s are non-zero
+//     NEEDS_NORMAL      some light is not ambient (ambient-only scenes read no normal attribute)
+//   Without SPECIALIZED: the uber program — counts and types as uniforms, one loop over all lights.
 
 const int LIGHT_AMBIENT = 0;
 const int LIGHT_DIRECTIONAL = 1;
@@ -11,8 +18,8 @@ const int LIGHT_POINT = 2;
 const int LIGHT_SPOT = 3;
 
 struct Light {
-    int type;
-    vec3 ambient;
+    int type;           // uber program only
+    vec3 ambient;       // uber program only (specialized programs sum it into uAmbientLight)
     vec3 diffuse;
     vec3 specular;
     vec3 positionView;
@@ -22,8 +29,28 @@ struct Light {
     vec3 attenuation;   // a, b, c of 1/(a + b·t + c·t²)
 };
 
+#ifndef SPECIALIZED
+#define NEEDS_NORMAL 1
+#define HAS_AMBIENT 1
+#define HAS_ATTENUATION 1
+#define HAS_SPECULAR 1
 uniform Light uLights[MAX_LIGHTS];
 uniform int uLightCount;
+#else
+#if HAS_AMBIENT
+uniform vec3 uAmbientLight; // Σ I_a over all lights
+#endif
+#if NUM_DIRECTIONAL > 0
+uniform Light uDirectionalLights[NUM_DIRECTIONAL];
+#endif
+#if NUM_POINT > 0
+uniform Light uPointLights[NUM_POINT];
+#endif
+#if NUM_SPOT > 0
+uniform Light uSpotLights[NUM_SPOT];
+#endif
+#endif
+
 uniform vec3 uMaterialAmbient;
 uniform vec3 uMaterialDiffuse;
 uniform vec3 uMaterialSpecular;
@@ -54,38 +81,87 @@ float specularTerm(vec3 normalView, vec3 toViewerView, vec3 toLightView, float l
 #endif
 }
 
+// factor·(k_d·I_d·max(l·n,0) + [l·n > 0]·k_s·I_s·spec): one light's direct term.
+vec3 directTerm(Light light, vec3 toLightView, float factor, vec3 normalView, vec3 toViewerView) {
+    float lDotN = dot(toLightView, normalView);
+    float diffuse = max(lDotN, 0.0);
+#ifdef SHADING_TOON
+    diffuse = ceil(diffuse * uToonBands) / uToonBands;
+#endif
+    vec3 color = uMaterialDiffuse * light.diffuse * diffuse;
+#if HAS_SPECULAR
+    float spec = lDotN > 0.0 ? specularTerm(normalView, toViewerView, toLightView, lDotN) : 0.0;
+#ifdef SHADING_TOON
+    spec = spec > TOON_HIGHLIGHT ? 1.0 : 0.0;
+#endif
+    color += uMaterialSpecular * light.specular * spec;
+#endif
+    return factor * color;
+}
+
+// A light exactly on the surface lights it head-on: l falls back to the normal.
+vec3 toPositionalLight(Light light, vec3 positionView, vec3 normalView, out float attenuation) {
+    vec3 d = light.positionView - positionView;
+#if HAS_ATTENUATION
+    float t = length(d);
+    vec3 k = light.attenuation;
+    attenuation = 1.0 / max(k.x + k.y * t + k.z * t * t, 1e-12);
+#else
+    attenuation = 1.0;
+#endif
+    return safeNormalize(d, normalView);
+}
+
+vec3 shadeDirectional(Light light, vec3 positionView, vec3 normalView, vec3 toViewerView) {
+    return directTerm(light, -light.directionView, 1.0, normalView, toViewerView);
+}
+
+vec3 shadePoint(Light light, vec3 positionView, vec3 normalView, vec3 toViewerView) {
+    float attenuation;
+    vec3 toLightView = toPositionalLight(light, positionView, normalView, attenuation);
+    return directTerm(light, toLightView, attenuation, normalView, toViewerView);
+}
+
+// spot = max(−l·d, 0)^e inside the cone, 0 outside; exponent 0 gives 1 even on a 90° cone's rim.
+vec3 shadeSpot(Light light, vec3 positionView, vec3 normalView, vec3 toViewerView) {
+    float attenuation;
+    vec3 toLightView = toPositionalLight(light, positionView, normalView, attenuation);
+    float cosAngle = dot(-toLightView, light.directionView);
+    if (cosAngle < light.cosCutoff) return vec3(0.0);
+    float spot = light.exponent > 0.0 ? pow(max(cosAngle, 0.0), light.exponent) : 1.0;
+    return directTerm(light, toLightView, attenuation * spot, normalView, toViewerView);
+}
+
 // Σ_lights [k_a·I_a + att·spot·(k_d·I_d·max(l·n,0) + [l·n > 0]·k_s·I_s·spec)], not clamped.
 vec3 shade(vec3 positionView, vec3 normalView, vec3 toViewerView) {
     vec3 color = vec3(0.0);
+#ifdef SPECIALIZED
+#if HAS_AMBIENT
+    color += uMaterialAmbient * uAmbientLight; // neither attenuated nor spot-limited
+#endif
+#if NUM_DIRECTIONAL > 0
+    for (int i = 0; i < NUM_DIRECTIONAL; ++i)
+        color += shadeDirectional(uDirectionalLights[i], positionView, normalView, toViewerView);
+#endif
+#if NUM_POINT > 0
+    for (int i = 0; i < NUM_POINT; ++i)
+        color += shadePoint(uPointLights[i], positionView, normalView, toViewerView);
+#endif
+#if NUM_SPOT > 0
+    for (int i = 0; i < NUM_SPOT; ++i)
+        color += shadeSpot(uSpotLights[i], positionView, normalView, toViewerView);
+#endif
+#else
     for (int i = 0; i < uLightCount; ++i) {
         color += uMaterialAmbient * uLights[i].ambient; // neither attenuated nor spot-limited
         int type = uLights[i].type;
-        if (type == LIGHT_AMBIENT) continue;
-
-        vec3 toLightView = -uLights[i].directionView;
-        float factor = 1.0;
-        if (type != LIGHT_DIRECTIONAL) {
-            vec3 d = uLights[i].positionView - positionView;
-            float t = length(d);
-            // A light exactly on the surface lights it head-on.
-            toLightView = safeNormalize(d, normalView);
-            vec3 k = uLights[i].attenuation;
-            factor = 1.0 / max(k.x + k.y * t + k.z * t * t, 1e-12);
-        }
-        if (type == LIGHT_SPOT) {
-            float cosAngle = dot(-toLightView, uLights[i].directionView);
-            float e = uLights[i].exponent;
-            factor *= cosAngle < uLights[i].cosCutoff ? 0.0 : (e > 0.0 ? pow(max(cosAngle, 0.0), e) : 1.0);
-        }
-        float lDotN = dot(toLightView, normalView);
-        float diffuse = max(lDotN, 0.0);
-        float spec = lDotN > 0.0 ? specularTerm(normalView, toViewerView, toLightView, lDotN) : 0.0;
-#ifdef SHADING_TOON
-        diffuse = ceil(diffuse * uToonBands) / uToonBands;
-        spec = spec > TOON_HIGHLIGHT ? 1.0 : 0.0;
-#endif
-        color += factor * (uMaterialDiffuse * uLights[i].diffuse * diffuse +
-                           uMaterialSpecular * uLights[i].specular * spec);
+        if (type == LIGHT_DIRECTIONAL)
+            color += shadeDirectional(uLights[i], positionView, normalView, toViewerView);
+        else if (type == LIGHT_POINT)
+            color += shadePoint(uLights[i], positionView, normalView, toViewerView);
+        else if (type == LIGHT_SPOT)
+            color += shadeSpot(uLights[i], positionView, normalView, toViewerView);
     }
+#endif
     return color;
 }

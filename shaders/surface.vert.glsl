@@ -3,9 +3,14 @@
 //   SHADING_FLAT     light once per triangle at its centroid with its face normal (attribute 2: centroid)
 //   SHADING_GOURAUD  light per vertex with the vertex normal, clamp, interpolate the colour
 //   SHADING_PHONG, SHADING_TOON  pass view-space position and normal on for per-fragment lighting
+//   NEEDS_NORMAL     (set in lighting.glsl) 0 when only ambient light reaches the scene: no normal attribute
 
 layout(location = 0) in vec3 aPositionObject;
+#if NEEDS_NORMAL
 layout(location = 1) in vec3 aNormalObject; // flat: the face normal
+#else
+const vec3 aNormalObject = vec3(0.0, 0.0, 1.0); // only ambient light: the normal is never used
+#endif
 #ifdef SHADING_FLAT
 layout(location = 2) in vec3 aCentroidObject;
 #endif

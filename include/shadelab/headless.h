@@ -23,6 +23,9 @@ public:
     Image render(const Scene& scene);       // scene.width × scene.height, rows top first
     ImageF renderFloat(const Scene& scene); // through an RGBA32F target: NaN and Inf stay visible
     Backend backend() const { return backend_; }
+    // Scene-specialized programs (default) or the uber programs; see gl/program.h.
+    void setSpecialize(bool specialize);
+    int programsBuilt() const;
     const std::string& rendererString() const { return rendererString_; }
 
 private:

@@ -70,8 +70,9 @@ Backend backendFromArgument(const std::string& name) {
     return *backend;
 }
 
-int runRender(const Scene& scene, Backend backend, const std::filesystem::path& out) {
+int runRender(const Scene& scene, Backend backend, const std::filesystem::path& out, bool specialize) {
     HeadlessRenderer renderer(backend);
+    renderer.setSpecialize(specialize);
     writePng(renderer.render(scene), out);
     return kExitOk;
 }

@@ -27,7 +27,7 @@ void checkOutputPath(const std::filesystem::path& out, const char* argument = "-
 
 Backend backendFromArgument(const std::string& name);
 
-int runRender(const Scene& scene, Backend backend, const std::filesystem::path& out);
+int runRender(const Scene& scene, Backend backend, const std::filesystem::path& out, bool specialize = true);
 int runReference(const Scene& scene, const std::filesystem::path& out);
 struct DemoOptions {
     std::filesystem::path showcaseOut = "shadelab-showcase.png"; // where the showcase goes without a display

@@ -55,6 +55,11 @@ int run(int argc, char** argv) {
     render->add_option("scene", renderScene, "Scene file (JSON); the defaults of DESIGN §4 if omitted");
     addSceneFlags(*render, renderFlags);
     render->add_option("--backend", backendName, "Headless context: egl or osmesa")->capture_default_str();
+    bool specialize = true;
+    render->add_option("--specialize", specialize,
+                       "on: programs specialized to the scene's lights and terms; off: the uber program")
+        ->transform(CLI::IsMember({"on", "off", "true", "false", "1", "0"}, CLI::ignore_case))
+        ->capture_default_str();
     render->add_option("--out", renderOut, "Output PNG")->required();
 
     std::string referenceScene, referenceOut;
@@ -84,7 +89,7 @@ int run(int argc, char** argv) {
         const Scene scene = app::composeScene(renderScene, renderFlags);
         const Backend backend = app::backendFromArgument(backendName);
         app::checkOutputPath(renderOut);
-        return app::runRender(scene, backend, renderOut);
+        return app::runRender(scene, backend, renderOut, specialize);
     }
     if (*reference) {
         const Scene scene = app::composeScene(referenceScene, referenceFlags);

@@ -45,6 +45,9 @@ HeadlessRenderer::~HeadlessRenderer() {
     }
 }
 
+void HeadlessRenderer::setSpecialize(bool specialize) { renderer_->setSpecialize(specialize); }
+int HeadlessRenderer::programsBuilt() const { return renderer_->programsBuilt(); }
+
 Image HeadlessRenderer::render(const Scene& scene) {
     context_->makeCurrent();
     const gl::RenderTarget target(scene.width, scene.height, gl::ColorFormat::Rgba8);

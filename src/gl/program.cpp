@@ -23,16 +23,6 @@ std::string_view shaderText(const char* name) {
     return *text;
 }
 
-std::string variantDefines(const ProgramVariant& variant) {
-    std::string defines = "#define MAX_LIGHTS " + std::to_string(kMaxLights) + "\n";
-    defines += "#define TOON_HIGHLIGHT " + std::to_string(kToonHighlight) + "\n";
-    static constexpr const char* kShadingDefines[] = {"SHADING_FLAT", "SHADING_GOURAUD", "SHADING_PHONG",
-                                                      "SHADING_TOON"};
-    defines += std::string("#define ") + kShadingDefines[int(variant.shading)] + "\n";
-    if (variant.lighting == LightingModel::BlinnPhong) defines += "#define LIGHTING_BLINN_PHONG\n";
-    return defines;
-}
-
 std::string infoLog(GLuint object, bool isProgram) {
     GLint length = 0;
     isProgram ? glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length)
@@ -45,7 +35,7 @@ std::string infoLog(GLuint object, bool isProgram) {
 }
 
 Shader compileStage(GLenum stage, const char* file, const ProgramVariant& variant) {
-    const std::string source = "#version 330 core\n" + variantDefines(variant) + "#line 1 " +
+    const std::string source = "#version 330 core\n" + variant.defines() + "#line 1 " +
                                std::to_string(kLightingSourceNumber) + "\n" +
                                std::string(shaderText(kLightingFile)) + "#line 1 " +
                                std::to_string(kStageSourceNumber) + "\n" + std::string(shaderText(file));
@@ -65,8 +55,60 @@ Shader compileStage(GLenum stage, const char* file, const ProgramVariant& varian
 
 } // namespace
 
+ProgramVariant ProgramVariant::uber(ShadingMode shading, LightingModel lighting) {
+    return ProgramVariant{shading, lighting};
+}
+
+ProgramVariant ProgramVariant::forScene(const Scene& scene, bool specialize) {
+    ProgramVariant v = uber(scene.shading, scene.lighting);
+    if (!specialize) return v;
+    v.specialized = true;
+    v.ambient = v.attenuation = false;
+    bool lightSpecular = false, objectSpecular = false;
+    for (const Light& light : scene.lights) {
+        v.directional += light.type == LightType::Directional;
+        v.point += light.type == LightType::Point;
+        v.spot += light.type == LightType::Spot;
+        v.ambient |= light.ambient != glm::dvec3(0);
+        const bool positional = light.type == LightType::Point || light.type == LightType::Spot;
+        v.attenuation |= positional && light.attenuation != glm::dvec3(1, 0, 0);
+        lightSpecular |= light.type != LightType::Ambient && light.specular != glm::dvec3(0);
+    }
+    for (const SceneObject& object : scene.objects) objectSpecular |= object.material.specular != glm::dvec3(0);
+    v.specular = lightSpecular && objectSpecular;
+    return v;
+}
+
 std::string ProgramVariant::name() const {
-    return std::string(toString(shading)) + "/" + std::string(toString(lighting));
+    std::string text = std::string(toString(shading)) + "/" + std::string(toString(lighting));
+    if (!specialized) return text;
+    text += "+d" + std::to_string(directional) + "p" + std::to_string(point) + "s" + std::to_string(spot);
+    if (!ambient) text += "-ambient";
+    if (!attenuation) text += "-attenuation";
+    if (!specular) text += "-specular";
+    return text;
+}
+
+std::string ProgramVariant::defines() const {
+    std::string text = "#define MAX_LIGHTS " + std::to_string(kMaxLights) + "\n";
+    char highlight[32];
+    std::snprintf(highlight, sizeof highlight, "%.9g", kToonHighlight); // shadelab never sets a locale: "."
+    text += std::string("#define TOON_HIGHLIGHT ") + highlight + "\n";
+    static constexpr const char* kShadingDefines[] = {"SHADING_FLAT", "SHADING_GOURAUD", "SHADING_PHONG",
+                                                      "SHADING_TOON"};
+    static_assert(std::size(kShadingDefines) == kShadingModes.size());
+    text += std::string("#define ") + kShadingDefines[int(shading)] + "\n";
+    if (lighting == LightingModel::BlinnPhong) text += "#define LIGHTING_BLINN_PHONG\n";
+    if (!specialized) return text;
+    text += "#define SPECIALIZED\n";
+    text += "#define NUM_DIRECTIONAL " + std::to_string(directional) + "\n";
+    text += "#define NUM_POINT " + std::to_string(point) + "\n";
+    text += "#define NUM_SPOT " + std::to_string(spot) + "\n";
+    text += "#define HAS_AMBIENT " + std::to_string(int(ambient)) + "\n";
+    text += "#define HAS_ATTENUATION " + std::to_string(int(attenuation)) + "\n";
+    text += "#define HAS_SPECULAR " + std::to_string(int(specular)) + "\n";
+    text += "#define NEEDS_NORMAL " + std::to_string(int(directional + point + spot > 0)) + "\n";
+    return text;
 }
 
 Program buildProgram(const ProgramVariant& variant) {

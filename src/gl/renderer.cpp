@@ -36,23 +36,43 @@ int lightTypeCode(LightType type) {
     return 0;
 }
 
-// Lights are given in world space and lit in view space.
-void setLights(GLuint program, const std::vector<Light>& lights, const glm::dmat4& viewFromWorld) {
-    const int count = std::min<int>(int(lights.size()), kMaxLights); // validateScene rejects more
+// One light's uniforms; `light` is already in view space.
+void setLight(GLuint program, const std::string& prefix, const Light& light) {
+    setVec3(program, prefix + "diffuse", light.diffuse);
+    setVec3(program, prefix + "specular", light.specular);
+    setVec3(program, prefix + "positionView", light.position);
+    setVec3(program, prefix + "directionView", safeNormalize(light.direction, glm::dvec3(0, 0, -1)));
+    setFloat(program, prefix + "cosCutoff", std::cos(light.cutoffDeg * std::numbers::pi / 180));
+    setFloat(program, prefix + "exponent", light.exponent);
+    setVec3(program, prefix + "attenuation", light.attenuation);
+}
+
+// The uber program: every light in one array, its type a uniform.
+void setUberLights(GLuint program, const std::vector<Light>& lightsView) {
+    const int count = std::min<int>(int(lightsView.size()), kMaxLights); // validateScene rejects more
     setInt(program, "uLightCount", count);
     for (int i = 0; i < count; ++i) {
-        const Light view = transformLight(lights[std::size_t(i)], viewFromWorld);
+        const Light& light = lightsView[std::size_t(i)];
         const std::string prefix = "uLights[" + std::to_string(i) + "].";
-        setInt(program, prefix + "type", lightTypeCode(view.type));
-        setVec3(program, prefix + "ambient", view.ambient);
-        setVec3(program, prefix + "diffuse", view.diffuse);
-        setVec3(program, prefix + "specular", view.specular);
-        setVec3(program, prefix + "positionView", view.position);
-        setVec3(program, prefix + "directionView", safeNormalize(view.direction, glm::dvec3(0, 0, -1)));
-        setFloat(program, prefix + "cosCutoff", std::cos(view.cutoffDeg * std::numbers::pi / 180));
-        setFloat(program, prefix + "exponent", view.exponent);
-        setVec3(program, prefix + "attenuation", view.attenuation);
+        setInt(program, prefix + "type", lightTypeCode(light.type));
+        setVec3(program, prefix + "ambient", light.ambient);
+        setLight(program, prefix, light);
     }
+}
+
+// A specialized program: one array per light type, in scene order within a type, and the ambient terms
+// of all lights summed (k_a·ΣI_a = Σk_a·I_a).
+void setSpecializedLights(GLuint program, const std::vector<Light>& lightsView) {
+    glm::dvec3 ambient(0);
+    int counts[4] = {0, 0, 0, 0};
+    static constexpr const char* kArrays[4] = {"", "uDirectionalLights[", "uPointLights[", "uSpotLights["};
+    for (const Light& light : lightsView) {
+        ambient += light.ambient;
+        const int type = lightTypeCode(light.type);
+        if (type == 0) continue;
+        setLight(program, kArrays[type] + std::to_string(counts[type]++) + "].", light);
+    }
+    setVec3(program, "uAmbientLight", ambient);
 }
 
 void setMaterial(GLuint program, const Material& material) {
@@ -85,6 +105,8 @@ void setTransforms(GLuint program, const glm::dmat4& clipFromView, const glm::dm
 
 Renderer::Renderer() = default;
 
+void Renderer::setSpecialize(bool specialize) { specialize_ = specialize; }
+
 const GpuMesh& Renderer::mesh(int level, VertexNormals normals, MeshLayout layout) {
     // Flat shading reads face normals only, so both vertex-normal kinds share one flat mesh.
     if (layout == MeshLayout::Flat) normals = VertexNormals::Averaged;
@@ -95,7 +117,10 @@ const GpuMesh& Renderer::mesh(int level, VertexNormals normals, MeshLayout layou
 
 Id Renderer::program(const ProgramVariant& variant) {
     auto& slot = programs_[variant];
-    if (!slot) slot = buildProgram(variant);
+    if (!slot) {
+        slot = buildProgram(variant);
+        ++programsBuilt_;
+    }
     return slot.get();
 }
 
@@ -117,9 +142,15 @@ void Renderer::render(const Scene& scene, int width, int height) {
     // analytic reference; the depth test alone decides visibility.
     glDisable(GL_CULL_FACE);
 
-    const GLuint prog = program({scene.shading, scene.lighting});
+    const ProgramVariant variant = ProgramVariant::forScene(scene, specialize_);
+    const GLuint prog = program(variant);
     glUseProgram(prog);
-    setLights(prog, scene.lights, view.viewFromWorld);
+    std::vector<Light> lightsView;
+    for (const Light& light : scene.lights) lightsView.push_back(transformLight(light, view.viewFromWorld));
+    if (variant.specialized)
+        setSpecializedLights(prog, lightsView);
+    else
+        setUberLights(prog, lightsView);
     setInt(prog, "uOrthographic", view.orthographic ? 1 : 0);
     if (scene.shading == ShadingMode::Toon) setFloat(prog, "uToonBands", scene.toonBands);
     const MeshLayout layout = scene.shading == ShadingMode::Flat ? MeshLayout::Flat : MeshLayout::Smooth;

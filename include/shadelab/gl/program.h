@@ -1,18 +1,37 @@
-// Shader programs: one per shading mode × lighting model, built from shaders/*.glsl with the version,
-// the variant's #defines and #line prepended (no #version in the files).
+// Shader programs, built from shaders/*.glsl with the version, the variant's #defines and #line prepended
+// (no #version in the files). A variant is either the "uber" program of a shading mode × lighting model
+// (light counts and types as uniforms, one loop) or a program specialized to one scene's light set-up:
+// counts per light type as compile-time constants, and no attenuation, specular or ambient code where the
+// scene has none (DESIGN §3 unchanged: the same equation with the absent terms left out).
 #pragma once
 
 #include <string>
 
 #include "shadelab/gl/handles.h"
 #include "shadelab/lighting.h"
+#include "shadelab/scene.h"
 
 namespace shadelab::gl {
 
 struct ProgramVariant {
     ShadingMode shading = ShadingMode::Phong;
     LightingModel lighting = LightingModel::BlinnPhong;
-    std::string name() const; // e.g. "phong/blinn-phong": the spelling of logs and test names
+    bool specialized = false;
+    // Specialized programs only:
+    int directional = 0, point = 0, spot = 0; // lights of each type
+    bool ambient = true;     // some light's I_a is non-zero
+    bool attenuation = true; // some point or spot light's attenuation is not (1, 0, 0)
+    bool specular = true;    // some object's k_s and some light's I_s are non-zero
+
+    static ProgramVariant uber(ShadingMode shading, LightingModel lighting);
+    // The scene's specialized variant, or its uber variant when `specialize` is false.
+    static ProgramVariant forScene(const Scene& scene, bool specialize);
+
+    // "phong/blinn-phong" (uber) or "phong/blinn-phong+d1p2s0-ambient-attenuation" (specialized; the
+    // terms left out are listed): the spelling of logs, benchmarks and test names.
+    std::string name() const;
+    std::string defines() const; // the #define lines the variant compiles with
+    bool operator==(const ProgramVariant&) const = default;
     auto operator<=>(const ProgramVariant&) const = default;
 };
 

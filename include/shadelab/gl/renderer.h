@@ -20,10 +20,19 @@ public:
     // draws nothing.
     void render(const Scene& scene, int width, int height);
 
+    // Specialized programs (the default) or the uber program of each mode (the baseline they are measured
+    // and cross-checked against).
+    void setSpecialize(bool specialize);
+    bool specialize() const { return specialize_; }
+    // Programs compiled so far: switching back to a variant already built never recompiles.
+    int programsBuilt() const { return programsBuilt_; }
+
 private:
     const GpuMesh& mesh(int level, VertexNormals normals, MeshLayout layout);
     Id program(const ProgramVariant& variant);
 
+    bool specialize_ = true;
+    int programsBuilt_ = 0;
     std::map<ProgramVariant, Program> programs_;
     std::map<std::tuple<int, VertexNormals, MeshLayout>, std::unique_ptr<GpuMesh>> meshes_;
 };
