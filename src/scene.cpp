@@ -169,6 +169,7 @@ void checkNonZeroVec(const glm::dvec3& v, std::string_view path) {
 }
 
 void checkSubdivisions(int level, const std::string& path) {
+    if (level == kAutoSubdivisions) return;
     if (level > kSubdivisionRange.hi) {
         // Its message says how much memory the level would take, which is the useful part.
         try {
@@ -551,7 +552,16 @@ SceneObject readObject(const Json& json, const std::string& path) {
     readField(json, path, "center", object.center);
     readField(json, path, "radius", object.radius);
     readField(json, path, "scale", object.scale);
-    readIntField(json, path, "subdivisions", kSubdivisionRange, object.subdivisions);
+    if (const Json* level = member(json, "subdivisions"); level && level->is_string()) {
+        if (level->get<std::string>() != "auto")
+            fail(keyPath(path, "subdivisions"), "must be a level 0.." + std::to_string(kMaxSubdivisions) +
+                                                    " or \"auto\", got " + describe(*level));
+        object.subdivisions = kAutoSubdivisions;
+    } else {
+        readIntField(json, path, "subdivisions", kSubdivisionRange, object.subdivisions);
+        // In a file "auto" is spelled out; kAutoSubdivisions is only the in-memory sentinel.
+        if (object.subdivisions < 0) checkIntRange(object.subdivisions, kSubdivisionRange, keyPath(path, "subdivisions"));
+    }
     if (const Json* material = member(json, "material"))
         object.material = readMaterial(*material, keyPath(path, "material"));
     checkObject(object, path);
@@ -627,8 +637,8 @@ std::vector<Light> readLights(const Json& json) {
 }
 
 Scene readScene(const Json& root) {
-    static constexpr std::array<std::string_view, 8> kKeys = {"image",   "camera", "projection", "shading",
-                                                              "lighting", "toon_bands", "objects", "lights"};
+    static constexpr std::array<std::string_view, 9> kKeys = {
+        "image", "camera", "projection", "shading", "lighting", "toon_bands", "tolerance_px", "objects", "lights"};
     requireObject(root, "");
     checkKeys(root, "", kKeys);
     Scene scene;
@@ -641,6 +651,8 @@ Scene readScene(const Json& root) {
         scene.lighting = readEnum(*lighting, "lighting", kLightingModels);
     readIntField(root, "", "toon_bands", kToonBandRange, scene.toonBands);
     checkIntRange(scene.toonBands, kToonBandRange, "toon_bands");
+    readField(root, "", "tolerance_px", scene.tolerancePx);
+    checkGreater(scene.tolerancePx, 0, "tolerance_px");
     if (const Json* objects = member(root, "objects")) scene.objects = readObjects(*objects);
     if (const Json* lights = member(root, "lights")) scene.lights = readLights(*lights);
     return scene;
@@ -722,7 +734,7 @@ Json toJson(const SceneObject& o) {
     return {{"center", toJson(o.center)},
             {"radius", o.radius},
             {"scale", toJson(o.scale)},
-            {"subdivisions", o.subdivisions},
+            {"subdivisions", o.subdivisions == kAutoSubdivisions ? Json("auto") : Json(o.subdivisions)},
             {"material",
              {{"ambient", toJson(m.ambient)},
               {"diffuse", toJson(m.diffuse)},
@@ -761,6 +773,7 @@ std::string sceneToJson(const Scene& scene) {
         {"shading", toString(scene.shading)},
         {"lighting", toString(scene.lighting)},
         {"toon_bands", scene.toonBands},
+        {"tolerance_px", scene.tolerancePx},
         {"objects", objects},
         {"lights", lights}};
     return root.dump(2) + "\n";
@@ -781,6 +794,8 @@ Scene loadScene(const std::filesystem::path& path) {
 void validateScene(const Scene& scene) {
     checkImage(scene);
     checkIntRange(scene.toonBands, kToonBandRange, "toon_bands");
+    checkFinite(scene.tolerancePx, "tolerance_px");
+    checkGreater(scene.tolerancePx, 0, "tolerance_px");
     checkCamera(scene);
     checkProjection(scene.projection);
     for (std::size_t i = 0; i < scene.objects.size(); ++i)

@@ -323,9 +323,7 @@ const std::vector<ErrorCase> kErrorCases = {
     {"UnknownTopLevelKey",
      R"({"shadding": "phong"})",
      {"scene.json: shadding: unknown key; expected one of image, camera, projection, shading, lighting, "
-      "toon_bands, "
-      "objects, "
-      "lights"}},
+      "toon_bands, tolerance_px, objects, lights"}},
     {"UnknownImageKey",
      R"({"image": {"depth": 8}})",
      {"image.depth: unknown key; expected one of width, height"}},

@@ -25,11 +25,15 @@ struct Projection {
     double near = 0.5, far = 20;                        // positive distances
 };
 
+// "subdivisions": "auto": the smallest level whose silhouette error stays below the scene's tolerance for
+// the object's projected size (subdivision.h).
+inline constexpr int kAutoSubdivisions = -1;
+
 struct SceneObject {
     glm::dvec3 center{0, 0, 0};
     double radius = 1;
     glm::dvec3 scale{1, 1, 1}; // non-uniform scale: an ellipsoid; negative components mirror
-    int subdivisions = 5;
+    int subdivisions = 5;      // 0..kMaxSubdivisions, or kAutoSubdivisions
     Material material;
 };
 
@@ -43,6 +47,7 @@ struct Scene {
     ShadingMode shading = ShadingMode::Phong;
     LightingModel lighting = LightingModel::BlinnPhong;
     int toonBands = kToonBands; // "toon_bands": diffuse bands of toon shading, kMinToonBands..kMaxToonBands
+    double tolerancePx = 0.5;   // "tolerance_px": the silhouette error "auto" subdivision allows, > 0
     VertexNormals vertexNormals = VertexNormals::Averaged; // not in the file format; the demo toggles it
     std::vector<SceneObject> objects{SceneObject{}};
     std::vector<Light> lights{defaultLight()};

@@ -1,4 +1,5 @@
 #include <cstdio>
+#include <cmath>
 #include <regex>
 
 #include "app/commands.h"
@@ -24,6 +25,18 @@ void applySize(Scene& scene, const std::string& text) {
     scene.height = int(height);
 }
 
+// "auto" or a whole number 0..kMaxSubdivisions; a larger level names the memory it would need.
+int parseLevel(const std::string& text) {
+    if (text == "auto") return kAutoSubdivisions;
+    static const std::regex kLevel(R"(-?[0-9]{1,9})");
+    if (!std::regex_match(text, kLevel))
+        throw InputError("--subdivisions: expected a level 0.." + std::to_string(kMaxSubdivisions) +
+                         " or auto, got " + quoted(text));
+    const int level = std::stoi(text);
+    checkSubdivisionLevel(level, "--subdivisions");
+    return level;
+}
+
 } // namespace
 
 Scene composeScene(const std::string& path, const SceneOverrides& o) {
@@ -43,8 +56,14 @@ Scene composeScene(const std::string& path, const SceneOverrides& o) {
         scene.lighting = *model;
     }
     if (o.subdivisions) {
-        checkSubdivisionLevel(*o.subdivisions, "--subdivisions");
-        for (SceneObject& object : scene.objects) object.subdivisions = *o.subdivisions;
+        const int level = parseLevel(*o.subdivisions);
+        for (SceneObject& object : scene.objects) object.subdivisions = level;
+    }
+    if (o.tolerancePx) {
+        if (!(*o.tolerancePx > 0) || !std::isfinite(*o.tolerancePx))
+            throw InputError("--tolerance-px: must be a positive number of pixels, got " +
+                             std::to_string(*o.tolerancePx));
+        scene.tolerancePx = *o.tolerancePx;
     }
     if (o.size) applySize(scene, *o.size);
     validateScene(scene);

@@ -14,7 +14,8 @@ namespace shadelab::app {
 // Flags that override the scene file. Unset flags leave the scene's values.
 struct SceneOverrides {
     std::optional<std::string> shading, lighting, size;
-    std::optional<int> subdivisions;
+    std::optional<std::string> subdivisions; // a level or "auto"
+    std::optional<double> tolerancePx;
 };
 
 // The scene file (or the DESIGN §4 defaults when `path` is empty) with the overrides applied and the

@@ -31,7 +31,8 @@ std::string modes(const Scene& scene) {
 std::string title(const DemoState& state, double frameMs) {
     char timing[32];
     std::snprintf(timing, sizeof timing, "%.2f ms", frameMs);
-    return "shadelab — " + modes(state.current()) + " | level " + std::to_string(state.level()) + " | " +
+    return "shadelab — " + modes(state.current()) + " | level " + std::to_string(state.level()) +
+           (state.autoLevel() ? " (auto)" : "") + " | " +
            std::to_string(state.triangleCount()) + " triangles | " + timing + " | H: keys";
 }
 
@@ -63,10 +64,10 @@ public:
             std::fprintf(stderr, "shadelab: --gl-debug: the context has no KHR_debug; no GL messages will show\n");
         window_.onKeyPress([this](int key) { onKey(key); });
         window_.onDrag([this](double dx, double dy) {
-            if (!panel_.wantsMouse()) state_.camera().drag(dx, dy);
+            if (!panel_.wantsMouse()) state_.drag(dx, dy);
         });
         window_.onScroll([this](double steps) {
-            if (!panel_.wantsMouse()) state_.camera().zoom(steps);
+            if (!panel_.wantsMouse()) state_.zoom(steps);
         });
     }
 
@@ -97,12 +98,7 @@ private:
         panel_.draw(state_, status(state_));
     }
 
-    Scene sized(int width, int height) const {
-        Scene scene = state_.current();
-        scene.width = width;
-        scene.height = height;
-        return scene;
-    }
+    Scene sized(int width, int height) const { return state_.current(width, height); }
 
     void onKey(int key) {
         if (panel_.wantsKeyboard()) return;

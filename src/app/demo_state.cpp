@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "shadelab/subdivision.h"
 #include "shadelab/window.h"
 
 namespace shadelab::app {
@@ -21,6 +22,7 @@ const std::vector<KeyBinding>& bindings() {
         {{'B'}, "B", "Phong <-> Blinn-Phong lighting", Command::ToggleLighting},
         {{kKeyEqual, kKeyKeypadAdd}, "+", "subdivision level up", Command::LevelUp},
         {{kKeyMinus, kKeyKeypadSubtract}, "-", "subdivision level down", Command::LevelDown},
+        {{'A'}, "A", "automatic level: silhouette error < tolerance_px", Command::AutoLevel},
         {{'O'}, "O", "perspective <-> orthographic", Command::ToggleProjection},
         {{'N'}, "N", "averaged <-> exact vertex normals", Command::ToggleNormals},
         {{'M'}, "M", "next material preset", Command::NextMaterial},
@@ -94,7 +96,9 @@ void OrbitCamera::drag(double dxPixels, double dyPixels) {
     elevationRad = std::clamp(elevationRad + 0.5 * kDegree * dyPixels, -kMaxElevationRad, kMaxElevationRad);
 }
 
-void OrbitCamera::zoom(double wheelSteps) { distance *= std::pow(0.9, wheelSteps); }
+void OrbitCamera::zoom(double wheelSteps) {
+    distance = std::clamp(distance * std::pow(0.9, wheelSteps), 1e-12, 1e12); // finite and non-zero
+}
 
 std::span<const MaterialPreset> materialPresets() {
     static const MaterialPreset kPresets[] = {
@@ -129,43 +133,65 @@ std::span<const LightPreset> lightPresets() {
 
 DemoState::DemoState(Scene scene)
     : initial_(scene), scene_(std::move(scene)), initialCamera_(OrbitCamera::looking(scene_.eye, scene_.target)),
-      camera_(initialCamera_), level_(scene_.objects.empty() ? 5 : scene_.objects[0].subdivisions),
-      orthographic_(scene_.projection.type == ProjectionType::Orthographic) {}
+      camera_(initialCamera_), orthographic_(scene_.projection.type == ProjectionType::Orthographic) {
+    for (const SceneObject& o : scene_.objects) exponents_.push_back(o.material.shininess);
+}
 
-Scene DemoState::current() const {
+void DemoState::drag(double dxPixels, double dyPixels) {
+    camera_.drag(dxPixels, dyPixels);
+    cameraMoved_ = true;
+}
+
+void DemoState::zoom(double wheelSteps) {
+    camera_.zoom(wheelSteps);
+    // Clamp the stored distance itself, so the wheel never has to unwind steps it had no effect with.
+    // Outside the objects comes first; inside the far plane where both fit.
+    const double extent = sceneExtent(scene_, camera_.target);
+    const double closest = extent + scene_.projection.near * 1.5;
+    const double farthest = std::max(closest, scene_.projection.far - extent);
+    camera_.distance = std::clamp(camera_.distance, closest, farthest);
+    cameraMoved_ = true;
+}
+
+Scene DemoState::current(int width, int height) const {
     Scene s = scene_;
-    OrbitCamera camera = camera_;
-    // Stay outside the objects and inside the far plane, whatever the wheel said.
-    const double extent = sceneExtent(s, camera.target);
-    const double closest = extent + s.projection.near * 1.5, farthest = s.projection.far - extent;
-    camera.distance = farthest > closest ? std::clamp(camera.distance, closest, farthest) : camera.distance;
-    s.eye = camera.eye();
-    s.target = camera.target;
-    s.up = {0, 1, 0};
+    if (width > 0 && height > 0) {
+        s.width = width;
+        s.height = height;
+    }
+    if (cameraMoved_) {
+        s.eye = camera_.eye();
+        s.target = camera_.target;
+        s.up = {0, 1, 0}; // the orbit's elevation stays short of the poles: never parallel
+    }
 
     const Projection& own = initial_.projection;
     const double aspect = double(s.width) / s.height;
+    const double distance = glm::length(s.eye - s.target);
     // The half-height the view shows at the target: ties the two projections together so O keeps the size.
-    const double zoom = camera.distance / initialCamera_.distance;
+    const double zoom = distance / initialCamera_.distance;
     double halfHeight = 0;
     if (own.type == ProjectionType::Orthographic)
         halfHeight = 0.5 * (own.top - own.bottom) * zoom;
     else if (own.type == ProjectionType::Perspective)
-        halfHeight = camera.distance * std::tan(0.5 * own.fovyDeg * kDegree);
+        halfHeight = distance * std::tan(0.5 * own.fovyDeg * kDegree);
     else
-        halfHeight = camera.distance * 0.5 * (own.top - own.bottom) / own.near;
+        halfHeight = distance * 0.5 * (own.top - own.bottom) / own.near;
 
     if (orthographic_ && own.type != ProjectionType::Orthographic) {
         s.projection = {ProjectionType::Orthographic, own.fovyDeg, -halfHeight * aspect, halfHeight * aspect,
                         -halfHeight, halfHeight, own.near, own.far};
     } else if (orthographic_) {
-        s.projection.left = own.left * zoom;
-        s.projection.right = own.right * zoom;
-        s.projection.bottom = own.bottom * zoom;
-        s.projection.top = own.top * zoom;
+        // The scene's own box, zoomed, and widened or narrowed to the framebuffer's aspect.
+        const double centreX = 0.5 * (own.left + own.right), halfWidth = halfHeight * aspect;
+        const double centreY = 0.5 * (own.bottom + own.top) * zoom;
+        s.projection.left = centreX * zoom - halfWidth;
+        s.projection.right = centreX * zoom + halfWidth;
+        s.projection.bottom = centreY - halfHeight;
+        s.projection.top = centreY + halfHeight;
     } else if (own.type == ProjectionType::Orthographic) {
         s.projection.type = ProjectionType::Perspective;
-        s.projection.fovyDeg = 2 * std::atan(halfHeight / camera.distance) / kDegree;
+        s.projection.fovyDeg = 2 * std::atan(halfHeight / distance) / kDegree;
     }
     return s;
 }
@@ -176,16 +202,12 @@ bool DemoState::apply(Command command) {
     case Command::Gouraud: scene_.shading = ShadingMode::Gouraud; break;
     case Command::Phong: scene_.shading = ShadingMode::Phong; break;
     case Command::Toon: scene_.shading = ShadingMode::Toon; break;
-    case Command::ToggleLighting: {
-        const bool toBlinn = scene_.lighting == LightingModel::Phong;
-        scene_.lighting = toBlinn ? LightingModel::BlinnPhong : LightingModel::Phong;
-        if (matchHighlight) // the half-vector angle is half the reflection angle: β ≈ 4α (DESIGN §3)
-            for (SceneObject& o : scene_.objects)
-                o.material.shininess = std::max(1.0, toBlinn ? o.material.shininess * 4 : o.material.shininess / 4);
+    case Command::ToggleLighting: toggleLighting(); break;
+    case Command::LevelUp: changeLevels(+1); break;
+    case Command::LevelDown: changeLevels(-1); break;
+    case Command::AutoLevel:
+        for (SceneObject& o : scene_.objects) o.subdivisions = kAutoSubdivisions;
         break;
-    }
-    case Command::LevelUp: setLevel(level_ + 1); break;
-    case Command::LevelDown: setLevel(level_ - 1); break;
     case Command::ToggleProjection: orthographic_ = !orthographic_; break;
     case Command::ToggleNormals:
         scene_.vertexNormals =
@@ -193,15 +215,26 @@ bool DemoState::apply(Command command) {
         break;
     case Command::NextMaterial:
         material_ = (material_ + 1) % int(materialPresets().size() + 1);
-        for (std::size_t i = 0; i < scene_.objects.size(); ++i)
-            scene_.objects[i].material =
-                material_ == 0 ? initial_.objects[i].material : materialPresets()[std::size_t(material_ - 1)].material;
+        for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
+            const Material own = initial_.objects[i].material;
+            scene_.objects[i].material = material_ == 0 ? own : materialPresets()[std::size_t(material_ - 1)].material;
+            // Presets are given as α; the scene's own exponent belongs to the scene's lighting model.
+            double exponent = presetExponent(scene_.objects[i].material.shininess);
+            if (material_ == 0)
+                exponent = !matchHighlight || initial_.lighting == scene_.lighting ? own.shininess
+                           : scene_.lighting == LightingModel::BlinnPhong           ? own.shininess * 4
+                                                                                    : own.shininess / 4;
+            setShininess(i, exponent);
+        }
         break;
     case Command::NextLights:
         lights_ = (lights_ + 1) % int(lightPresets().size() + 1);
         scene_.lights = lights_ == 0 ? initial_.lights : lightPresets()[std::size_t(lights_ - 1)].lights;
         break;
-    case Command::ResetView: camera_ = initialCamera_; break;
+    case Command::ResetView:
+        camera_ = initialCamera_;
+        cameraMoved_ = false;
+        break;
     case Command::TogglePanel: showPanel = !showPanel; break;
     case Command::ToggleHelp: showHelp = !showHelp; break;
     case Command::Screenshot:
@@ -210,9 +243,41 @@ bool DemoState::apply(Command command) {
     return true;
 }
 
-void DemoState::setLevel(int level) {
-    level_ = std::clamp(level, 0, kMaxSubdivisions);
-    for (SceneObject& o : scene_.objects) o.subdivisions = level_;
+// Each object one level up or down from the level it is drawn at ("auto" resolved first).
+void DemoState::changeLevels(int delta) {
+    const Scene scene = current();
+    for (SceneObject& o : scene_.objects)
+        o.subdivisions = std::clamp(subdivisionLevel(scene, o) + delta, 0, kMaxSubdivisions);
+}
+
+// β ≈ 4α keeps the highlight's size: the half-vector's angle is half the reflection's (DESIGN §3).
+void DemoState::toggleLighting() {
+    const bool toBlinn = scene_.lighting == LightingModel::Phong;
+    scene_.lighting = toBlinn ? LightingModel::BlinnPhong : LightingModel::Phong;
+    if (!matchHighlight) return;
+    for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
+        // A value edited in the panel since the last toggle replaces the remembered one.
+        if (scene_.objects[i].material.shininess != std::max(1.0, exponents_[i]))
+            exponents_[i] = scene_.objects[i].material.shininess;
+        setShininess(i, toBlinn ? exponents_[i] * 4 : exponents_[i] / 4);
+    }
+}
+
+void DemoState::setShininess(std::size_t object, double exponent) {
+    exponents_[object] = exponent;
+    scene_.objects[object].material.shininess = std::max(1.0, exponent); // DESIGN §3: exponents >= 1
+}
+
+double DemoState::presetExponent(double alpha) const {
+    return matchHighlight && scene_.lighting == LightingModel::BlinnPhong ? 4 * alpha : alpha;
+}
+
+int DemoState::level() const {
+    return scene_.objects.empty() ? 0 : subdivisionLevel(current(), scene_.objects[0]);
+}
+
+bool DemoState::autoLevel() const {
+    return !scene_.objects.empty() && scene_.objects[0].subdivisions == kAutoSubdivisions;
 }
 
 std::string DemoState::materialName() const {
@@ -224,8 +289,9 @@ std::string DemoState::lightsName() const {
 }
 
 std::size_t DemoState::triangleCount() const {
+    const Scene scene = current();
     std::size_t total = 0;
-    for (const SceneObject& o : scene_.objects) total += sphereTriangleCount(o.subdivisions);
+    for (const SceneObject& o : scene.objects) total += sphereTriangleCount(subdivisionLevel(scene, o));
     return total;
 }
 

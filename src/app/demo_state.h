@@ -14,7 +14,7 @@ namespace shadelab::app {
 
 enum class Command {
     Flat, Gouraud, Phong, Toon, ToggleLighting, LevelUp, LevelDown, ToggleProjection, ToggleNormals,
-    NextMaterial, NextLights, ResetView, Screenshot, ToggleHelp, TogglePanel, Quit
+    AutoLevel, NextMaterial, NextLights, ResetView, Screenshot, ToggleHelp, TogglePanel, Quit
 };
 
 // One spelling of every key, shared by the window, the help overlay, --help and the README table.
@@ -58,29 +58,43 @@ class DemoState {
 public:
     explicit DemoState(Scene scene);
 
-    // The scene to draw: the edited scene with the orbit camera and the chosen projection.
-    Scene current() const;
+    // The scene to draw: the edited scene with the orbit camera and the chosen projection, for a
+    // framebuffer of width × height (0: the scene's own image size). Until the user orbits or zooms, the
+    // camera is the scene's own, exactly as `shadelab render` sees it.
+    Scene current(int width = 0, int height = 0) const;
     Scene& scene() { return scene_; } // for the control panel's live edits
-    OrbitCamera& camera() { return camera_; }
+    const OrbitCamera& camera() const { return camera_; }
 
-    // Applies a command; returns false for commands the window handles itself (screenshot, help, quit).
+    // Mouse input: orbit and zoom, kept outside every object (and inside the far plane where both fit).
+    void drag(double dxPixels, double dyPixels);
+    void zoom(double wheelSteps);
+
+    // Applies a command; returns false for the commands the window carries out itself (screenshot, quit).
     bool apply(Command command);
 
     bool matchHighlight = true; // B keeps the highlight size: β = 4α going to Blinn-Phong, α = β/4 back
     bool showHelp = false;
     bool showPanel = true;
-    int level() const { return level_; }
+    // The level drawn (of the first object): its own, or what "auto" chose for the current view.
+    int level() const;
+    bool autoLevel() const;
     std::string materialName() const;
     std::string lightsName() const;
     std::size_t triangleCount() const;
     bool orthographic() const { return orthographic_; }
 
 private:
-    void setLevel(int level);
+    void changeLevels(int delta);
+    void toggleLighting();
+    void setShininess(std::size_t object, double exponent);
+    double presetExponent(double alpha) const;
 
     Scene initial_, scene_;
     OrbitCamera initialCamera_, camera_;
-    int level_ = 0;
+    bool cameraMoved_ = false;
+    // The exponent each object's shininess stands for before the clamp to >= 1, so that B twice restores
+    // a β below 4 exactly (β/4 < 1 would otherwise be lost to the clamp).
+    std::vector<double> exponents_;
     bool orthographic_ = false;
     int material_ = 0; // 0: the scene's own, i: materialPresets()[i − 1]
     int lights_ = 0;   // 0: the scene's own, i: lightPresets()[i − 1]

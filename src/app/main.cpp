@@ -25,7 +25,9 @@ void addSceneFlags(CLI::App& command, app::SceneOverrides& o) {
                        "Shading mode: " + joined("flat", "gouraud", "phong", "toon") + " (overrides the scene)");
     command.add_option("--lighting", o.lighting, "Lighting model: phong, blinn-phong (overrides the scene)");
     command.add_option("--subdivisions", o.subdivisions,
-                       "Subdivision level of every object, 0.." + std::to_string(kMaxSubdivisions));
+                       "Subdivision level of every object, 0.." + std::to_string(kMaxSubdivisions) +
+                           ", or auto: the smallest level whose silhouette error stays below --tolerance-px");
+    command.add_option("--tolerance-px", o.tolerancePx, "Silhouette error auto subdivision allows (default 0.5)");
     command.add_option("--size", o.size, "Image size WxH, e.g. 512x512 (overrides the scene)");
 }
 

@@ -9,6 +9,7 @@
 #include <glad/gl.h>
 
 #include "shadelab/gl/loader.h"
+#include "shadelab/subdivision.h"
 
 namespace shadelab::gl {
 namespace {
@@ -157,7 +158,7 @@ void Renderer::render(const Scene& scene, int width, int height) {
     for (const SceneObject& object : scene.objects) {
         setMaterial(prog, object.material);
         setTransforms(prog, view.clipFromView, view.viewFromWorld * worldFromObject(object));
-        mesh(object.subdivisions, scene.vertexNormals, layout).draw();
+        mesh(subdivisionLevel(sized, object), scene.vertexNormals, layout).draw();
     }
     glUseProgram(0);
     checkGlError("rendering the scene");

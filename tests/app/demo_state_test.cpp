@@ -1,0 +1,942 @@
+// The demo's pure logic (src/app/demo_state.h) against issue 3 (the demo window) and DESIGN §2–§3: the key
+// table, the orbit camera, the material and light presets and DemoState::apply/current. Expected values come
+// from the issue, DESIGN and GLFW's key codes, not from demo_state.cpp.
+#include "app/demo_state.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <random>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h> // only for the GLFW_KEY_* constants: the window reports GLFW key codes
+#include <gtest/gtest.h>
+
+#include "shadelab/camera.h"
+#include "shadelab/errors.h"
+#include "shadelab/scene.h"
+#include "shadelab/sphere.h"
+#include "shadelab/window.h"
+
+namespace shadelab::app {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180;
+
+constexpr Command kAllCommands[] = {
+    Command::Flat,           Command::Gouraud,      Command::Phong,       Command::Toon,
+    Command::ToggleLighting, Command::LevelUp,      Command::LevelDown,   Command::ToggleProjection,
+    Command::ToggleNormals,  Command::NextMaterial, Command::NextLights,  Command::ResetView,
+    Command::Screenshot,     Command::ToggleHelp,   Command::TogglePanel, Command::Quit,
+};
+
+std::string str(const glm::dvec3& v) {
+    std::ostringstream out;
+    out.precision(17);
+    out << "(" << v.x << ", " << v.y << ", " << v.z << ")";
+    return out.str();
+}
+
+template <int C, int R> bool allFinite(const glm::mat<C, R, double>& m) {
+    for (int c = 0; c < C; ++c)
+        for (int r = 0; r < R; ++r)
+            if (!std::isfinite(m[c][r])) return false;
+    return true;
+}
+
+double maxAbsDifference(const glm::dmat4& a, const glm::dmat4& b) {
+    double worst = 0;
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) worst = std::max(worst, std::abs(a[c][r] - b[c][r]));
+    return worst;
+}
+
+bool sameMaterial(const Material& a, const Material& b) {
+    return a.ambient == b.ambient && a.diffuse == b.diffuse && a.specular == b.specular &&
+           a.shininess == b.shininess;
+}
+
+bool sameLight(const Light& a, const Light& b) {
+    return a.type == b.type && a.ambient == b.ambient && a.diffuse == b.diffuse && a.specular == b.specular &&
+           a.position == b.position && a.direction == b.direction && a.cutoffDeg == b.cutoffDeg &&
+           a.exponent == b.exponent && a.attenuation == b.attenuation;
+}
+
+bool sameLights(const std::vector<Light>& a, const std::vector<Light>& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (!sameLight(a[i], b[i])) return false;
+    return true;
+}
+
+bool sameProjection(const Projection& a, const Projection& b) {
+    return a.type == b.type && a.fovyDeg == b.fovyDeg && a.left == b.left && a.right == b.right &&
+           a.bottom == b.bottom && a.top == b.top && a.near == b.near && a.far == b.far;
+}
+
+double boundingRadius(const SceneObject& o) {
+    return o.radius * std::max({std::abs(o.scale.x), std::abs(o.scale.y), std::abs(o.scale.z)});
+}
+
+// A Phong-lit scene with three different objects (offsets, an ellipsoid, a mirrored scale, mixed levels).
+Scene threeObjectScene() {
+    Scene scene;
+    scene.lighting = LightingModel::Phong;
+    scene.eye = {1, 2, 9};
+    scene.objects.clear();
+    SceneObject a;
+    a.material = {{0.1, 0.1, 0.1}, {0.7, 0.2, 0.2}, {1, 1, 1}, 32};
+    a.subdivisions = 3;
+    SceneObject b;
+    b.center = {2.5, 0, 0};
+    b.radius = 0.7;
+    b.scale = {1, 1.5, -0.5};
+    b.material = {{0.2, 0.1, 0.0}, {0.1, 0.6, 0.2}, {0.5, 0.5, 0.5}, 12};
+    b.subdivisions = 3;
+    SceneObject c;
+    c.center = {-2, 1, -1};
+    c.radius = 0.5;
+    c.material = {{0.0, 0.0, 0.1}, {0.2, 0.2, 0.8}, {0.9, 0.9, 0.9}, 300};
+    c.subdivisions = 3;
+    scene.objects = {a, b, c};
+    Light second = Scene::defaultLight();
+    second.position = {-4, 1, 2};
+    second.diffuse = {0.3, 0.3, 0.6};
+    scene.lights.push_back(second);
+    validateScene(scene);
+    return scene;
+}
+
+Scene phongScene() {
+    Scene scene;
+    scene.lighting = LightingModel::Phong;
+    return scene;
+}
+
+glm::dvec3 ndc(const SceneView& view, const glm::dvec3& world) {
+    const glm::dvec4 clip = view.clipFromView * view.viewFromWorld * glm::dvec4(world, 1);
+    return glm::dvec3(clip) / clip.w;
+}
+
+// The vertical NDC distance from the projected centre of a sphere to its silhouette, computed from the
+// geometry: under perspective the silhouette point is where a ray from the eye grazes the sphere.
+double projectedRadiusNdc(const Scene& scene, const glm::dvec3& centre, double radius) {
+    const SceneView view = sceneView(scene);
+    const CameraFrame frame = cameraFrame(scene.eye, scene.target, scene.up);
+    glm::dvec3 silhouette;
+    if (view.orthographic) {
+        silhouette = centre + radius * frame.v;
+    } else {
+        const glm::dvec3 toCentre = centre - scene.eye;
+        const double d = glm::length(toCentre);
+        const double sinB = radius / d, cosB = std::sqrt(1 - sinB * sinB);
+        const glm::dvec3 forward = toCentre / d;
+        const glm::dvec3 up = glm::normalize(frame.v - glm::dot(frame.v, forward) * forward);
+        silhouette = scene.eye + std::sqrt(d * d - radius * radius) * (cosB * forward + sinB * up);
+    }
+    return std::abs(ndc(view, silhouette).y - ndc(view, centre).y);
+}
+
+// ---- keys ----
+
+// The key codes GLFW reports, and the command the issue gives each (issue 3, "Keys").
+const std::vector<std::pair<int, Command>>& issueKeys() {
+    static const std::vector<std::pair<int, Command>> kKeys = {
+        {GLFW_KEY_1, Command::Flat},
+        {GLFW_KEY_F, Command::Flat},
+        {GLFW_KEY_2, Command::Gouraud},
+        {GLFW_KEY_G, Command::Gouraud},
+        {GLFW_KEY_3, Command::Phong},
+        {GLFW_KEY_P, Command::Phong},
+        {GLFW_KEY_4, Command::Toon},
+        {GLFW_KEY_T, Command::Toon},
+        {GLFW_KEY_B, Command::ToggleLighting},
+        {GLFW_KEY_EQUAL, Command::LevelUp}, // '+' is Shift + '=' (US layout); GLFW reports the key, '='
+        {GLFW_KEY_KP_ADD, Command::LevelUp},
+        {GLFW_KEY_MINUS, Command::LevelDown},
+        {GLFW_KEY_KP_SUBTRACT, Command::LevelDown},
+        {GLFW_KEY_O, Command::ToggleProjection},
+        {GLFW_KEY_N, Command::ToggleNormals},
+        {GLFW_KEY_M, Command::NextMaterial},
+        {GLFW_KEY_L, Command::NextLights},
+        {GLFW_KEY_R, Command::ResetView},
+        {GLFW_KEY_S, Command::Screenshot},
+        {GLFW_KEY_H, Command::ToggleHelp},
+        {GLFW_KEY_F1, Command::ToggleHelp},
+        {GLFW_KEY_ESCAPE, Command::Quit},
+        {GLFW_KEY_C, Command::TogglePanel},
+    };
+    return kKeys;
+}
+
+TEST(DemoKeys, WindowKeyConstantsAreGlfwKeyCodes) {
+    EXPECT_EQ(kKeyEscape, GLFW_KEY_ESCAPE);
+    EXPECT_EQ(kKeyF1, GLFW_KEY_F1);
+    EXPECT_EQ(kKeyKeypadSubtract, GLFW_KEY_KP_SUBTRACT);
+    EXPECT_EQ(kKeyKeypadAdd, GLFW_KEY_KP_ADD);
+}
+
+TEST(DemoKeys, EveryKeyTheIssueListsMapsToItsCommand) {
+    for (const auto& [key, command] : issueKeys()) {
+        const auto got = commandForKey(key);
+        ASSERT_TRUE(got.has_value()) << "key code " << key << " is not bound";
+        EXPECT_EQ(*got, command) << "key code " << key;
+    }
+}
+
+TEST(DemoKeys, EveryBindingsKeysMapToItsCommand) {
+    ASSERT_FALSE(keyBindings().empty());
+    for (const KeyBinding& binding : keyBindings()) {
+        EXPECT_FALSE(binding.keys.empty()) << binding.label;
+        for (int key : binding.keys) {
+            const auto got = commandForKey(key);
+            ASSERT_TRUE(got.has_value()) << binding.label << ": key " << key;
+            EXPECT_EQ(*got, binding.command) << binding.label << ": key " << key;
+        }
+    }
+}
+
+TEST(DemoKeys, NoKeyIsBoundTwice) {
+    std::map<int, std::string> seen;
+    for (const KeyBinding& binding : keyBindings())
+        for (int key : binding.keys) {
+            const auto [it, inserted] = seen.emplace(key, std::string(binding.label));
+            EXPECT_TRUE(inserted) << "key " << key << " is bound by both '" << it->second << "' and '"
+                                  << binding.label << "'";
+        }
+}
+
+TEST(DemoKeys, EveryCommandHasExactlyOneBinding) {
+    for (Command command : kAllCommands) {
+        const auto count = std::count_if(keyBindings().begin(), keyBindings().end(),
+                                         [&](const KeyBinding& b) { return b.command == command; });
+        EXPECT_EQ(count, 1) << "command " << int(command);
+    }
+}
+
+TEST(DemoKeys, UnboundKeysGiveNoCommand) {
+    for (int key : {GLFW_KEY_Q, GLFW_KEY_Z, GLFW_KEY_X, GLFW_KEY_SPACE, GLFW_KEY_5, GLFW_KEY_F2,
+                    GLFW_KEY_ENTER, GLFW_KEY_UNKNOWN, 0})
+        EXPECT_FALSE(commandForKey(key).has_value()) << "key " << key;
+}
+
+TEST(DemoKeys, HelpTextListsEveryBindingsLabelAndActionOnOneLine) {
+    const std::string help = keyHelpText();
+    std::vector<std::string> lines;
+    std::istringstream in(help);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    for (const KeyBinding& binding : keyBindings()) {
+        ASSERT_FALSE(binding.label.empty());
+        ASSERT_FALSE(binding.action.empty());
+        const bool found = std::any_of(lines.begin(), lines.end(), [&](const std::string& line) {
+            return line.find(binding.label) != std::string::npos &&
+                   line.find(binding.action) != std::string::npos;
+        });
+        EXPECT_TRUE(found) << "no help line has both '" << binding.label << "' and '" << binding.action
+                           << "':\n"
+                           << help;
+    }
+    // The mouse is part of "every key in the window" too.
+    EXPECT_NE(help.find("drag"), std::string::npos) << help;
+    EXPECT_NE(help.find("wheel"), std::string::npos) << help;
+}
+
+TEST(DemoKeys, HelpLabelsNameTheIssuesKeys) {
+    // The labels are what the overlay, --help and the README show: each listed key appears in some label.
+    std::string labels;
+    for (const KeyBinding& binding : keyBindings()) labels += std::string(binding.label) + " | ";
+    for (const char* key : {"1", "2", "3", "4", "F", "G", "P", "T",  "B",   "+", "-",
+                            "O", "N", "M", "L", "R", "S", "H", "F1", "Esc", "C"})
+        EXPECT_NE(labels.find(key), std::string::npos) << key << " not in labels: " << labels;
+}
+
+// ---- apply(): modes and toggles ----
+
+TEST(DemoApply, DigitsSetTheShadingModes) {
+    DemoState state(Scene{});
+    const std::pair<Command, ShadingMode> cases[] = {{Command::Flat, ShadingMode::Flat},
+                                                     {Command::Toon, ShadingMode::Toon},
+                                                     {Command::Gouraud, ShadingMode::Gouraud},
+                                                     {Command::Phong, ShadingMode::Phong},
+                                                     {Command::Flat, ShadingMode::Flat}};
+    for (const auto& [command, mode] : cases) {
+        EXPECT_TRUE(state.apply(command));
+        EXPECT_EQ(state.current().shading, mode);
+        EXPECT_EQ(state.current().lighting, LightingModel::BlinnPhong)
+            << "a shading key changed the lighting";
+    }
+    for (const auto& [key, command] : issueKeys()) {
+        if (command != Command::Gouraud) continue;
+        state.apply(*commandForKey(key));
+        EXPECT_EQ(state.current().shading, ShadingMode::Gouraud);
+    }
+}
+
+TEST(DemoApply, WindowCommandsReturnFalseAndChangeNothing) {
+    DemoState state(threeObjectScene());
+    const std::string before = sceneToJson(state.current());
+    EXPECT_FALSE(state.apply(Command::Screenshot));
+    EXPECT_FALSE(state.apply(Command::Quit));
+    EXPECT_EQ(sceneToJson(state.current()), before);
+}
+
+TEST(DemoApply, HelpAndPanelToggle) {
+    DemoState state(Scene{});
+    const bool help = state.showHelp, panel = state.showPanel;
+    state.apply(Command::ToggleHelp);
+    state.apply(Command::TogglePanel);
+    EXPECT_NE(state.showHelp, help);
+    EXPECT_NE(state.showPanel, panel);
+    state.apply(Command::ToggleHelp);
+    state.apply(Command::TogglePanel);
+    EXPECT_EQ(state.showHelp, help);
+    EXPECT_EQ(state.showPanel, panel);
+}
+
+TEST(DemoApply, NTogglesVertexNormals) {
+    DemoState state(Scene{});
+    EXPECT_EQ(state.current().vertexNormals, VertexNormals::Averaged); // DESIGN §1: averaged is the default
+    EXPECT_TRUE(state.apply(Command::ToggleNormals));
+    EXPECT_EQ(state.current().vertexNormals, VertexNormals::Exact);
+    state.apply(Command::ToggleNormals);
+    EXPECT_EQ(state.current().vertexNormals, VertexNormals::Averaged);
+}
+
+// ---- B: Phong <-> Blinn-Phong, β = 4α (DESIGN §3) ----
+
+TEST(DemoLighting, BFromPhongMultipliesEveryShininessByFourAndBackDivides) {
+    const Scene scene = threeObjectScene(); // Phong lighting; shininess 32, 12, 300
+    DemoState state(scene);
+    ASSERT_TRUE(state.matchHighlight) << "the issue: the matching is on by default in the demo";
+    EXPECT_TRUE(state.apply(Command::ToggleLighting));
+    Scene s = state.current();
+    EXPECT_EQ(s.lighting, LightingModel::BlinnPhong);
+    for (std::size_t i = 0; i < s.objects.size(); ++i)
+        EXPECT_DOUBLE_EQ(s.objects[i].material.shininess, 4 * scene.objects[i].material.shininess) << i;
+    state.apply(Command::ToggleLighting);
+    s = state.current();
+    EXPECT_EQ(s.lighting, LightingModel::Phong);
+    for (std::size_t i = 0; i < s.objects.size(); ++i)
+        EXPECT_EQ(s.objects[i].material.shininess, scene.objects[i].material.shininess) << i;
+}
+
+TEST(DemoLighting, BFromBlinnPhongDividesByFour) {
+    Scene scene; // blinn-phong, β = 32
+    DemoState state(scene);
+    state.apply(Command::ToggleLighting);
+    EXPECT_EQ(state.current().lighting, LightingModel::Phong);
+    EXPECT_DOUBLE_EQ(state.current().objects[0].material.shininess, 8);
+}
+
+TEST(DemoLighting, BWithoutMatchingLeavesShininessAlone) {
+    const Scene scene = threeObjectScene();
+    DemoState state(scene);
+    state.matchHighlight = false;
+    for (LightingModel expected :
+         {LightingModel::BlinnPhong, LightingModel::Phong, LightingModel::BlinnPhong}) {
+        state.apply(Command::ToggleLighting);
+        const Scene s = state.current();
+        EXPECT_EQ(s.lighting, expected);
+        for (std::size_t i = 0; i < s.objects.size(); ++i)
+            EXPECT_EQ(s.objects[i].material.shininess, scene.objects[i].material.shininess);
+    }
+}
+
+TEST(DemoLighting, ShininessNeverGoesBelowOne) {
+    for (double shininess : {1.0, 1.5, 2.0, 3.0, 3.99}) {
+        Scene scene; // blinn-phong: B divides
+        scene.objects[0].material.shininess = shininess;
+        DemoState state(scene);
+        state.apply(Command::ToggleLighting);
+        EXPECT_GE(state.current().objects[0].material.shininess, 1) << "from β = " << shininess;
+        EXPECT_NO_THROW(validateScene(state.current()));
+    }
+}
+
+// Pressing B twice gives back the scene: from either model, for every valid shininess (>= 1).
+TEST(DemoLighting, BTwiceRestoresTheOriginalShininess) {
+    for (LightingModel start : kLightingModels)
+        for (double shininess : {1.0, 2.0, 3.0, 4.0, 5.0, 8.0, 32.0, 100.0, 1000.0}) {
+            Scene scene;
+            scene.lighting = start;
+            scene.objects[0].material.shininess = shininess;
+            DemoState state(scene);
+            state.apply(Command::ToggleLighting);
+            state.apply(Command::ToggleLighting);
+            EXPECT_EQ(state.current().lighting, start);
+            EXPECT_EQ(state.current().objects[0].material.shininess, shininess)
+                << "B twice from " << toString(start) << " with shininess " << shininess << " gave "
+                << state.current().objects[0].material.shininess;
+        }
+}
+
+// ---- +/-: subdivision level ----
+
+TEST(DemoLevel, PlusAndMinusChangeEveryObjectAndClampAtBothEnds) {
+    Scene scene = threeObjectScene(); // all at level 3
+    DemoState state(scene);
+    EXPECT_EQ(state.level(), 3);
+    EXPECT_TRUE(state.apply(Command::LevelUp));
+    for (const SceneObject& o : state.current().objects) EXPECT_EQ(o.subdivisions, 4);
+    EXPECT_EQ(state.level(), 4);
+    for (int i = 0; i < 3 * kMaxSubdivisions; ++i) state.apply(Command::LevelUp);
+    EXPECT_EQ(state.level(), kMaxSubdivisions);
+    for (const SceneObject& o : state.current().objects) EXPECT_EQ(o.subdivisions, kMaxSubdivisions);
+    EXPECT_NO_THROW(validateScene(state.current()));
+    for (int i = 0; i < 3 * kMaxSubdivisions; ++i) state.apply(Command::LevelDown);
+    EXPECT_EQ(state.level(), 0);
+    for (const SceneObject& o : state.current().objects) EXPECT_EQ(o.subdivisions, 0);
+    EXPECT_NO_THROW(validateScene(state.current()));
+    state.apply(Command::LevelUp);
+    EXPECT_EQ(state.level(), 1) << "level down below 0 must not be remembered";
+}
+
+// "+" is "level up": it must not lower any object's level. With objects at different levels each goes
+// one up (clamped), keeping the scene's relative detail.
+TEST(DemoLevel, PlusNeverLowersAnObjectsLevel) {
+    Scene scene = threeObjectScene();
+    scene.objects[0].subdivisions = 2;
+    scene.objects[1].subdivisions = 6;
+    scene.objects[2].subdivisions = 4;
+    DemoState state(scene);
+    state.apply(Command::LevelUp);
+    const Scene s = state.current();
+    for (std::size_t i = 0; i < s.objects.size(); ++i)
+        EXPECT_EQ(s.objects[i].subdivisions, scene.objects[i].subdivisions + 1)
+            << "object " << i << " was at level " << scene.objects[i].subdivisions;
+}
+
+TEST(DemoLevel, TriangleCountIsFourToTheLevelPlusOnePerObject) {
+    auto expected = [](const Scene& s) {
+        std::size_t total = 0;
+        for (const SceneObject& o : s.objects)
+            total += std::size_t(1) << (2 * (o.subdivisions + 1)); // 4^(n+1)
+        return total;
+    };
+    Scene scene = threeObjectScene();
+    scene.objects[1].subdivisions = 5;
+    DemoState state(scene);
+    EXPECT_EQ(state.triangleCount(), expected(state.current()));
+    EXPECT_EQ(state.triangleCount(), 256u + 4096u + 256u);
+    for (int i = 0; i <= kMaxSubdivisions + 1; ++i) {
+        EXPECT_EQ(state.triangleCount(), expected(state.current())) << "level " << state.level();
+        state.apply(Command::LevelDown);
+    }
+    EXPECT_EQ(state.triangleCount(), 3u * 4u);
+    DemoState single(Scene{});
+    EXPECT_EQ(single.triangleCount(), 4096u); // level 5: 4^6
+    Scene empty;
+    empty.objects.clear();
+    EXPECT_EQ(DemoState(empty).triangleCount(), 0u);
+}
+
+// ---- O: perspective <-> orthographic ----
+
+TEST(DemoProjection, OTogglesOrthographicAndTwiceRestoresExactly) {
+    for (const Scene& scene : {Scene{}, threeObjectScene()}) {
+        DemoState state(scene);
+        const Projection original = state.current().projection;
+        EXPECT_TRUE(sameProjection(original, scene.projection))
+            << "the first frame uses the scene's projection";
+        EXPECT_FALSE(state.orthographic());
+        EXPECT_TRUE(state.apply(Command::ToggleProjection));
+        EXPECT_TRUE(state.orthographic());
+        EXPECT_EQ(state.current().projection.type, ProjectionType::Orthographic);
+        EXPECT_EQ(state.current().projection.near, original.near);
+        EXPECT_EQ(state.current().projection.far, original.far);
+        state.apply(Command::ToggleProjection);
+        EXPECT_FALSE(state.orthographic());
+        EXPECT_TRUE(sameProjection(state.current().projection, original));
+    }
+}
+
+// The issue: O keeps the sphere's size on screen. The orthographic box shows the perspective view's height
+// at the target, so the sphere's projected radius differs only by the perspective bulge d/√(d²−r²).
+TEST(DemoProjection, OKeepsTheSpheresSizeOnScreen) {
+    struct Move {
+        double dx, dy, wheel;
+    };
+    for (const Move& move : {Move{0, 0, 0}, Move{140, -60, 0}, Move{-300, 90, -6}, Move{45, 10, 3}}) {
+        DemoState state(Scene{});
+        state.drag(move.dx, move.dy);
+        state.zoom(move.wheel);
+        const Scene perspective = state.current();
+        state.apply(Command::ToggleProjection);
+        const Scene orthographic = state.current();
+        ASSERT_EQ(orthographic.projection.type, ProjectionType::Orthographic);
+        EXPECT_EQ(orthographic.eye, perspective.eye);
+        const double rp = projectedRadiusNdc(perspective, {0, 0, 0}, 1);
+        const double ro = projectedRadiusNdc(orthographic, {0, 0, 0}, 1);
+        EXPECT_NEAR(ro / rp, 1.0, 0.10) << "perspective " << rp << ", orthographic " << ro << " (drag "
+                                        << move.dx << "," << move.dy << ", wheel " << move.wheel << ")";
+        // Same half-height at the target: the ratio is exactly the perspective bulge √(d²−r²)/d.
+        const double d = glm::length(perspective.eye);
+        EXPECT_NEAR(ro / rp, std::sqrt(d * d - 1) / d, 1e-9) << "d = " << d;
+    }
+}
+
+TEST(DemoProjection, OFromAnOrthographicSceneKeepsTheSpheresSize) {
+    Scene scene;
+    scene.projection = {ProjectionType::Orthographic, 40, -1.5, 1.5, -1.5, 1.5, 0.5, 20};
+    scene.eye = {0, 0, 5};
+    DemoState state(scene);
+    EXPECT_TRUE(state.orthographic());
+    const Scene orthographic = state.current();
+    EXPECT_TRUE(sameProjection(orthographic.projection, scene.projection));
+    state.apply(Command::ToggleProjection);
+    const Scene perspective = state.current();
+    ASSERT_EQ(perspective.projection.type, ProjectionType::Perspective);
+    EXPECT_NO_THROW(validateScene(perspective));
+    const double rp = projectedRadiusNdc(perspective, {0, 0, 0}, 1);
+    const double ro = projectedRadiusNdc(orthographic, {0, 0, 0}, 1);
+    EXPECT_NEAR(ro / rp, 1.0, 0.10) << "orthographic " << ro << ", perspective " << rp;
+    EXPECT_NEAR(ro / rp, std::sqrt(24.0) / 5, 1e-9) << "same half-height at the target distance 5";
+    state.apply(Command::ToggleProjection);
+    EXPECT_TRUE(sameProjection(state.current().projection, scene.projection));
+}
+
+// The window draws current(width, height) at the framebuffer's size. Issue 3, robustness: a resized
+// window must not distort the picture. Perspective recomputes its aspect from the size; the orthographic
+// box must too, or the sphere becomes an ellipse.
+TEST(DemoProjection, SphereStaysRoundWhenTheWindowAspectDiffersFromTheScenes) {
+    for (bool orthographic : {false, true}) {
+        Scene scene; // 512×512
+        DemoState state(scene);
+        if (orthographic) state.apply(Command::ToggleProjection);
+        const Scene s = state.current(800, 600); // a window resized to 800×600
+        const SceneView view = sceneView(s);
+        const CameraFrame frame = cameraFrame(s.eye, s.target, s.up);
+        const glm::dvec3 centre = ndc(view, {0, 0, 0});
+        // Silhouette points left-right and up-down; at the target distance the bulge is the same both ways.
+        const double rx = std::abs(ndc(view, frame.u).x - centre.x) * s.width / 2;
+        const double ry = std::abs(ndc(view, frame.v).y - centre.y) * s.height / 2;
+        EXPECT_NEAR(rx / ry, 1.0, 0.01) << (orthographic ? "orthographic" : "perspective") << ": " << rx
+                                        << " px wide, " << ry << " px high";
+    }
+}
+
+// ---- M: material presets ----
+
+enum class Kind { Matte, Plastic, Metal, Other };
+Kind materialKind(const Material& m) {
+    if (m.specular == glm::dvec3(0)) return Kind::Matte;
+    if (m.shininess >= 5 && m.shininess <= 10) return Kind::Plastic;
+    if (m.shininess >= 100 && m.shininess <= 200) return Kind::Metal;
+    return Kind::Other;
+}
+
+TEST(DemoMaterials, MCyclesMattePlasticMetalAndBackToTheScenesOwn) {
+    const Scene scene = threeObjectScene(); // Phong lighting: shininess is α
+    DemoState state(scene);
+    std::set<Kind> seen;
+    int presses = 0;
+    for (;;) {
+        ASSERT_LT(presses, 20) << "M never returns to the scene's own materials";
+        EXPECT_TRUE(state.apply(Command::NextMaterial));
+        ++presses;
+        const Scene s = state.current();
+        EXPECT_NO_THROW(validateScene(s));
+        bool original = true;
+        for (std::size_t i = 0; i < s.objects.size(); ++i)
+            original = original && sameMaterial(s.objects[i].material, scene.objects[i].material);
+        if (original) break;
+        for (std::size_t i = 1; i < s.objects.size(); ++i) // a preset applies to every object
+            EXPECT_TRUE(sameMaterial(s.objects[i].material, s.objects[0].material)) << "object " << i;
+        const Kind kind = materialKind(s.objects[0].material);
+        EXPECT_NE(kind, Kind::Other) << state.materialName() << ": k_s "
+                                     << str(s.objects[0].material.specular) << ", α "
+                                     << s.objects[0].material.shininess;
+        EXPECT_TRUE(seen.insert(kind).second) << state.materialName() << " seen twice";
+        EXPECT_FALSE(state.materialName().empty());
+    }
+    EXPECT_EQ(seen, (std::set<Kind>{Kind::Matte, Kind::Plastic, Kind::Metal}));
+    EXPECT_EQ(presses, 4);
+    // Other state is not touched by M.
+    EXPECT_EQ(state.current().lighting, scene.lighting);
+    EXPECT_EQ(state.current().shading, scene.shading);
+}
+
+TEST(DemoMaterials, PresetsNameTheirKind) {
+    DemoState state(phongScene());
+    std::set<std::string> names;
+    for (int i = 0; i < 3; ++i) {
+        state.apply(Command::NextMaterial);
+        names.insert(state.materialName());
+    }
+    EXPECT_EQ(names, (std::set<std::string>{"matte", "plastic", "metal"}));
+}
+
+// The presets' exponents are Phong α (the issue: plastic α ≈ 5–10, metal α ≈ 100–200). In the demo's
+// default Blinn-Phong lighting with the β = 4α matching on, choosing "plastic" and pressing B to compare
+// with Phong must show the plastic α, not a quarter of it.
+TEST(DemoMaterials, PresetChosenUnderBlinnPhongIsItsAlphaAfterB) {
+    DemoState state(Scene{}); // blinn-phong
+    ASSERT_TRUE(state.matchHighlight);
+    for (int preset = 0; preset < 3; ++preset) {
+        state.apply(Command::NextMaterial);
+        const std::string name = state.materialName();
+        state.apply(Command::ToggleLighting); // -> Phong
+        const Material m = state.current().objects[0].material;
+        ASSERT_EQ(state.current().lighting, LightingModel::Phong);
+        if (name == "plastic") {
+            EXPECT_GE(m.shininess, 5) << "plastic under Phong after B: α = " << m.shininess;
+            EXPECT_LE(m.shininess, 10) << "plastic under Phong after B: α = " << m.shininess;
+        }
+        if (name == "metal") {
+            EXPECT_GE(m.shininess, 100) << "metal under Phong after B: α = " << m.shininess;
+            EXPECT_LE(m.shininess, 200) << "metal under Phong after B: α = " << m.shininess;
+        }
+        state.apply(Command::ToggleLighting); // back to Blinn-Phong for the next preset
+    }
+}
+
+// B, then a full M cycle back to the scene's own, then B again: the scene must be what it was. (The
+// scene's own β = 32 is α = 8 under Phong; restoring β = 32 while Phong is on makes the next B give 128.)
+TEST(DemoMaterials, ScenesOwnMaterialRestoredInTheCurrentLightingModel) {
+    const Scene scene; // blinn-phong, β = 32
+    DemoState state(scene);
+    state.apply(Command::ToggleLighting); // Phong, α = 8
+    ASSERT_EQ(state.current().objects[0].material.shininess, 8);
+    for (int i = 0; i < 4; ++i) state.apply(Command::NextMaterial);
+    ASSERT_EQ(state.materialName(), "scene's own");
+    EXPECT_EQ(state.current().objects[0].material.shininess, 8)
+        << "the scene's own material under Phong lighting (matched from β = 32)";
+    state.apply(Command::ToggleLighting);
+    EXPECT_EQ(state.current().lighting, LightingModel::BlinnPhong);
+    EXPECT_EQ(state.current().objects[0].material.shininess, 32)
+        << "B, M×4, B did not give back the scene's β";
+}
+
+// ---- L: light presets ----
+
+bool chromatic(const glm::dvec3& c) {
+    return c.x != c.y || c.y != c.z;
+}
+
+TEST(DemoLights, LCyclesPointDirectionalSpotColouredAndBackToTheScenesOwn) {
+    const Scene scene = threeObjectScene();
+    DemoState state(scene);
+    bool point = false, directional = false, spot = false, coloured = false;
+    int presses = 0;
+    for (;;) {
+        ASSERT_LT(presses, 20) << "L never returns to the scene's own lights";
+        EXPECT_TRUE(state.apply(Command::NextLights));
+        ++presses;
+        const Scene s = state.current();
+        EXPECT_NO_THROW(validateScene(s)) << state.lightsName();
+        if (sameLights(s.lights, scene.lights)) break;
+        EXPECT_FALSE(state.lightsName().empty());
+        ASSERT_FALSE(s.lights.empty()) << state.lightsName();
+        if (s.lights.size() == 1) {
+            point = point || s.lights[0].type == LightType::Point;
+            directional = directional || s.lights[0].type == LightType::Directional;
+            spot = spot || s.lights[0].type == LightType::Spot;
+        } else {
+            std::set<std::vector<double>> colours;
+            for (const Light& l : s.lights)
+                if (chromatic(l.diffuse)) colours.insert({l.diffuse.x, l.diffuse.y, l.diffuse.z});
+            coloured = coloured || colours.size() >= 2;
+        }
+        // Materials, shading and the camera are not touched by L.
+        for (std::size_t i = 0; i < s.objects.size(); ++i)
+            EXPECT_TRUE(sameMaterial(s.objects[i].material, scene.objects[i].material));
+    }
+    EXPECT_TRUE(point);
+    EXPECT_TRUE(directional);
+    EXPECT_TRUE(spot);
+    EXPECT_TRUE(coloured) << "no preset with several coloured lights";
+    EXPECT_GE(presses, 5);
+    EXPECT_EQ(state.lightsName(), "scene's own");
+}
+
+TEST(DemoLights, SpotPresetLightsTheSphere) {
+    // A spot set-up whose cone misses the default sphere would show a black picture.
+    for (const LightPreset& preset : lightPresets())
+        for (const Light& l : preset.lights) {
+            if (l.type != LightType::Spot) continue;
+            const glm::dvec3 toCentre = glm::dvec3(0) - l.position;
+            const double angleToCentre =
+                std::acos(glm::dot(glm::normalize(toCentre), glm::normalize(l.direction))) / kDeg;
+            EXPECT_LT(angleToCentre, l.cutoffDeg) << preset.name;
+        }
+}
+
+// ---- R and the orbit camera ----
+
+TEST(DemoCamera, RRestoresTheViewAfterDragsAndZooms) {
+    for (const Scene& scene : {Scene{}, threeObjectScene()}) {
+        DemoState state(scene);
+        const Scene before = state.current();
+        state.drag(123, -45);
+        state.zoom(3);
+        state.drag(1e6, 1e6);
+        state.zoom(-7.5);
+        state.apply(Command::Flat);
+        ASSERT_NE(state.current().eye, before.eye);
+        EXPECT_TRUE(state.apply(Command::ResetView));
+        const Scene after = state.current();
+        EXPECT_EQ(after.eye, before.eye) << str(after.eye) << " vs " << str(before.eye);
+        EXPECT_EQ(after.target, before.target);
+        EXPECT_EQ(after.up, before.up);
+        EXPECT_TRUE(sameProjection(after.projection, before.projection));
+        EXPECT_EQ(after.shading, ShadingMode::Flat) << "R resets the view only";
+    }
+}
+
+// For the default scene (and the showcase), the demo's first frame is exactly `shadelab render`'s view.
+TEST(DemoCamera, FirstFrameIsTheScenesCamera) {
+    Scene showcase;
+    showcase.objects[0].radius = 1.1;
+    showcase.objects[0].subdivisions = 3;
+    for (const Scene& scene : {Scene{}, showcase, threeObjectScene()}) {
+        DemoState state(scene);
+        const Scene s = state.current();
+        EXPECT_LT(glm::length(s.eye - scene.eye), 1e-12) << str(s.eye) << " vs " << str(scene.eye);
+        EXPECT_EQ(s.target, scene.target);
+        EXPECT_LT(maxAbsDifference(sceneView(s).viewFromWorld, sceneView(scene).viewFromWorld), 1e-12);
+        EXPECT_TRUE(sameProjection(s.projection, scene.projection));
+    }
+}
+
+// A scene file's camera is part of the scene: `shadelab SCENE.json` should first show what
+// `shadelab render SCENE.json` shows. These are valid scenes (DESIGN §4) whose camera the demo changes.
+void expectFirstFrameIsTheScenesView(const Scene& scene) {
+    validateScene(scene);
+    DemoState state(scene);
+    const Scene s = state.current();
+    const double diff = maxAbsDifference(sceneView(s).viewFromWorld, sceneView(scene).viewFromWorld);
+    EXPECT_LT(diff, 1e-9) << "view matrix differs by " << diff << "; eye " << str(s.eye) << " (scene "
+                          << str(scene.eye) << "), up " << str(s.up) << " (scene " << str(scene.up) << ")";
+}
+
+TEST(DemoCamera, FirstFrameKeepsTheScenesUpVector) {
+    Scene scene;
+    scene.up = {1, 0, 0}; // a camera rolled by 90°
+    expectFirstFrameIsTheScenesView(scene);
+}
+
+TEST(DemoCamera, FirstFrameKeepsATopDownCamera) {
+    Scene scene;
+    scene.eye = {0, 5, 0};
+    scene.up = {0, 0, -1};
+    expectFirstFrameIsTheScenesView(scene);
+}
+
+TEST(DemoCamera, FirstFrameKeepsACameraThatIsAlreadyOutsideEveryObject) {
+    Scene scene;
+    scene.eye = {0, 0, 4};
+    scene.objects[0].center = {3, 0, 0}; // the eye is 5 from its centre; nothing near the near plane
+    SceneObject other = scene.objects[0];
+    other.center = {-3, 0, 0};
+    scene.objects.push_back(other);
+    expectFirstFrameIsTheScenesView(scene);
+}
+
+TEST(OrbitCamera, EyeIsAtDistanceFromTheTarget) {
+    std::mt19937_64 rng(20240603);
+    std::uniform_real_distribution<double> any(-50, 50), angle(-3 * std::numbers::pi, 3 * std::numbers::pi),
+        elevation(-OrbitCamera::kMaxElevationRad, OrbitCamera::kMaxElevationRad), distance(0.01, 100);
+    for (int i = 0; i < 1000; ++i) {
+        OrbitCamera c;
+        c.target = {any(rng), any(rng), any(rng)};
+        c.distance = distance(rng);
+        c.azimuthRad = angle(rng);
+        c.elevationRad = elevation(rng);
+        EXPECT_NEAR(glm::length(c.eye() - c.target), c.distance, 1e-12 * (1 + c.distance));
+    }
+    OrbitCamera c; // azimuth 0, elevation 0: on +z of the target
+    c.target = {1, 2, 3};
+    EXPECT_LT(glm::length(c.eye() - glm::dvec3(1, 2, 3 + c.distance)), 1e-15);
+}
+
+TEST(OrbitCamera, LookingRoundTripsTheEye) {
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> any(-20, 20), unit(-1, 1), distance(0.1, 50);
+    int tested = 0;
+    while (tested < 2000) {
+        const glm::dvec3 dir{unit(rng), unit(rng), unit(rng)};
+        if (glm::length(dir) < 0.1) continue;
+        if (std::abs(glm::normalize(dir).y) > std::sin(OrbitCamera::kMaxElevationRad)) continue; // poles
+        const glm::dvec3 target{any(rng), any(rng), any(rng)};
+        const glm::dvec3 eye = target + distance(rng) * glm::normalize(dir);
+        const OrbitCamera c = OrbitCamera::looking(eye, target);
+        EXPECT_LT(glm::length(c.eye() - eye), 1e-12) << str(eye) << " -> " << str(c.eye());
+        EXPECT_EQ(c.target, target);
+        ++tested;
+    }
+}
+
+TEST(OrbitCamera, DraggingNeverReachesThePoles) {
+    const glm::dvec3 up{0, 1, 0};
+    for (double dy : {1e6, -1e6, 1e9, -1e9, 359.0, -359.0}) {
+        OrbitCamera c;
+        c.drag(0, dy);
+        EXPECT_LE(std::abs(c.elevationRad), OrbitCamera::kMaxElevationRad);
+        EXPECT_GT(std::abs(c.elevationRad), 80 * kDeg) << "dy " << dy << " should reach the clamp";
+        EXPECT_NO_THROW(cameraFrame(c.eye(), c.target, up));
+        const glm::dvec3 w = glm::normalize(c.eye() - c.target);
+        EXPECT_LT(std::abs(glm::dot(w, up)), std::sin(89.5 * kDeg)) << "dy " << dy;
+    }
+    // Many small drags past the pole do not accumulate beyond the clamp either.
+    OrbitCamera c;
+    for (int i = 0; i < 10000; ++i) c.drag(3, 1);
+    EXPECT_LE(std::abs(c.elevationRad), OrbitCamera::kMaxElevationRad);
+    c.drag(0, -1); // and the first drag back moves away from the pole at once
+    EXPECT_LT(c.elevationRad, OrbitCamera::kMaxElevationRad);
+    EXPECT_TRUE(std::isfinite(c.azimuthRad));
+    EXPECT_LE(std::abs(c.azimuthRad), std::numbers::pi + 1e-12) << "azimuth kept in one turn";
+}
+
+TEST(OrbitCamera, CurrentSceneFrameNeverThrowsAfterHugeDrags) {
+    for (double dy : {1e6, -1e6}) {
+        DemoState state(Scene{});
+        state.drag(12345.6, dy);
+        const Scene s = state.current();
+        EXPECT_NO_THROW(cameraFrame(s.eye, s.target, s.up));
+        EXPECT_NO_THROW(sceneView(s));
+        EXPECT_NO_THROW(validateScene(s));
+    }
+}
+
+TEST(OrbitCamera, ZoomScalesTheDistance) {
+    OrbitCamera c;
+    const double d0 = c.distance;
+    c.zoom(1);
+    EXPECT_NEAR(c.distance, 0.9 * d0, 1e-12) << "positive steps zoom in";
+    c.zoom(-1);
+    EXPECT_NEAR(c.distance, d0, 1e-12);
+    c.zoom(-2);
+    EXPECT_NEAR(c.distance, d0 / 0.81, 1e-12);
+    c.zoom(0.5);
+    EXPECT_NEAR(c.distance, d0 / 0.81 * std::sqrt(0.9), 1e-12) << "fractional (touchpad) steps";
+    const glm::dvec3 az{c.azimuthRad, c.elevationRad, 0};
+    EXPECT_EQ(az, glm::dvec3(0, 0, 0)) << "zoom moves along the view direction only";
+}
+
+// demo_state.h: "×0.9 per step in, clamped to a sane range". Without a clamp the distance underflows to
+// 0 or overflows to ∞ and the wheel then stops working in that direction for good.
+TEST(OrbitCamera, ZoomStaysInASaneRange) {
+    for (double steps : {1e4, -1e4}) {
+        OrbitCamera c;
+        c.zoom(steps);
+        EXPECT_TRUE(std::isfinite(c.distance) && c.distance > 0) << "zoom(" << steps << "): " << c.distance;
+        const double after = c.distance;
+        c.zoom(steps > 0 ? -1 : 1);
+        EXPECT_NE(c.distance, after) << "zoom(" << steps << ") then one step back does nothing";
+    }
+}
+
+// Over-zooming must not create a dead zone: one wheel step out after zooming in far must move the eye.
+TEST(DemoCamera, OneStepOutAfterOverZoomingInMovesTheEye) {
+    DemoState state(Scene{});
+    state.zoom(100);
+    const double closest = glm::length(state.current().eye - state.current().target);
+    state.zoom(-1);
+    const double after = glm::length(state.current().eye - state.current().target);
+    EXPECT_GT(after, closest) << "the wheel had to be turned back past the 100 steps the view ignored";
+    DemoState out(Scene{});
+    out.zoom(-100);
+    const double farthest = glm::length(out.current().eye - out.current().target);
+    out.zoom(1);
+    EXPECT_LT(glm::length(out.current().eye - out.current().target), farthest);
+}
+
+void expectEyeOutsideObjectsAndObjectsInsideFar(const Scene& s, const std::string& context) {
+    for (std::size_t i = 0; i < s.objects.size(); ++i) {
+        const double d = glm::length(s.eye - s.objects[i].center), r = boundingRadius(s.objects[i]);
+        EXPECT_GT(d, r) << context << ": eye inside object " << i << " (" << d << " from its centre)";
+        EXPECT_LE(d + r, s.projection.far) << context << ": object " << i << " reaches past the far plane";
+    }
+}
+
+TEST(DemoCamera, ZoomKeepsTheEyeOutsideObjectsAndInsideFar) {
+    for (const Scene& scene : {Scene{}, threeObjectScene()})
+        for (double steps : {1000.0, -1000.0, 30.0, -30.0}) {
+            DemoState state(scene);
+            state.zoom(steps);
+            const Scene s = state.current();
+            expectEyeOutsideObjectsAndObjectsInsideFar(s, "zoom(" + std::to_string(steps) + ")");
+            EXPECT_NO_THROW(sceneView(s));
+        }
+}
+
+// A valid scene with a tight far plane (eye 2 from a unit sphere, far 2.6): the eye can still be kept
+// outside the sphere (distance in (1.5, 1.6] clears the near plane and keeps the sphere before far).
+TEST(DemoCamera, ZoomKeepsTheEyeOutsideTheSphereWithATightFarPlane) {
+    Scene scene;
+    scene.eye = {0, 0, 2};
+    scene.projection.far = 2.6;
+    validateScene(scene);
+    for (double steps : {1000.0, 1e4}) {
+        DemoState state(scene);
+        state.zoom(steps);
+        const Scene s = state.current();
+        EXPECT_GT(glm::length(s.eye - s.objects[0].center), s.objects[0].radius)
+            << "zoom(" << steps << "): eye " << str(s.eye);
+        EXPECT_NO_THROW(sceneView(s)) << "zoom(" << steps << ")";
+    }
+}
+
+// ---- everything at once ----
+
+TEST(DemoStateRandom, RandomCommandsDragsAndZoomsAlwaysGiveAValidScene) {
+    Scene orthographic;
+    orthographic.projection = {ProjectionType::Orthographic, 40, -1.6, 1.6, -1.2, 1.2, 0.5, 20};
+    Scene frustum = threeObjectScene();
+    frustum.projection = {ProjectionType::Frustum, 40, -0.2, 0.25, -0.2, 0.2, 0.5, 30};
+    frustum.width = 640;
+    frustum.height = 480;
+    int sceneIndex = 0;
+    for (const Scene& scene : {Scene{}, threeObjectScene(), orthographic, frustum}) {
+        std::mt19937 rng(1234 + sceneIndex++);
+        std::uniform_int_distribution<int> what(0, 9), commandIndex(0, int(std::size(kAllCommands)) - 1);
+        std::uniform_real_distribution<double> pixels(-2000, 2000), steps(-30, 30), unit(0, 1);
+        DemoState state(scene);
+        for (int op = 0; op < 2000; ++op) {
+            std::ostringstream context;
+            context << "scene " << sceneIndex - 1 << ", op " << op << ": ";
+            const int kind = what(rng);
+            if (kind < 6) {
+                const Command command = kAllCommands[commandIndex(rng)];
+                context << "command " << int(command);
+                state.apply(command);
+            } else if (kind < 8) {
+                const double dx = unit(rng) < 0.05 ? 1e6 : pixels(rng),
+                             dy = unit(rng) < 0.05 ? -1e6 : pixels(rng);
+                context << "drag " << dx << ", " << dy;
+                state.drag(dx, dy);
+            } else if (kind < 9) {
+                const double s = steps(rng);
+                context << "zoom " << s;
+                state.zoom(s);
+            } else {
+                state.matchHighlight = !state.matchHighlight;
+                context << "matchHighlight " << state.matchHighlight;
+            }
+            const Scene s = state.current();
+            ASSERT_NO_THROW(validateScene(s)) << context.str();
+            SceneView view;
+            ASSERT_NO_THROW(view = sceneView(s)) << context.str();
+            ASSERT_TRUE(allFinite(view.viewFromWorld)) << context.str();
+            ASSERT_TRUE(allFinite(view.clipFromView)) << context.str();
+            ASSERT_NO_THROW(cameraFrame(s.eye, s.target, s.up)) << context.str();
+            ASSERT_GE(state.level(), 0);
+            ASSERT_LE(state.level(), kMaxSubdivisions);
+            for (const SceneObject& o : s.objects) {
+                const double d = glm::length(s.eye - o.center), r = boundingRadius(o);
+                ASSERT_GT(d, r) << context.str() << ": eye inside an object";
+                ASSERT_LE(d + r, s.projection.far) << context.str() << ": object past the far plane";
+                ASSERT_GE(o.material.shininess, 1) << context.str();
+            }
+            ASSERT_EQ(s.objects.size(), scene.objects.size());
+        }
+    }
+}
+
+} // namespace
+} // namespace shadelab::app
