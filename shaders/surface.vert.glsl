@@ -4,6 +4,12 @@
 //   SHADING_GOURAUD  light per vertex with the vertex normal, clamp, interpolate the colour
 //   SHADING_PHONG, SHADING_TOON  pass view-space position and normal on for per-fragment lighting
 //   NEEDS_NORMAL     (set in lighting.glsl) 0 when only ambient light reaches the scene: no normal attribute
+//   FLAT_GEOMETRY_SHADER  with SHADING_FLAT: shared vertices; surface.geom.glsl derives each triangle's
+//                    centroid and face normal and lights it once (no centroid or normal attribute)
+#if defined(FLAT_GEOMETRY_SHADER) && NEEDS_NORMAL
+#undef NEEDS_NORMAL
+#define NEEDS_NORMAL 0
+#endif
 
 layout(location = 0) in vec3 aPositionObject;
 #if NEEDS_NORMAL
@@ -11,7 +17,7 @@ layout(location = 1) in vec3 aNormalObject; // flat: the face normal
 #else
 const vec3 aNormalObject = vec3(0.0, 0.0, 1.0); // only ambient light: the normal is never used
 #endif
-#ifdef SHADING_FLAT
+#if defined(SHADING_FLAT) && !defined(FLAT_GEOMETRY_SHADER)
 layout(location = 2) in vec3 aCentroidObject;
 #endif
 
@@ -19,7 +25,9 @@ uniform mat4 uClipFromObject;       // composed in double on the CPU
 uniform mat4 uViewFromObject;       // camera-relative: no large world coordinates reach float
 uniform mat3 uNormalViewFromObject; // cofactor of the upper 3×3: normals need renormalizing
 
-#if defined(SHADING_FLAT)
+#if defined(FLAT_GEOMETRY_SHADER)
+out vec3 vPositionView;
+#elif defined(SHADING_FLAT)
 flat out vec3 vColor;
 #elif defined(SHADING_GOURAUD)
 out vec3 vColor;
@@ -36,7 +44,9 @@ vec3 lightAt(vec3 pointObject) {
 
 void main() {
     gl_Position = uClipFromObject * vec4(aPositionObject, 1.0);
-#if defined(SHADING_FLAT)
+#if defined(FLAT_GEOMETRY_SHADER)
+    vPositionView = (uViewFromObject * vec4(aPositionObject, 1.0)).xyz;
+#elif defined(SHADING_FLAT)
     vColor = lightAt(aCentroidObject);
 #elif defined(SHADING_GOURAUD)
     vColor = lightAt(aPositionObject);

@@ -25,6 +25,8 @@ public:
     Backend backend() const { return backend_; }
     // Scene-specialized programs (default) or the uber programs; see gl/program.h.
     void setSpecialize(bool specialize);
+    // Flat shading through shared vertices and a geometry shader (see gl/renderer.h).
+    void setFlatGeometryShader(bool enabled);
     int programsBuilt() const;
     const std::string& rendererString() const { return rendererString_; }
 

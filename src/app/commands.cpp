@@ -12,7 +12,9 @@ namespace {
 
 std::string quoted(const std::string& s) { return "\"" + s + "\""; }
 
-void applySize(Scene& scene, const std::string& text) {
+} // namespace
+
+void composeSize(Scene& scene, const std::string& text) {
     static const std::regex kSize(R"(([0-9]{1,9})x([0-9]{1,9}))");
     std::smatch m;
     const std::string range = "1.." + std::to_string(kMaxImageSize);
@@ -24,6 +26,8 @@ void applySize(Scene& scene, const std::string& text) {
     scene.width = int(width);
     scene.height = int(height);
 }
+
+namespace {
 
 // "auto" or a whole number 0..kMaxSubdivisions; a larger level names the memory it would need.
 int parseLevel(const std::string& text) {
@@ -65,7 +69,7 @@ Scene composeScene(const std::string& path, const SceneOverrides& o) {
                              std::to_string(*o.tolerancePx));
         scene.tolerancePx = *o.tolerancePx;
     }
-    if (o.size) applySize(scene, *o.size);
+    if (o.size) composeSize(scene, *o.size);
     validateScene(scene);
     return scene;
 }

@@ -22,6 +22,9 @@ struct SceneOverrides {
 // result validated. Errors name the argument (e.g. "--size") or the JSON path.
 Scene composeScene(const std::string& path, const SceneOverrides& overrides);
 
+// Applies "--size WxH" to the scene; InputError naming --size for anything else.
+void composeSize(Scene& scene, const std::string& text);
+
 // Throws InputError naming `argument` if `out` cannot be a PNG output path (its folder missing, or it is a
 // folder itself), before any work is done.
 void checkOutputPath(const std::filesystem::path& out, const char* argument = "--out");

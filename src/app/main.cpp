@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/commands.h"
+#include "app/bench.h"
 #include "app/demo_state.h"
 #include "shadelab/errors.h"
 
@@ -71,6 +72,20 @@ int run(int argc, char** argv) {
     addSceneFlags(*reference, referenceFlags);
     reference->add_option("--out", referenceOut, "Output PNG")->required();
 
+    app::BenchOptions bench;
+    std::string benchBackend = "egl", benchSize = "800x600", benchJson;
+    CLI::App* benchCommand = cli.add_subcommand("bench", "Benchmarks, reported as ratios measured in one run");
+    benchCommand->add_option("--backend", benchBackend, "Headless context: egl or osmesa")->capture_default_str();
+    benchCommand->add_option("--size", benchSize, "Frame size WxH")->capture_default_str();
+    benchCommand->add_option("--frames", bench.frames, "Timed frames per configuration")
+        ->capture_default_str()
+        ->check(CLI::Range(3, 100000));
+    benchCommand->add_option("--warmup", bench.warmupFrames, "Untimed frames first")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 1000));
+    benchCommand->add_option("--filter", bench.filter, "Regular expression: run only matching benchmarks");
+    benchCommand->add_option("--json", benchJson, "Also write every figure and ratio to this JSON file");
+
     try {
         cli.parse(argc, argv);
     } catch (const CLI::Success& e) {
@@ -92,6 +107,18 @@ int run(int argc, char** argv) {
         const Backend backend = app::backendFromArgument(backendName);
         app::checkOutputPath(renderOut);
         return app::runRender(scene, backend, renderOut, specialize);
+    }
+    if (*benchCommand) {
+        Scene sized;
+        app::composeSize(sized, benchSize);
+        bench.width = sized.width;
+        bench.height = sized.height;
+        bench.backend = app::backendFromArgument(benchBackend);
+        if (!benchJson.empty()) {
+            app::checkOutputPath(benchJson, "--json");
+            bench.json = benchJson;
+        }
+        return app::runBench(bench);
     }
     if (*reference) {
         const Scene scene = app::composeScene(referenceScene, referenceFlags);

@@ -46,6 +46,7 @@ HeadlessRenderer::~HeadlessRenderer() {
 }
 
 void HeadlessRenderer::setSpecialize(bool specialize) { renderer_->setSpecialize(specialize); }
+void HeadlessRenderer::setFlatGeometryShader(bool enabled) { renderer_->setFlatGeometryShader(enabled); }
 int HeadlessRenderer::programsBuilt() const { return renderer_->programsBuilt(); }
 
 Image HeadlessRenderer::render(const Scene& scene) {

@@ -59,4 +59,10 @@ void GpuMesh::draw() const {
     glBindVertexArray(0);
 }
 
+void drawWith(const Program& program, const GpuMesh& mesh) {
+    glUseProgram(program.get());
+    mesh.draw();
+    glUseProgram(0);
+}
+
 } // namespace shadelab::gl

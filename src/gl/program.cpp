@@ -80,7 +80,8 @@ ProgramVariant ProgramVariant::forScene(const Scene& scene, bool specialize) {
 }
 
 std::string ProgramVariant::name() const {
-    std::string text = std::string(toString(shading)) + "/" + std::string(toString(lighting));
+    std::string text = std::string(toString(shading)) + (flatGeometryShader ? "(gs)" : "") + "/" +
+                       std::string(toString(lighting));
     if (!specialized) return text;
     text += "+d" + std::to_string(directional) + "p" + std::to_string(point) + "s" + std::to_string(spot);
     if (!ambient) text += "-ambient";
@@ -99,6 +100,7 @@ std::string ProgramVariant::defines() const {
     static_assert(std::size(kShadingDefines) == kShadingModes.size());
     text += std::string("#define ") + kShadingDefines[int(shading)] + "\n";
     if (lighting == LightingModel::BlinnPhong) text += "#define LIGHTING_BLINN_PHONG\n";
+    if (flatGeometryShader) text += "#define FLAT_GEOMETRY_SHADER\n";
     if (!specialized) return text;
     text += "#define SPECIALIZED\n";
     text += "#define NUM_DIRECTIONAL " + std::to_string(directional) + "\n";
@@ -114,15 +116,21 @@ std::string ProgramVariant::defines() const {
 Program buildProgram(const ProgramVariant& variant) {
     const Shader vertex = compileStage(GL_VERTEX_SHADER, "surface.vert.glsl", variant);
     const Shader fragment = compileStage(GL_FRAGMENT_SHADER, "surface.frag.glsl", variant);
+    Shader geometry;
     Program program(glCreateProgram());
     glAttachShader(program.get(), vertex.get());
     glAttachShader(program.get(), fragment.get());
+    if (variant.flatGeometryShader) {
+        geometry = compileStage(GL_GEOMETRY_SHADER, "surface.geom.glsl", variant);
+        glAttachShader(program.get(), geometry.get());
+    }
     glLinkProgram(program.get());
     GLint ok = GL_FALSE;
     glGetProgramiv(program.get(), GL_LINK_STATUS, &ok);
     if (!ok) throw RuntimeError("linking program " + variant.name() + " failed:\n" + infoLog(program.get(), true));
     glDetachShader(program.get(), vertex.get());
     glDetachShader(program.get(), fragment.get());
+    if (geometry) glDetachShader(program.get(), geometry.get());
     return program;
 }
 

@@ -143,7 +143,8 @@ void Renderer::render(const Scene& scene, int width, int height) {
     // analytic reference; the depth test alone decides visibility.
     glDisable(GL_CULL_FACE);
 
-    const ProgramVariant variant = ProgramVariant::forScene(scene, specialize_);
+    ProgramVariant variant = ProgramVariant::forScene(scene, specialize_);
+    variant.flatGeometryShader = flatGeometryShader_ && scene.shading == ShadingMode::Flat;
     const GLuint prog = program(variant);
     glUseProgram(prog);
     std::vector<Light> lightsView;
@@ -154,10 +155,14 @@ void Renderer::render(const Scene& scene, int width, int height) {
         setUberLights(prog, lightsView);
     setInt(prog, "uOrthographic", view.orthographic ? 1 : 0);
     if (scene.shading == ShadingMode::Toon) setFloat(prog, "uToonBands", scene.toonBands);
-    const MeshLayout layout = scene.shading == ShadingMode::Flat ? MeshLayout::Flat : MeshLayout::Smooth;
+    const MeshLayout layout =
+        scene.shading == ShadingMode::Flat && !variant.flatGeometryShader ? MeshLayout::Flat : MeshLayout::Smooth;
     for (const SceneObject& object : scene.objects) {
         setMaterial(prog, object.material);
-        setTransforms(prog, view.clipFromView, view.viewFromWorld * worldFromObject(object));
+        const glm::dmat4 viewFromObject = view.viewFromWorld * worldFromObject(object);
+        setTransforms(prog, view.clipFromView, viewFromObject);
+        if (variant.flatGeometryShader)
+            setFloat(prog, "uHandedness", glm::determinant(glm::dmat3(viewFromObject)) < 0 ? -1 : 1);
         mesh(subdivisionLevel(sized, object), scene.vertexNormals, layout).draw();
     }
     glUseProgram(0);

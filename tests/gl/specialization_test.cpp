@@ -45,6 +45,7 @@ const CrossCheckCase kCases[] = {
          s.lights[2].attenuation = {1, 0.05, 0.01};
      }},
     {"no_specular", [](Scene& s) { s.objects[0].material.specular = glm::dvec3(0); }},
+    {"mirrored_ellipsoid", [](Scene& s) { s.objects[0].scale = {-1.2, 0.8, 1}; }},
     {"ambient_only", [](Scene& s) {
          s.lights[0].type = LightType::Ambient;
          s.lights[0].ambient = {0.5, 0.5, 0.5};
@@ -86,6 +87,25 @@ TEST_P(Specialization, AgreesWithTheUberProgramWithin1Of255) {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, Specialization, testing::ValuesIn(kCases),
                          [](const auto& info) { return std::string(info.param.name); });
+
+// Flat shading from shared vertices through a geometry shader gives the picture of the duplicated-vertex
+// layout: the same centroid and face normal, derived on the GPU in float (1/255 for rounding).
+TEST_P(Specialization, FlatGeometryShaderMatchesDuplicatedVertices) {
+    SHADELAB_REQUIRE_GL(renderer);
+    for (LightingModel model : kLightingModels) {
+        Scene scene = litSphereScene(96, LightType::Point);
+        scene.objects[0].subdivisions = 3;
+        scene.shading = ShadingMode::Flat;
+        scene.lighting = model;
+        GetParam().change(scene);
+        const Image duplicated = renderer->render(scene);
+        renderer->setFlatGeometryShader(true);
+        const Image geometryShader = renderer->render(scene);
+        renderer->setFlatGeometryShader(false);
+        const Comparison c = compareImages(geometryShader, duplicated, Tolerance{1, 0.05, 0});
+        EXPECT_TRUE(c.passed) << toString(model) << ": " << c.summary();
+    }
+}
 
 TEST(SpecializationCache, SwitchingBackNeverRecompiles) {
     SHADELAB_REQUIRE_GL(renderer);

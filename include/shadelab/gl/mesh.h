@@ -9,7 +9,7 @@ namespace shadelab::gl {
 
 enum class MeshLayout { Smooth, Flat };
 
-// Attribute locations shared with shaders/surface.vert.
+// Attribute locations shared with shaders/surface.vert.glsl.
 inline constexpr unsigned kPositionAttribute = 0;
 inline constexpr unsigned kNormalAttribute = 1;   // smooth: vertex normal; flat: face normal
 inline constexpr unsigned kCentroidAttribute = 2; // flat only
@@ -27,5 +27,8 @@ private:
     VertexArray vao_;
     Buffer vertices_, indices_;
 };
+
+// Draws `mesh` with `program` and its uniforms as they are (for timing a program's first draw).
+void drawWith(const Program& program, const GpuMesh& mesh);
 
 } // namespace shadelab::gl

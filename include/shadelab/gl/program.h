@@ -17,6 +17,8 @@ struct ProgramVariant {
     ShadingMode shading = ShadingMode::Phong;
     LightingModel lighting = LightingModel::BlinnPhong;
     bool specialized = false;
+    // Flat shading only: shared vertices and a geometry shader instead of three vertices per face.
+    bool flatGeometryShader = false;
     // Specialized programs only:
     int directional = 0, point = 0, spot = 0; // lights of each type
     bool ambient = true;     // some light's I_a is non-zero

@@ -24,6 +24,9 @@ public:
     // and cross-checked against).
     void setSpecialize(bool specialize);
     bool specialize() const { return specialize_; }
+    // Flat shading from duplicated vertices with face data (the default) or from shared vertices with a
+    // geometry shader; the same picture, measured against each other by `shadelab bench`.
+    void setFlatGeometryShader(bool enabled) { flatGeometryShader_ = enabled; }
     // Programs compiled so far: switching back to a variant already built never recompiles.
     int programsBuilt() const { return programsBuilt_; }
 
@@ -32,6 +35,7 @@ private:
     Id program(const ProgramVariant& variant);
 
     bool specialize_ = true;
+    bool flatGeometryShader_ = false;
     int programsBuilt_ = 0;
     std::map<ProgramVariant, Program> programs_;
     std::map<std::tuple<int, VertexNormals, MeshLayout>, std::unique_ptr<GpuMesh>> meshes_;

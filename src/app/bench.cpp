@@ -1,0 +1,281 @@
+// `shadelab bench`. Frame times are GPU-synchronized (glFinish after every frame), timed per frame after a
+// warm-up, and summarized as median and 10th/90th percentiles; the figures that matter are ratios of
+// configurations measured in the same run on the same machine.
+#include "app/bench.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <functional>
+#include <map>
+#include <memory>
+#include <regex>
+
+#include <cstdlib>
+
+#include <benchmark/benchmark.h>
+#include <nlohmann/json.hpp>
+
+#include "app/bundled_scenes.h"
+#include "shadelab/atomic_file.h"
+#include "shadelab/errors.h"
+#include "shadelab/gl/loader.h"
+#include "shadelab/gl/program.h"
+#include "shadelab/gl/render_target.h"
+#include "shadelab/gl/renderer.h"
+
+namespace shadelab::app {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double percentile(std::vector<double> values, double p) {
+    std::sort(values.begin(), values.end());
+    const double index = p * double(values.size() - 1);
+    const std::size_t lo = std::size_t(index), hi = std::min(lo + 1, values.size() - 1);
+    return values[lo] + (index - double(lo)) * (values[hi] - values[lo]);
+}
+
+void setSpread(benchmark::State& state, const std::vector<double>& ms) {
+    if (ms.empty()) return;
+    state.counters["median_ms"] = percentile(ms, 0.5);
+    state.counters["p10_ms"] = percentile(ms, 0.1);
+    state.counters["p90_ms"] = percentile(ms, 0.9);
+}
+
+// One context, one renderer and one offscreen target for every GPU benchmark of the run.
+struct Gpu {
+    explicit Gpu(const BenchOptions& o)
+        : context(makeHeadlessContext(o.backend)), target(o.width, o.height), options(o) {}
+    std::unique_ptr<HeadlessContext> context;
+    gl::RenderTarget target;
+    gl::Renderer renderer;
+    BenchOptions options;
+
+    // Draws `frames` GPU-synchronized frames of `draw` after the warm-up; each iteration one frame.
+    void timeFrames(benchmark::State& state, const std::function<void()>& draw) {
+        target.bind();
+        for (int i = 0; i < options.warmupFrames; ++i) draw();
+        gl::finish();
+        std::vector<double> ms;
+        for (auto _ : state) {
+            const auto start = Clock::now();
+            draw();
+            gl::finish();
+            const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+            state.SetIterationTime(seconds);
+            ms.push_back(seconds * 1e3);
+        }
+        setSpread(state, ms);
+    }
+};
+
+struct BenchScene {
+    const char* name;
+    Scene scene;
+};
+
+std::vector<BenchScene> issueScenes(const BenchOptions& o) {
+    Scene oneLight; // DESIGN §4's default scene: one sphere, one point light
+    oneLight.objects[0].subdivisions = kAutoSubdivisions;
+    std::vector<BenchScene> scenes = {{"one-light", oneLight},
+                                      {"four-mixed-lights", bundledScene("mixed.json")},
+                                      {"grid", bundledScene("grid.json")}};
+    for (BenchScene& s : scenes) {
+        s.scene.width = o.width;
+        s.scene.height = o.height;
+    }
+    return scenes;
+}
+
+Scene withLevel(Scene scene, int level) {
+    for (SceneObject& o : scene.objects) o.subdivisions = level;
+    return scene;
+}
+
+// Scene-specialized against uber programs, fixed level 8 against auto (issue 4).
+void registerSpecializationBenchmarks(Gpu& gpu) {
+    for (const BenchScene& s : issueScenes(gpu.options)) {
+        for (const bool specialized : {false, true}) {
+            for (const int level : {8, kAutoSubdivisions}) {
+                const std::string name = std::string("frame/") + s.name + "/" +
+                                         (specialized ? "specialized" : "uber") + "/" +
+                                         (level == kAutoSubdivisions ? "auto" : "level8");
+                const Scene scene = withLevel(s.scene, level);
+                benchmark::RegisterBenchmark(name.c_str(),
+                                             [&gpu, scene, specialized](benchmark::State& state) {
+                                                 gpu.renderer.setSpecialize(specialized);
+                                                 gpu.timeFrames(state, [&] {
+                                                     gpu.renderer.render(scene, scene.width, scene.height);
+                                                 });
+                                             })
+                    ->UseManualTime()
+                    ->Iterations(gpu.options.frames)
+                    ->Unit(benchmark::kMillisecond);
+            }
+        }
+    }
+    // Flat shading: three vertices per face with face data, or shared vertices and a geometry shader.
+    for (const bool geometryShader : {false, true}) {
+        for (const int level : {6, 8}) {
+            Scene scene = withLevel(issueScenes(gpu.options)[0].scene, level);
+            scene.shading = ShadingMode::Flat;
+            const std::string name = std::string("frame/flat-layout/") +
+                                     (geometryShader ? "geometry-shader" : "duplicated") + "/level" +
+                                     std::to_string(level);
+            benchmark::RegisterBenchmark(name.c_str(),
+                                         [&gpu, scene, geometryShader](benchmark::State& state) {
+                                             gpu.renderer.setSpecialize(true);
+                                             gpu.renderer.setFlatGeometryShader(geometryShader);
+                                             gpu.timeFrames(state, [&] {
+                                                 gpu.renderer.render(scene, scene.width, scene.height);
+                                             });
+                                             gpu.renderer.setFlatGeometryShader(false);
+                                             const SphereMesh mesh = buildSphere(scene.objects[0].subdivisions);
+                                             state.counters["vertex_bytes"] =
+                                                 geometryShader ? double(smoothVertices(mesh).size() *
+                                                                             sizeof(SmoothVertex) +
+                                                                         smoothIndices(mesh).size() * 4)
+                                                                : double(flatVertices(mesh).size() *
+                                                                         sizeof(FlatVertex));
+                                         })
+                ->UseManualTime()
+                ->Iterations(gpu.options.frames)
+                ->Unit(benchmark::kMillisecond);
+        }
+    }
+    // Compile and link time of each program variant the scenes above use, uber and specialized, up to its
+    // first draw: Mesa translates to machine code (LLVM) at the first draw, not at glLinkProgram.
+    std::map<std::string, gl::ProgramVariant> variants;
+    for (const BenchScene& s : issueScenes(gpu.options))
+        for (const bool specialized : {false, true}) {
+            const gl::ProgramVariant v = gl::ProgramVariant::forScene(s.scene, specialized);
+            variants.emplace(v.name(), v);
+        }
+    for (const auto& [name, variant] : variants) {
+        benchmark::RegisterBenchmark(("compile/" + name).c_str(),
+                                     [&gpu, variant](benchmark::State& state) {
+                                         const gl::MeshLayout layout = variant.shading == ShadingMode::Flat
+                                                                           ? gl::MeshLayout::Flat
+                                                                           : gl::MeshLayout::Smooth;
+                                         const gl::GpuMesh tetrahedron(buildSphere(0), layout);
+                                         gpu.target.bind();
+                                         for (auto _ : state) {
+                                             const auto start = Clock::now();
+                                             const gl::Program program = gl::buildProgram(variant);
+                                             gl::drawWith(program, tetrahedron);
+                                             gl::finish();
+                                             state.SetIterationTime(
+                                                 std::chrono::duration<double>(Clock::now() - start).count());
+                                         }
+                                     })
+            ->UseManualTime()
+            ->Iterations(5)
+            ->Unit(benchmark::kMillisecond);
+    }
+}
+
+// Collects every run while printing the usual console table.
+class Collector : public benchmark::ConsoleReporter {
+public:
+    void ReportRuns(const std::vector<Run>& runs) override {
+        ConsoleReporter::ReportRuns(runs);
+        for (const Run& run : runs) {
+            Result& r = results[run.run_name.function_name]; // the registered name, without suffixes
+            r.meanMs = run.GetAdjustedRealTime(); // the unit is milliseconds for every benchmark here
+            for (const auto& [key, counter] : run.counters) r.counters[key] = counter.value;
+        }
+    }
+    struct Result {
+        double meanMs = 0;
+        std::map<std::string, double> counters;
+    };
+    std::map<std::string, Result> results;
+};
+
+double median(const Collector& c, const std::string& name) {
+    const auto it = c.results.find(name);
+    if (it == c.results.end()) return 0;
+    const auto m = it->second.counters.find("median_ms");
+    return m == it->second.counters.end() ? it->second.meanMs : m->second;
+}
+
+struct Ratio {
+    std::string name, numerator, denominator;
+    double value = 0;
+};
+
+std::vector<Ratio> ratios(const Collector& c, const BenchOptions& o) {
+    std::vector<Ratio> out;
+    auto add = [&](std::string name, std::string num, std::string den) {
+        const double n = median(c, num), d = median(c, den);
+        if (n > 0 && d > 0) out.push_back({std::move(name), num, den, n / d});
+    };
+    for (const BenchScene& s : issueScenes(o)) {
+        const std::string base = std::string("frame/") + s.name + "/";
+        add(std::string(s.name) + ": uber / specialized (level 8)", base + "uber/level8", base + "specialized/level8");
+        add(std::string(s.name) + ": uber / specialized (auto)", base + "uber/auto", base + "specialized/auto");
+        add(std::string(s.name) + ": level 8 / auto (specialized)", base + "specialized/level8",
+            base + "specialized/auto");
+    }
+    for (const char* level : {"level6", "level8"})
+        add(std::string("flat ") + level + ": geometry shader / duplicated vertices",
+            std::string("frame/flat-layout/geometry-shader/") + level, std::string("frame/flat-layout/duplicated/") + level);
+    return out;
+}
+
+void writeJson(const Collector& c, const std::vector<Ratio>& rs, const BenchOptions& o, const std::string& renderer) {
+    nlohmann::json results = nlohmann::json::object();
+    for (const auto& [name, r] : c.results) {
+        nlohmann::json entry = {{"mean_ms", r.meanMs}};
+        for (const auto& [key, value] : r.counters) entry[key] = value;
+        results[name] = entry;
+    }
+    nlohmann::json ratioList = nlohmann::json::array();
+    for (const Ratio& r : rs)
+        ratioList.push_back({{"name", r.name}, {"numerator", r.numerator}, {"denominator", r.denominator},
+                             {"ratio", r.value}});
+    const nlohmann::json root = {{"renderer", renderer},
+                                 {"size", {o.width, o.height}},
+                                 {"frames", o.frames},
+                                 {"warmup_frames", o.warmupFrames},
+                                 {"results", results},
+                                 {"ratios", ratioList}};
+    const std::string text = root.dump(2) + "\n";
+    writeFileAtomically(*o.json, "JSON", [&](std::FILE* file) {
+        if (std::fwrite(text.data(), 1, text.size(), file) != text.size())
+            failWrite("JSON", *o.json, "short write");
+    });
+}
+
+} // namespace
+
+int runBench(const BenchOptions& options) {
+    // Compile times must be compiles: Mesa's on-disk shader cache would turn repeats into look-ups.
+    ::setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
+    Gpu gpu(options);
+    const std::string renderer = gl::rendererString();
+    std::printf("shadelab bench: %s, %dx%d, %d frames after %d warm-up frames per configuration\n",
+                renderer.c_str(), options.width, options.height, options.frames, options.warmupFrames);
+    registerSpecializationBenchmarks(gpu);
+
+    std::string filterFlag = "--benchmark_filter=" + (options.filter.empty() ? std::string(".") : options.filter);
+    std::string program = "shadelab-bench";
+    char* argv[] = {program.data(), filterFlag.data(), nullptr};
+    int argc = 2;
+    benchmark::Initialize(&argc, argv);
+    Collector collector;
+    benchmark::RunSpecifiedBenchmarks(&collector);
+    benchmark::ClearRegisteredBenchmarks();
+
+    const std::vector<Ratio> rs = ratios(collector, options);
+    std::printf("\nratios of medians, measured in this run:\n");
+    for (const Ratio& r : rs) std::printf("  %-48s %6.2f\n", r.name.c_str(), r.value);
+    if (options.json) {
+        writeJson(collector, rs, options, renderer);
+        std::printf("figures written to %s\n", options.json->c_str());
+    }
+    return kExitOk;
+}
+
+} // namespace shadelab::app
