@@ -113,6 +113,23 @@ glm::dmat4 perspectiveClipFromView(const ViewVolume& vv) {
     return m;
 }
 
+glm::dmat4 reversedPerspectiveClipFromView(const ViewVolume& vv, bool infiniteFar) {
+    glm::dmat4 m = perspectiveClipFromView(vv); // x, y and w rows as in the standard matrix
+    // z_clip = A·w + B with w = −z: depth = A + B/(−z), 1 at −near, 0 at −far (or at infinity).
+    const double b = infiniteFar ? vv.near : vv.near * vv.far / (vv.far - vv.near);
+    const double a = infiniteFar ? 0.0 : -vv.near / (vv.far - vv.near);
+    m[2][2] = -a; // the z column: z_clip = −a·z + b
+    m[3][2] = b;
+    return m;
+}
+
+glm::dmat4 reversedOrthographicClipFromView(const ViewVolume& vv) {
+    glm::dmat4 m = orthographicClipFromView(vv);
+    m[2][2] = 1 / (vv.far - vv.near);
+    m[3][2] = vv.far / (vv.far - vv.near);
+    return m;
+}
+
 glm::dmat3 normalMatrix(const glm::dmat4& viewFromObject) {
     const glm::dmat3 m(viewFromObject);
     // Cofactor matrix: its columns are cross products of M's columns; equals det(M)·M⁻ᵀ.

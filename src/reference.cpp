@@ -113,6 +113,9 @@ void writePixel(float* pixel, const glm::dvec3& color, float alpha) {
 ReferenceImage renderReference(const Scene& scene) {
     validateScene(scene);
     const SceneView view = sceneView(scene);
+    // With the far plane at infinity the rasterizer clips nothing behind; neither does the reference.
+    const double far = scene.depth == DepthMode::ReversedInfinite ? std::numeric_limits<double>::infinity()
+                                                                  : view.volume.far;
 
     std::vector<ObjectInView> objects;
     objects.reserve(scene.objects.size());
@@ -133,7 +136,7 @@ ReferenceImage renderReference(const Scene& scene) {
             rays.ray(i, j, originView, directionView);
             Hit hit;
             for (std::size_t k = 0; k < objects.size(); ++k)
-                intersect(objects[k], int(k), originView, directionView, view.volume.near, view.volume.far,
+                intersect(objects[k], int(k), originView, directionView, view.volume.near, far,
                           hit);
 
             float* pixel = out.color.pixel(i, j);

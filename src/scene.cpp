@@ -39,6 +39,7 @@ constexpr std::size_t kMaxQuotedChars = 40;
 
 constexpr std::array kProjectionTypes = {ProjectionType::Perspective, ProjectionType::Frustum,
                                          ProjectionType::Orthographic};
+constexpr std::array kDepthModes = {DepthMode::Standard, DepthMode::Reversed, DepthMode::ReversedInfinite};
 constexpr std::array kLightTypes = {LightType::Ambient, LightType::Directional, LightType::Point,
                                     LightType::Spot};
 
@@ -637,8 +638,9 @@ std::vector<Light> readLights(const Json& json) {
 }
 
 Scene readScene(const Json& root) {
-    static constexpr std::array<std::string_view, 9> kKeys = {
-        "image", "camera", "projection", "shading", "lighting", "toon_bands", "tolerance_px", "objects", "lights"};
+    static constexpr std::array<std::string_view, 10> kKeys = {
+        "image",      "camera",       "projection", "shading", "lighting",
+        "toon_bands", "tolerance_px", "depth",      "objects", "lights"};
     requireObject(root, "");
     checkKeys(root, "", kKeys);
     Scene scene;
@@ -653,6 +655,7 @@ Scene readScene(const Json& root) {
     checkIntRange(scene.toonBands, kToonBandRange, "toon_bands");
     readField(root, "", "tolerance_px", scene.tolerancePx);
     checkGreater(scene.tolerancePx, 0, "tolerance_px");
+    if (const Json* depth = member(root, "depth")) scene.depth = readEnum(*depth, "depth", kDepthModes);
     if (const Json* objects = member(root, "objects")) scene.objects = readObjects(*objects);
     if (const Json* lights = member(root, "lights")) scene.lights = readLights(*lights);
     return scene;
@@ -680,6 +683,24 @@ std::string readFile(const std::filesystem::path& path) {
 }
 
 } // namespace
+
+std::string_view toString(DepthMode mode) {
+    switch (mode) {
+    case DepthMode::Standard:
+        return "standard";
+    case DepthMode::Reversed:
+        return "reversed";
+    case DepthMode::ReversedInfinite:
+        return "reversed-infinite";
+    }
+    return "unknown";
+}
+
+std::optional<DepthMode> parseDepthMode(std::string_view text) {
+    for (DepthMode mode : kDepthModes)
+        if (toString(mode) == text) return mode;
+    return std::nullopt;
+}
 
 std::string_view toString(ProjectionType type) {
     switch (type) {
@@ -774,6 +795,7 @@ std::string sceneToJson(const Scene& scene) {
         {"lighting", toString(scene.lighting)},
         {"toon_bands", scene.toonBands},
         {"tolerance_px", scene.tolerancePx},
+        {"depth", toString(scene.depth)},
         {"objects", objects},
         {"lights", lights}};
     return root.dump(2) + "\n";
@@ -826,8 +848,14 @@ SceneView sceneView(const Scene& scene) {
     } catch (const InputError& e) {
         failWithin("projection", e);
     }
-    view.clipFromView =
-        view.orthographic ? orthographicClipFromView(view.volume) : perspectiveClipFromView(view.volume);
+    view.depth = scene.depth;
+    if (scene.depth == DepthMode::Standard)
+        view.clipFromView =
+            view.orthographic ? orthographicClipFromView(view.volume) : perspectiveClipFromView(view.volume);
+    else
+        view.clipFromView = view.orthographic ? reversedOrthographicClipFromView(view.volume)
+                                              : reversedPerspectiveClipFromView(
+                                                    view.volume, scene.depth == DepthMode::ReversedInfinite);
     return view;
 }
 

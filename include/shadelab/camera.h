@@ -39,6 +39,14 @@ glm::dmat4 orthographicClipFromView(const ViewVolume& volume);
 // diag(1,1,−1,1)·glm::frustumRH_NO(l, r, b, t, near, far).
 glm::dmat4 perspectiveClipFromView(const ViewVolume& volume);
 
+// Reversed-Z for a [0, 1] clip range (glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE)): near → depth 1, far →
+// 0, so the float depth buffer's dense range near 0 meets 1/z's crowding near the far plane and the two
+// cancel: Δd ≈ 1.2e-7·d at any near/far (DESIGN §2). x and y as in the standard matrices.
+// Perspective: depth = near·(far/(−z) − 1)/(far − near); with `infiniteFar`, depth = near/(−z).
+glm::dmat4 reversedPerspectiveClipFromView(const ViewVolume& volume, bool infiniteFar);
+// Orthographic: depth = (z + far)/(far − near), linear.
+glm::dmat4 reversedOrthographicClipFromView(const ViewVolume& volume);
+
 // Normal matrix of the upper 3×3 of a model-view matrix: the cofactor matrix times sign(det), i.e.
 // (M⁻¹)ᵀ up to a positive scale. Never divides, so it stays finite for near-singular M; normals must be
 // renormalized after it.

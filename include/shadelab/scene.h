@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -16,6 +17,13 @@
 namespace shadelab {
 
 enum class ProjectionType { Perspective, Frustum, Orthographic };
+
+// "depth": standard is DESIGN §2's convention (NDC z in [−1, 1], near → +1, 24-bit depth, GL_GREATER);
+// reversed is true reversed-Z ([0, 1] clip range, near → 1, 32-bit float depth, GL_GREATER), optionally
+// with the far plane at infinity (reversed-infinite; `far` then only bounds the analytic reference).
+enum class DepthMode { Standard, Reversed, ReversedInfinite };
+std::string_view toString(DepthMode mode); // "standard" | "reversed" | "reversed-infinite"
+std::optional<DepthMode> parseDepthMode(std::string_view text);
 std::string_view toString(ProjectionType type); // "perspective" | "frustum" | "orthographic"
 
 struct Projection {
@@ -48,6 +56,7 @@ struct Scene {
     LightingModel lighting = LightingModel::BlinnPhong;
     int toonBands = kToonBands; // "toon_bands": diffuse bands of toon shading, kMinToonBands..kMaxToonBands
     double tolerancePx = 0.5;   // "tolerance_px": the silhouette error "auto" subdivision allows, > 0
+    DepthMode depth = DepthMode::Standard;
     VertexNormals vertexNormals = VertexNormals::Averaged; // not in the file format; the demo toggles it
     std::vector<SceneObject> objects{SceneObject{}};
     std::vector<Light> lights{defaultLight()};
@@ -76,6 +85,7 @@ struct SceneView {
     glm::dmat4 clipFromView;
     ViewVolume volume;
     bool orthographic = false;
+    DepthMode depth = DepthMode::Standard; // which clipFromView this is, and the depth set-up it needs
 };
 SceneView sceneView(const Scene& scene); // throws InputError for a degenerate camera or bad planes
 glm::dmat4 worldFromObject(const SceneObject& object); // translate(center)·scale(radius·scale)

@@ -63,6 +63,13 @@ Scene composeScene(const std::string& path, const SceneOverrides& o) {
         const int level = parseLevel(*o.subdivisions);
         for (SceneObject& object : scene.objects) object.subdivisions = level;
     }
+    if (o.depth) {
+        const auto mode = parseDepthMode(*o.depth);
+        if (!mode)
+            throw InputError("--depth: unknown value " + quoted(*o.depth) +
+                             "; expected one of standard, reversed, reversed-infinite");
+        scene.depth = *mode;
+    }
     if (o.tolerancePx) {
         if (!(*o.tolerancePx > 0) || !std::isfinite(*o.tolerancePx))
             throw InputError("--tolerance-px: must be a positive number of pixels, got " +

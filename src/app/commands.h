@@ -16,6 +16,7 @@ struct SceneOverrides {
     std::optional<std::string> shading, lighting, size;
     std::optional<std::string> subdivisions; // a level or "auto"
     std::optional<double> tolerancePx;
+    std::optional<std::string> depth; // standard | reversed | reversed-infinite
 };
 
 // The scene file (or the DESIGN §4 defaults when `path` is empty) with the overrides applied and the

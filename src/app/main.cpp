@@ -29,6 +29,9 @@ void addSceneFlags(CLI::App& command, app::SceneOverrides& o) {
                        "Subdivision level of every object, 0.." + std::to_string(kMaxSubdivisions) +
                            ", or auto: the smallest level whose silhouette error stays below --tolerance-px");
     command.add_option("--tolerance-px", o.tolerancePx, "Silhouette error auto subdivision allows (default 0.5)");
+    command.add_option("--depth", o.depth,
+                       "Depth mode: standard (DESIGN's [-1,1] convention), reversed (reversed-Z, 32-bit float "
+                       "depth) or reversed-infinite (reversed-Z with the far plane at infinity)");
     command.add_option("--size", o.size, "Image size WxH, e.g. 512x512 (overrides the scene)");
 }
 

@@ -49,16 +49,16 @@ struct ReportRow {
 
     // Error against renderReference(scene), from the same frame rendered into an RGBA32F target.
     double interiorMeanError = 0, interiorMaxError = 0; // |Δ| per colour channel, in 1/255
-    std::size_t interiorPixels = 0; // 2 px inside the silhouette in both the reference and the render
-    double psnrDb = 0;              // whole image, RGB, peak 1; capped at kMaxPsnrDb
-    double ssim = 0;                // whole image, luminance, Gaussian window (see measureError)
+    std::size_t interiorPixels = 0;   // 2 px inside the silhouette in both the reference and the render
+    double psnrDb = 0;                // whole image, RGB, peak 1; capped at kMaxPsnrDb
+    double ssim = 0;                  // whole image, luminance, Gaussian window (see measureError)
     std::size_t coverageMismatch = 0; // pixels covered in exactly one of the render and the reference
 
     // Geometry: summed over the objects (triangles) or the distinct meshes uploaded (vertex bytes).
     std::size_t triangles = 0;
-    std::size_t vertexBytes = 0;      // smooth: vertices + 32-bit indices; flat: 3 vertices per triangle
-    double maxRadialDeviation = 0;    // δₙ of the unit mesh (relative to the radius)
-    double maxNormalErrorDeg = 0;     // max over faces of ∠(face normal, exact normal at the centroid)
+    std::size_t vertexBytes = 0;   // smooth: vertices + 32-bit indices; flat: 3 vertices per triangle
+    double maxRadialDeviation = 0; // δₙ of the unit mesh (relative to the radius)
+    double maxNormalErrorDeg = 0;  // max over faces of ∠(face normal, exact normal at the centroid)
 };
 
 inline constexpr double kMaxPsnrDb = 100; // identical images would give +infinity
@@ -90,8 +90,8 @@ using ReportProgress = std::function<void(int done, int total, std::string_view 
 // Every shading mode × lighting model × level (options.minLevel..maxLevel, then "auto" if
 // options.includeAuto) of `scene`, rows ordered by lighting model, shading mode, level (auto last).
 // Makes `context` current and leaves it current; every GL object it creates is gone when it returns.
-std::vector<ReportRow> measureReport(HeadlessContext& context, const Scene& scene, const ReportOptions& options,
-                                     const ReportProgress& progress = {});
+std::vector<ReportRow> measureReport(HeadlessContext& context, const Scene& scene,
+                                     const ReportOptions& options, const ReportProgress& progress = {});
 
 // What the files say about the run besides the rows.
 struct ReportInfo {
@@ -105,7 +105,8 @@ struct ReportInfo {
 
 // Each written atomically; RuntimeError naming the path on failure.
 void writeReportCsv(const std::vector<ReportRow>& rows, const std::filesystem::path& path);
-void writeReportJson(const std::vector<ReportRow>& rows, const ReportInfo& info, const std::filesystem::path& path);
+void writeReportJson(const std::vector<ReportRow>& rows, const ReportInfo& info,
+                     const std::filesystem::path& path);
 // Writes dir/report.gp (the gnuplot script, data inline) and runs gnuplot on it into dir/report.png.
 // RuntimeError naming gnuplot if it is not on PATH or fails.
 void plotReport(const std::vector<ReportRow>& rows, const ReportInfo& info, const std::filesystem::path& dir);

@@ -51,7 +51,7 @@ int HeadlessRenderer::programsBuilt() const { return renderer_->programsBuilt();
 
 Image HeadlessRenderer::render(const Scene& scene) {
     context_->makeCurrent();
-    const gl::RenderTarget target(scene.width, scene.height, gl::ColorFormat::Rgba8);
+    const gl::RenderTarget target(scene.width, scene.height, gl::ColorFormat::Rgba8, gl::depthFormatFor(scene.depth));
     target.bind();
     renderer_->render(scene, scene.width, scene.height);
     return target.readRgba8();
@@ -59,7 +59,8 @@ Image HeadlessRenderer::render(const Scene& scene) {
 
 ImageF HeadlessRenderer::renderFloat(const Scene& scene) {
     context_->makeCurrent();
-    const gl::RenderTarget target(scene.width, scene.height, gl::ColorFormat::Rgba32F);
+    const gl::RenderTarget target(scene.width, scene.height, gl::ColorFormat::Rgba32F,
+                                  gl::depthFormatFor(scene.depth));
     target.bind();
     renderer_->render(scene, scene.width, scene.height);
     return target.readFloat();

@@ -42,14 +42,19 @@ void flipRows(std::vector<T>& pixels, int width, int height) {
 
 } // namespace
 
-RenderTarget::RenderTarget(int width, int height, ColorFormat format)
+DepthFormat depthFormatFor(DepthMode mode) {
+    return mode == DepthMode::Standard ? DepthFormat::Depth24 : DepthFormat::Depth32F;
+}
+
+RenderTarget::RenderTarget(int width, int height, ColorFormat format, DepthFormat depth)
     : width_(width), height_(height), format_(format) {
     checkSize(width, height);
     Id fbo = 0;
     glGenFramebuffers(1, &fbo);
     fbo_ = Framebuffer(fbo);
     color_ = Renderbuffer(genRenderbuffer(format == ColorFormat::Rgba8 ? GL_RGBA8 : GL_RGBA32F, width, height));
-    depth_ = Renderbuffer(genRenderbuffer(GL_DEPTH_COMPONENT24, width, height));
+    depth_ = Renderbuffer(genRenderbuffer(depth == DepthFormat::Depth24 ? GL_DEPTH_COMPONENT24 : GL_DEPTH_COMPONENT32F,
+                                          width, height));
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_.get());
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.get());

@@ -8,6 +8,7 @@
 
 #include <glad/gl.h>
 
+#include "shadelab/errors.h"
 #include "shadelab/gl/loader.h"
 #include "shadelab/subdivision.h"
 
@@ -102,6 +103,17 @@ void setTransforms(GLuint program, const glm::dmat4& clipFromView, const glm::dm
                        glm::value_ptr(normalViewFromObject));
 }
 
+void setClipRange(DepthMode mode) {
+    const bool zeroToOne = mode != DepthMode::Standard;
+    if (!GLAD_GL_VERSION_4_5) {
+        if (zeroToOne)
+            throw RuntimeError("depth " + std::string(toString(mode)) +
+                               ": needs glClipControl (OpenGL 4.5), which this context lacks; use depth standard");
+        return; // the default range is the standard one
+    }
+    glClipControl(GL_LOWER_LEFT, zeroToOne ? GL_ZERO_TO_ONE : GL_NEGATIVE_ONE_TO_ONE);
+}
+
 } // namespace
 
 Renderer::Renderer() = default;
@@ -134,7 +146,9 @@ void Renderer::render(const Scene& scene, int width, int height) {
 
     glViewport(0, 0, width, height);
     glClearColor(float(scene.background.x), float(scene.background.y), float(scene.background.z), 0.0f);
-    // DESIGN §2: near maps to NDC z = +1, so the nearer surface has the greater depth.
+    // DESIGN §2: near maps to NDC z = +1 (standard) or clip depth 1 (reversed), so in both modes the nearer
+    // surface has the greater depth. Reversed-Z also needs the [0, 1] clip range.
+    setClipRange(view.depth);
     glClearDepth(0.0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);

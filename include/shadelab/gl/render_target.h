@@ -5,15 +5,20 @@
 
 #include "shadelab/gl/handles.h"
 #include "shadelab/image.h"
+#include "shadelab/scene.h"
 
 namespace shadelab::gl {
 
 enum class ColorFormat { Rgba8, Rgba32F };
+// Depth24 for the standard depth mode; Depth32F for reversed-Z, where float depth's precision near 0
+// meets the far plane (DESIGN §2).
+enum class DepthFormat { Depth24, Depth32F };
 
 class RenderTarget {
 public:
     // Throws InputError if the size exceeds what the context allows, RuntimeError if incomplete.
-    RenderTarget(int width, int height, ColorFormat format = ColorFormat::Rgba8);
+    RenderTarget(int width, int height, ColorFormat format = ColorFormat::Rgba8,
+                 DepthFormat depth = DepthFormat::Depth24);
     void bind() const;
     Image readRgba8() const;
     ImageF readFloat() const;
@@ -26,6 +31,9 @@ private:
     Framebuffer fbo_;
     Renderbuffer color_, depth_;
 };
+
+// The depth attachment a scene's depth mode asks for.
+DepthFormat depthFormatFor(DepthMode mode);
 
 // Binds the window's own framebuffer again after drawing offscreen.
 void bindDefaultFramebuffer();

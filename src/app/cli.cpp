@@ -1,0 +1,143 @@
+// The CLI11 setup of shadelab's command line, moved out of main.cpp's run() so it can be fuzzed without
+// rendering (fuzz/cli_fuzzer.cpp). Output that CLI11 would print goes into the result or the InputError.
+#include "app/cli.h"
+
+#include <filesystem>
+#include <sstream>
+#include <string_view>
+
+#include <CLI/CLI.hpp>
+
+#include "app/demo_state.h"
+
+namespace shadelab::app {
+namespace {
+
+std::string joined(std::string_view a, std::string_view b, std::string_view c = {}, std::string_view d = {}) {
+    std::string out(a);
+    for (std::string_view s : {b, c, d})
+        if (!s.empty()) out.append(", ").append(s);
+    return out;
+}
+
+void addSceneFlags(CLI::App& command, SceneOverrides& o) {
+    command.add_option("--shading", o.shading,
+                       "Shading mode: " + joined("flat", "gouraud", "phong", "toon") + " (overrides the scene)");
+    command.add_option("--lighting", o.lighting, "Lighting model: phong, blinn-phong (overrides the scene)");
+    command.add_option("--subdivisions", o.subdivisions,
+                       "Subdivision level of every object, 0.." + std::to_string(kMaxSubdivisions) +
+                           ", or auto: the smallest level whose silhouette error stays below --tolerance-px");
+    command.add_option("--tolerance-px", o.tolerancePx, "Silhouette error auto subdivision allows (default 0.5)");
+    command.add_option("--size", o.size, "Image size WxH, e.g. 512x512 (overrides the scene)");
+}
+
+std::string withoutTrailingNewlines(std::string text) {
+    while (!text.empty() && text.back() == '\n') text.pop_back();
+    return text;
+}
+
+} // namespace
+
+ParsedCommand parseCommandLine(int argc, char** argv) {
+    CLI::App cli{"shadelab: flat, Gouraud, Phong and toon shading under Phong and Blinn-Phong lighting, on a "
+                 "sphere subdivided from a tetrahedron.\nWithout a subcommand: the demo window (or, with no "
+                 "display, the showcase PNG).",
+                 "shadelab"};
+    cli.set_help_all_flag("--help-all", "Help for every subcommand");
+    std::string demoScene;
+    DemoOptions demo;
+    SceneOverrides demoFlags;
+    cli.add_option("scene", demoScene, "Scene file (JSON) for the demo; the defaults if omitted");
+    addSceneFlags(cli, demoFlags);
+    cli.add_option("--showcase-out", demo.showcaseOut, "Where the showcase goes when there is no display")
+        ->capture_default_str();
+    cli.add_option("--screenshot-dir", demo.screenshotDir, "Where S saves shadelab-NNN.png and .json")
+        ->capture_default_str()
+        ->check(CLI::ExistingDirectory);
+    cli.add_flag("--hide-panel", demo.hidePanel, "Start with the control panel hidden (C shows it)");
+    cli.add_flag("--gl-debug", demo.glDebug, "Ask for a KHR_debug context and print every GL message");
+    cli.footer("Demo keys:\n" + keyHelpText());
+
+    SceneOverrides renderFlags;
+    std::string renderScene, renderOut, backendName = "egl";
+    CLI::App* render = cli.add_subcommand("render", "Render a scene headless to a PNG");
+    render->add_option("scene", renderScene, "Scene file (JSON); the defaults of DESIGN §4 if omitted");
+    addSceneFlags(*render, renderFlags);
+    render->add_option("--backend", backendName, "Headless context: egl or osmesa")->capture_default_str();
+    bool specialize = true;
+    render
+        ->add_option("--specialize", specialize,
+                     "on: programs specialized to the scene's lights and terms; off: the uber program")
+        ->transform(CLI::IsMember({"on", "off", "true", "false", "1", "0"}, CLI::ignore_case))
+        ->capture_default_str();
+    render->add_option("--out", renderOut, "Output PNG")->required();
+
+    std::string referenceScene, referenceOut;
+    SceneOverrides referenceFlags;
+    CLI::App* reference = cli.add_subcommand("reference", "Ray-cast the exact spheres on the CPU to a PNG");
+    reference->add_option("scene", referenceScene, "Scene file (JSON)");
+    addSceneFlags(*reference, referenceFlags);
+    reference->add_option("--out", referenceOut, "Output PNG")->required();
+
+    BenchOptions bench;
+    std::string benchBackend = "egl", benchSize = "800x600", benchJson;
+    CLI::App* benchCommand = cli.add_subcommand("bench", "Benchmarks, reported as ratios measured in one run");
+    benchCommand->add_option("--backend", benchBackend, "Headless context: egl or osmesa")->capture_default_str();
+    benchCommand->add_option("--size", benchSize, "Frame size WxH")->capture_default_str();
+    benchCommand->add_option("--frames", bench.frames, "Timed frames per configuration")
+        ->capture_default_str()
+        ->check(CLI::Range(3, 100000));
+    benchCommand->add_option("--warmup", bench.warmupFrames, "Untimed frames first")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 1000));
+    benchCommand->add_option("--filter", bench.filter, "Regular expression: run only matching benchmarks");
+    benchCommand->add_option("--json", benchJson, "Also write every figure and ratio to this JSON file");
+
+    ParsedCommand command;
+    try {
+        cli.parse(argc, argv);
+    } catch (const CLI::Success& e) {
+        std::ostringstream out, err;
+        command.kind = ParsedCommand::Kind::Exit;
+        command.exitCode = cli.exit(e, out, err);
+        command.text = out.str();
+        return command;
+    } catch (const CLI::ParseError& e) {
+        // A mistyped subcommand lands in the demo's scene argument; name it rather than the flags after it.
+        // The error_code overload: a name too long to stat is not a scene file either, not a run-time error.
+        std::error_code ec;
+        if (!demoScene.empty() && !std::filesystem::exists(demoScene, ec))
+            throw InputError("\"" + demoScene + "\" is neither a subcommand (render, reference) nor a scene file");
+        std::ostringstream out, err;
+        cli.exit(e, out, err); // CLI11's message naming the argument, and its "Run with --help" hint
+        throw InputError(withoutTrailingNewlines(err.str()));
+    }
+
+    if (*render) {
+        command.kind = ParsedCommand::Kind::Render;
+        command.scene = renderScene;
+        command.overrides = renderFlags;
+        command.out = renderOut;
+        command.backend = backendName;
+        command.specialize = specialize;
+    } else if (*benchCommand) {
+        command.kind = ParsedCommand::Kind::Bench;
+        command.bench = bench;
+        command.backend = benchBackend;
+        command.benchSize = benchSize;
+        command.benchJson = benchJson;
+    } else if (*reference) {
+        command.kind = ParsedCommand::Kind::Reference;
+        command.scene = referenceScene;
+        command.overrides = referenceFlags;
+        command.out = referenceOut;
+    } else {
+        command.kind = ParsedCommand::Kind::Demo;
+        command.scene = demoScene;
+        command.overrides = demoFlags;
+        command.demo = demo;
+    }
+    return command;
+}
+
+} // namespace shadelab::app

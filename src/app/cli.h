@@ -1,0 +1,36 @@
+// shadelab's command line parsed but not run (DESIGN §5): main.cpp runs what parseCommandLine returns, and
+// fuzz/cli_fuzzer.cpp feeds it hostile argument vectors. Parsing reads no scene file, makes no GL context
+// and writes nothing; the values it returns are checked by the entry points of commands.h.
+#pragma once
+
+#include <string>
+
+#include "app/bench.h"
+#include "app/commands.h"
+#include "shadelab/errors.h"
+
+namespace shadelab::app {
+
+struct ParsedCommand {
+    enum class Kind { Exit, Demo, Render, Reference, Bench };
+    Kind kind = Kind::Demo;
+
+    // Kind::Exit (--help, --help-all): print `text` to stdout and exit with `exitCode`.
+    std::string text;
+    int exitCode = kExitOk;
+
+    std::string scene;            // Demo, Render, Reference: the scene file; empty for the defaults
+    SceneOverrides overrides;     // Demo, Render, Reference
+    std::string out;              // Render, Reference: --out
+    std::string backend = "egl";  // Render, Bench: --backend, checked by backendFromArgument
+    bool specialize = true;       // Render: --specialize
+    DemoOptions demo;             // Demo
+    BenchOptions bench;           // Bench: frames, warm-up and filter; size, backend and JSON are below
+    std::string benchSize = "800x600", benchJson; // Bench: --size (checked by composeSize), --json
+};
+
+// Throws InputError for anything CLI11 rejects, with CLI11's message (naming the argument) and its
+// "Run with --help" hint; a mistyped subcommand is named as such.
+ParsedCommand parseCommandLine(int argc, char** argv);
+
+} // namespace shadelab::app
