@@ -16,6 +16,7 @@
 #include <benchmark/benchmark.h>
 #include <nlohmann/json.hpp>
 
+#include "app/bench_gpu.h"
 #include "app/bundled_scenes.h"
 #include "shadelab/atomic_file.h"
 #include "shadelab/errors.h"
@@ -28,47 +29,6 @@ namespace shadelab::app {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double percentile(std::vector<double> values, double p) {
-    std::sort(values.begin(), values.end());
-    const double index = p * double(values.size() - 1);
-    const std::size_t lo = std::size_t(index), hi = std::min(lo + 1, values.size() - 1);
-    return values[lo] + (index - double(lo)) * (values[hi] - values[lo]);
-}
-
-void setSpread(benchmark::State& state, const std::vector<double>& ms) {
-    if (ms.empty()) return;
-    state.counters["median_ms"] = percentile(ms, 0.5);
-    state.counters["p10_ms"] = percentile(ms, 0.1);
-    state.counters["p90_ms"] = percentile(ms, 0.9);
-}
-
-// One context, one renderer and one offscreen target for every GPU benchmark of the run.
-struct Gpu {
-    explicit Gpu(const BenchOptions& o)
-        : context(makeHeadlessContext(o.backend)), target(o.width, o.height), options(o) {}
-    std::unique_ptr<HeadlessContext> context;
-    gl::RenderTarget target;
-    gl::Renderer renderer;
-    BenchOptions options;
-
-    // Draws `frames` GPU-synchronized frames of `draw` after the warm-up; each iteration one frame.
-    void timeFrames(benchmark::State& state, const std::function<void()>& draw) {
-        target.bind();
-        for (int i = 0; i < options.warmupFrames; ++i) draw();
-        gl::finish();
-        std::vector<double> ms;
-        for (auto _ : state) {
-            const auto start = Clock::now();
-            draw();
-            gl::finish();
-            const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-            state.SetIterationTime(seconds);
-            ms.push_back(seconds * 1e3);
-        }
-        setSpread(state, ms);
-    }
-};
 
 struct BenchScene {
     const char* name;
@@ -93,8 +53,12 @@ Scene withLevel(Scene scene, int level) {
     return scene;
 }
 
-// Scene-specialized against uber programs, fixed level 8 against auto (issue 4).
-void registerSpecializationBenchmarks(Gpu& gpu) {
+} // namespace
+
+// Scene-specialized against uber programs, fixed level 8 against auto, the two flat layouts, and the
+// compile time of each program variant (issue 4).
+std::vector<RatioSpec> registerSpecializationBenchmarks(Gpu& gpu) {
+    std::vector<RatioSpec> ratios;
     for (const BenchScene& s : issueScenes(gpu.options)) {
         for (const bool specialized : {false, true}) {
             for (const int level : {8, kAutoSubdivisions}) {
@@ -173,7 +137,24 @@ void registerSpecializationBenchmarks(Gpu& gpu) {
             ->Iterations(5)
             ->Unit(benchmark::kMillisecond);
     }
+
+    for (const BenchScene& s : issueScenes(gpu.options)) {
+        const std::string base = std::string("frame/") + s.name + "/";
+        ratios.push_back({std::string(s.name) + ": uber / specialized (level 8)", base + "uber/level8",
+                          base + "specialized/level8"});
+        ratios.push_back({std::string(s.name) + ": uber / specialized (auto)", base + "uber/auto",
+                          base + "specialized/auto"});
+        ratios.push_back({std::string(s.name) + ": level 8 / auto (specialized)", base + "specialized/level8",
+                          base + "specialized/auto"});
+    }
+    for (const char* level : {"level6", "level8"})
+        ratios.push_back({std::string("flat ") + level + ": geometry shader / duplicated vertices",
+                          std::string("frame/flat-layout/geometry-shader/") + level,
+                          std::string("frame/flat-layout/duplicated/") + level});
+    return ratios;
 }
+
+namespace {
 
 // Collects every run while printing the usual console table.
 class Collector : public benchmark::ConsoleReporter {
@@ -205,22 +186,12 @@ struct Ratio {
     double value = 0;
 };
 
-std::vector<Ratio> ratios(const Collector& c, const BenchOptions& o) {
+std::vector<Ratio> measuredRatios(const Collector& c, const std::vector<RatioSpec>& specs) {
     std::vector<Ratio> out;
-    auto add = [&](std::string name, std::string num, std::string den) {
-        const double n = median(c, num), d = median(c, den);
-        if (n > 0 && d > 0) out.push_back({std::move(name), num, den, n / d});
-    };
-    for (const BenchScene& s : issueScenes(o)) {
-        const std::string base = std::string("frame/") + s.name + "/";
-        add(std::string(s.name) + ": uber / specialized (level 8)", base + "uber/level8", base + "specialized/level8");
-        add(std::string(s.name) + ": uber / specialized (auto)", base + "uber/auto", base + "specialized/auto");
-        add(std::string(s.name) + ": level 8 / auto (specialized)", base + "specialized/level8",
-            base + "specialized/auto");
+    for (const RatioSpec& spec : specs) {
+        const double n = median(c, spec.numerator), d = median(c, spec.denominator);
+        if (n > 0 && d > 0) out.push_back({spec.name, spec.numerator, spec.denominator, n / d});
     }
-    for (const char* level : {"level6", "level8"})
-        add(std::string("flat ") + level + ": geometry shader / duplicated vertices",
-            std::string("frame/flat-layout/geometry-shader/") + level, std::string("frame/flat-layout/duplicated/") + level);
     return out;
 }
 
@@ -257,7 +228,7 @@ int runBench(const BenchOptions& options) {
     const std::string renderer = gl::rendererString();
     std::printf("shadelab bench: %s, %dx%d, %d frames after %d warm-up frames per configuration\n",
                 renderer.c_str(), options.width, options.height, options.frames, options.warmupFrames);
-    registerSpecializationBenchmarks(gpu);
+    std::vector<RatioSpec> specs = registerSpecializationBenchmarks(gpu);
 
     std::string filterFlag = "--benchmark_filter=" + (options.filter.empty() ? std::string(".") : options.filter);
     std::string program = "shadelab-bench";
@@ -268,7 +239,7 @@ int runBench(const BenchOptions& options) {
     benchmark::RunSpecifiedBenchmarks(&collector);
     benchmark::ClearRegisteredBenchmarks();
 
-    const std::vector<Ratio> rs = ratios(collector, options);
+    const std::vector<Ratio> rs = measuredRatios(collector, specs);
     std::printf("\nratios of medians, measured in this run:\n");
     for (const Ratio& r : rs) std::printf("  %-48s %6.2f\n", r.name.c_str(), r.value);
     if (options.json) {
