@@ -2,8 +2,8 @@
 
 #include <cmath>
 #include <numbers>
-#include <utility>
 #include <sstream>
+#include <utility>
 
 #include "shadelab/errors.h"
 
@@ -16,7 +16,9 @@ std::string str(const glm::dvec3& v) {
     return out.str();
 }
 
-bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finite(const glm::dvec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 } // namespace
 

@@ -62,10 +62,14 @@ double specular(const SurfacePoint& p, const glm::dvec3& l, double lDotN, double
 
 std::string_view toString(ShadingMode mode) {
     switch (mode) {
-    case ShadingMode::Flat: return "flat";
-    case ShadingMode::Gouraud: return "gouraud";
-    case ShadingMode::Phong: return "phong";
-    case ShadingMode::Toon: return "toon";
+    case ShadingMode::Flat:
+        return "flat";
+    case ShadingMode::Gouraud:
+        return "gouraud";
+    case ShadingMode::Phong:
+        return "phong";
+    case ShadingMode::Toon:
+        return "toon";
     }
     return "?";
 }
@@ -76,19 +80,27 @@ std::string_view toString(LightingModel model) {
 
 std::string_view toString(LightType type) {
     switch (type) {
-    case LightType::Ambient: return "ambient";
-    case LightType::Directional: return "directional";
-    case LightType::Point: return "point";
-    case LightType::Spot: return "spot";
+    case LightType::Ambient:
+        return "ambient";
+    case LightType::Directional:
+        return "directional";
+    case LightType::Point:
+        return "point";
+    case LightType::Spot:
+        return "spot";
     }
     return "?";
 }
 
-std::optional<ShadingMode> parseShadingMode(std::string_view text) { return parseEnum(text, kShadingModes); }
+std::optional<ShadingMode> parseShadingMode(std::string_view text) {
+    return parseEnum(text, kShadingModes);
+}
 std::optional<LightingModel> parseLightingModel(std::string_view text) {
     return parseEnum(text, kLightingModels);
 }
-std::optional<LightType> parseLightType(std::string_view text) { return parseEnum(text, kLightTypes); }
+std::optional<LightType> parseLightType(std::string_view text) {
+    return parseEnum(text, kLightTypes);
+}
 
 Light transformLight(const Light& light, const glm::dmat4& m) {
     Light out = light;
@@ -121,7 +133,8 @@ glm::dvec3 shade(const SurfacePoint& p, const Material& material, std::span<cons
             diffuse = std::ceil(diffuse * options.toonBands) / options.toonBands;
             spec = spec > kToonHighlight ? 1.0 : 0.0;
         }
-        color += factor * (material.diffuse * light.diffuse * diffuse + material.specular * light.specular * spec);
+        color +=
+            factor * (material.diffuse * light.diffuse * diffuse + material.specular * light.specular * spec);
     }
     return color;
 }

@@ -136,8 +136,7 @@ ReferenceImage renderReference(const Scene& scene) {
             rays.ray(i, j, originView, directionView);
             Hit hit;
             for (std::size_t k = 0; k < objects.size(); ++k)
-                intersect(objects[k], int(k), originView, directionView, view.volume.near, far,
-                          hit);
+                intersect(objects[k], int(k), originView, directionView, view.volume.near, far, hit);
 
             float* pixel = out.color.pixel(i, j);
             if (hit.object < 0) {

@@ -39,6 +39,7 @@ constexpr std::size_t kMaxQuotedChars = 40;
 
 constexpr std::array kProjectionTypes = {ProjectionType::Perspective, ProjectionType::Frustum,
                                          ProjectionType::Orthographic};
+constexpr std::array kVertexNormals = {VertexNormals::Averaged, VertexNormals::Exact};
 constexpr std::array kDepthModes = {DepthMode::Standard, DepthMode::Reversed, DepthMode::ReversedInfinite};
 constexpr std::array kLightTypes = {LightType::Ambient, LightType::Directional, LightType::Point,
                                     LightType::Spot};
@@ -561,7 +562,8 @@ SceneObject readObject(const Json& json, const std::string& path) {
     } else {
         readIntField(json, path, "subdivisions", kSubdivisionRange, object.subdivisions);
         // In a file "auto" is spelled out; kAutoSubdivisions is only the in-memory sentinel.
-        if (object.subdivisions < 0) checkIntRange(object.subdivisions, kSubdivisionRange, keyPath(path, "subdivisions"));
+        if (object.subdivisions < 0)
+            checkIntRange(object.subdivisions, kSubdivisionRange, keyPath(path, "subdivisions"));
     }
     if (const Json* material = member(json, "material"))
         object.material = readMaterial(*material, keyPath(path, "material"));
@@ -638,9 +640,9 @@ std::vector<Light> readLights(const Json& json) {
 }
 
 Scene readScene(const Json& root) {
-    static constexpr std::array<std::string_view, 10> kKeys = {
-        "image",      "camera",       "projection", "shading", "lighting",
-        "toon_bands", "tolerance_px", "depth",      "objects", "lights"};
+    static constexpr std::array<std::string_view, 11> kKeys = {
+        "image",        "camera", "projection",     "shading", "lighting", "toon_bands",
+        "tolerance_px", "depth",  "vertex_normals", "objects", "lights"};
     requireObject(root, "");
     checkKeys(root, "", kKeys);
     Scene scene;
@@ -656,6 +658,8 @@ Scene readScene(const Json& root) {
     readField(root, "", "tolerance_px", scene.tolerancePx);
     checkGreater(scene.tolerancePx, 0, "tolerance_px");
     if (const Json* depth = member(root, "depth")) scene.depth = readEnum(*depth, "depth", kDepthModes);
+    if (const Json* normals = member(root, "vertex_normals"))
+        scene.vertexNormals = readEnum(*normals, "vertex_normals", kVertexNormals);
     if (const Json* objects = member(root, "objects")) scene.objects = readObjects(*objects);
     if (const Json* lights = member(root, "lights")) scene.lights = readLights(*lights);
     return scene;
@@ -735,7 +739,9 @@ Scene parseScene(std::string_view jsonText, std::string_view source) {
 
 namespace {
 
-Json toJson(const glm::dvec3& v) { return Json::array({v.x, v.y, v.z}); }
+Json toJson(const glm::dvec3& v) {
+    return Json::array({v.x, v.y, v.z});
+}
 
 Json toJson(const Projection& p) {
     Json json = {{"type", toString(p.type)}, {"near", p.near}, {"far", p.far}};
@@ -788,7 +794,8 @@ std::string sceneToJson(const Scene& scene) {
     for (const SceneObject& o : scene.objects) objects.push_back(toJson(o));
     for (const Light& l : scene.lights) lights.push_back(toJson(l));
     const Json root = {
-        {"image", {{"width", scene.width}, {"height", scene.height}, {"background", toJson(scene.background)}}},
+        {"image",
+         {{"width", scene.width}, {"height", scene.height}, {"background", toJson(scene.background)}}},
         {"camera", {{"eye", toJson(scene.eye)}, {"target", toJson(scene.target)}, {"up", toJson(scene.up)}}},
         {"projection", toJson(scene.projection)},
         {"shading", toString(scene.shading)},
@@ -796,6 +803,7 @@ std::string sceneToJson(const Scene& scene) {
         {"toon_bands", scene.toonBands},
         {"tolerance_px", scene.tolerancePx},
         {"depth", toString(scene.depth)},
+        {"vertex_normals", toString(scene.vertexNormals)},
         {"objects", objects},
         {"lights", lights}};
     return root.dump(2) + "\n";
@@ -853,9 +861,10 @@ SceneView sceneView(const Scene& scene) {
         view.clipFromView =
             view.orthographic ? orthographicClipFromView(view.volume) : perspectiveClipFromView(view.volume);
     else
-        view.clipFromView = view.orthographic ? reversedOrthographicClipFromView(view.volume)
-                                              : reversedPerspectiveClipFromView(
-                                                    view.volume, scene.depth == DepthMode::ReversedInfinite);
+        view.clipFromView =
+            view.orthographic
+                ? reversedOrthographicClipFromView(view.volume)
+                : reversedPerspectiveClipFromView(view.volume, scene.depth == DepthMode::ReversedInfinite);
     return view;
 }
 

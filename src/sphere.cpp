@@ -20,8 +20,8 @@ const std::array<glm::dvec3, 4> kTetrahedron = {
     glm::dvec3{-kSqrt6 / 3, -kSqrt2 / 3, -1.0 / 3},
     glm::dvec3{kSqrt6 / 3, -kSqrt2 / 3, -1.0 / 3},
 };
-constexpr std::array<glm::uvec3, 4> kTetrahedronFaces = {
-    glm::uvec3{3, 2, 1}, glm::uvec3{0, 1, 2}, glm::uvec3{0, 3, 1}, glm::uvec3{0, 2, 3}};
+constexpr std::array<glm::uvec3, 4> kTetrahedronFaces = {glm::uvec3{3, 2, 1}, glm::uvec3{0, 1, 2},
+                                                         glm::uvec3{0, 3, 1}, glm::uvec3{0, 2, 3}};
 
 // The edge-midpoint map: each edge's midpoint vertex is made once and shared by both faces of the edge.
 class MidpointCache {
@@ -50,8 +50,8 @@ double memoryBytes(int level) {
     const double f = std::ldexp(4.0, 2 * level), v = std::ldexp(2.0, 2 * level) + 2;
     const double cpu = v * 2 * sizeof(glm::dvec3) + f * (sizeof(glm::uvec3) + sizeof(glm::dvec3));
     const double edgeMap = 6 * (f / 4) * (sizeof(std::uint64_t) + sizeof(std::uint32_t) + 16);
-    const double gpuReady = std::max(v * sizeof(SmoothVertex) + f * 3 * sizeof(std::uint32_t),
-                                     f * 3 * sizeof(FlatVertex));
+    const double gpuReady =
+        std::max(v * sizeof(SmoothVertex) + f * 3 * sizeof(std::uint32_t), f * 3 * sizeof(FlatVertex));
     return cpu + edgeMap + gpuReady;
 }
 
@@ -71,8 +71,12 @@ std::string humanBytes(double bytes) {
 
 } // namespace
 
-std::size_t sphereVertexCount(int level) { return 2 * (std::size_t(1) << (2 * level)) + 2; }
-std::size_t sphereTriangleCount(int level) { return std::size_t(4) << (2 * level); }
+std::size_t sphereVertexCount(int level) {
+    return 2 * (std::size_t(1) << (2 * level)) + 2;
+}
+std::size_t sphereTriangleCount(int level) {
+    return std::size_t(4) << (2 * level);
+}
 
 std::size_t sphereMemoryBytes(int level) {
     const double bytes = memoryBytes(level);
@@ -156,7 +160,8 @@ std::vector<FlatVertex> flatVertices(const SphereMesh& mesh) {
         const glm::uvec3& t = mesh.triangles[i];
         const glm::dvec3 centroid = (mesh.positions[t.x] + mesh.positions[t.y] + mesh.positions[t.z]) / 3.0;
         for (int k = 0; k < 3; ++k)
-            out.push_back({glm::vec3(mesh.positions[t[k]]), glm::vec3(centroid), glm::vec3(mesh.faceNormals[i])});
+            out.push_back(
+                {glm::vec3(mesh.positions[t[k]]), glm::vec3(centroid), glm::vec3(mesh.faceNormals[i])});
     }
     return out;
 }

@@ -8,14 +8,14 @@ namespace shadelab {
 namespace {
 
 struct Projection2D {
-    double radiusPx;  // +infinity with the eye inside the bounding sphere
-    double sinAlpha;  // the bounding sphere's angular radius; 0 under orthographic projection
+    double radiusPx; // +infinity with the eye inside the bounding sphere
+    double sinAlpha; // the bounding sphere's angular radius; 0 under orthographic projection
 };
 
 Projection2D project(const Scene& scene, const SceneObject& object) {
     const SceneView view = sceneView(scene);
-    const double r = object.radius * std::max({std::abs(object.scale.x), std::abs(object.scale.y),
-                                               std::abs(object.scale.z)});
+    const double r = object.radius *
+                     std::max({std::abs(object.scale.x), std::abs(object.scale.y), std::abs(object.scale.z)});
     // Pixels per view-space unit on the near plane (perspective) or anywhere (orthographic); the larger
     // of the two axes, so a stretched pixel aspect errs on the fine side.
     const ViewVolume& v = view.volume;
@@ -46,7 +46,8 @@ int autoSubdivisionLevel(const Scene& scene, const SceneObject& object) {
 }
 
 int subdivisionLevel(const Scene& scene, const SceneObject& object) {
-    return object.subdivisions == kAutoSubdivisions ? autoSubdivisionLevel(scene, object) : object.subdivisions;
+    return object.subdivisions == kAutoSubdivisions ? autoSubdivisionLevel(scene, object)
+                                                    : object.subdivisions;
 }
 
 } // namespace shadelab

@@ -126,7 +126,8 @@ TEST_F(ImageFileTest, WriteOverADirectoryThrows) {
 // Root ignores directory permissions, so as root the unwritable folder is /proc, where nobody can create
 // a file.
 TEST_F(ImageFileTest, WriteIntoProcThrowsAndLeavesNothing) {
-    const std::string message = runtimeErrorMessage([&] { writePng(gradient(2, 2), "/proc/shadelab-out.png"); });
+    const std::string message =
+        runtimeErrorMessage([&] { writePng(gradient(2, 2), "/proc/shadelab-out.png"); });
     EXPECT_NE(message.find("/proc/shadelab-out.png"), std::string::npos) << message;
     EXPECT_FALSE(fs::exists("/proc/shadelab-out.png"));
 }

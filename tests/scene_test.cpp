@@ -111,6 +111,9 @@ void expectSameScene(const Scene& a, const Scene& b) {
     EXPECT_EQ(a.shading, b.shading);
     EXPECT_EQ(a.lighting, b.lighting);
     EXPECT_EQ(a.toonBands, b.toonBands);
+    EXPECT_EQ(a.tolerancePx, b.tolerancePx);
+    EXPECT_EQ(a.depth, b.depth);
+    EXPECT_EQ(a.vertexNormals, b.vertexNormals);
     ASSERT_EQ(a.objects.size(), b.objects.size());
     for (std::size_t i = 0; i < a.objects.size(); ++i) expectSameObject(a.objects[i], b.objects[i]);
     ASSERT_EQ(a.lights.size(), b.lights.size());
@@ -323,7 +326,7 @@ const std::vector<ErrorCase> kErrorCases = {
     {"UnknownTopLevelKey",
      R"({"shadding": "phong"})",
      {"scene.json: shadding: unknown key; expected one of image, camera, projection, shading, lighting, "
-      "toon_bands, tolerance_px, objects, lights"}},
+      "toon_bands, tolerance_px, depth, vertex_normals, objects, lights"}},
     {"UnknownImageKey",
      R"({"image": {"depth": 8}})",
      {"image.depth: unknown key; expected one of width, height"}},
@@ -778,6 +781,9 @@ TEST(SceneJson, RoundTripsEveryFieldExactly) {
     scene.shading = ShadingMode::Toon;
     scene.lighting = LightingModel::Phong;
     scene.toonBands = 7;
+    scene.tolerancePx = 0.25;
+    scene.depth = DepthMode::ReversedInfinite;
+    scene.vertexNormals = VertexNormals::Exact;
     SceneObject ellipsoid;
     ellipsoid.center = {1e-7, 2, -3};
     ellipsoid.scale = {-1.5, 0.25, 3};

@@ -466,7 +466,8 @@ TEST(SphereLevelLimits, TheMemoryNamedInTheErrorGrowsWithTheLevel) {
         std::smatch m;
         if (!std::regex_search(message, m, kAmount)) continue; // not quantified
         static const std::string kUnits[] = {"B", "KiB", "MiB", "GiB", "TiB", "PiB", "EiB", "ZiB", "YiB"};
-        const int unit = int(std::find(std::begin(kUnits), std::end(kUnits), m[2].str()) - std::begin(kUnits));
+        const int unit =
+            int(std::find(std::begin(kUnits), std::end(kUnits), m[2].str()) - std::begin(kUnits));
         const double amount = std::stod(m[1].str()) * std::pow(1024.0, unit - 2);
         EXPECT_GT(amount, 3.5 * previous) << "level " << level << ": " << message;
         previous = amount;

@@ -53,9 +53,9 @@ ValueScan scanValues(const ImageF& image, float lo = 0.0f, float hi = 1.0f);
 
 // Regression comparison of two 8-bit images of the same size (colour channels only).
 struct Tolerance {
-    int maxDelta = 0;        // largest per-channel difference allowed outside the outlier budget
-    double meanDelta = 0;    // largest mean per-channel difference over the whole image
-    int outlierBudget = 0;   // pixels allowed to exceed maxDelta (silhouette pixels)
+    int maxDelta = 0;      // largest per-channel difference allowed outside the outlier budget
+    double meanDelta = 0;  // largest mean per-channel difference over the whole image
+    int outlierBudget = 0; // pixels allowed to exceed maxDelta (silhouette pixels)
 };
 struct Comparison {
     bool sizeMatches = true;

@@ -28,7 +28,7 @@ std::optional<LightingModel> parseLightingModel(std::string_view text);
 std::optional<LightType> parseLightType(std::string_view text);
 
 inline constexpr int kMaxLights = 8;
-inline constexpr int kToonBands = 4;          // default diffuse bands in toon shading
+inline constexpr int kToonBands = 4; // default diffuse bands in toon shading
 inline constexpr int kMinToonBands = 2, kMaxToonBands = 16;
 inline constexpr double kToonHighlight = 0.5; // spec above this is a full highlight, below it none
 
@@ -44,10 +44,10 @@ struct Light {
     glm::dvec3 ambient{0, 0, 0};
     glm::dvec3 diffuse{1, 1, 1};
     glm::dvec3 specular{1, 1, 1};
-    glm::dvec3 position{0, 0, 0};  // point, spot
-    glm::dvec3 direction{0, 0, -1}; // directional, spot: the direction the light travels (non-zero)
-    double cutoffDeg = 90;          // spot
-    double exponent = 0;            // spot
+    glm::dvec3 position{0, 0, 0};    // point, spot
+    glm::dvec3 direction{0, 0, -1};  // directional, spot: the direction the light travels (non-zero)
+    double cutoffDeg = 90;           // spot
+    double exponent = 0;             // spot
     glm::dvec3 attenuation{1, 0, 0}; // a, b, c of 1/(a + b·t + c·t²); point, spot
 };
 
@@ -75,7 +75,8 @@ glm::dvec3 shade(const SurfacePoint& point, const Material& material, std::span<
 // Clamp to [0, 1] (a NaN becomes 0): what reaches a pixel.
 glm::dvec3 clampColor(const glm::dvec3& color);
 
-// normalize(v), or `fallback` when |v| is too small to normalize (DESIGN §3: normalize nothing that can be 0).
+// normalize(v), or `fallback` when |v| is too small to normalize (DESIGN §3: normalize nothing that can be
+// 0).
 glm::dvec3 safeNormalize(const glm::dvec3& v, const glm::dvec3& fallback);
 
 } // namespace shadelab

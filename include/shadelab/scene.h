@@ -28,9 +28,9 @@ std::string_view toString(ProjectionType type); // "perspective" | "frustum" | "
 
 struct Projection {
     ProjectionType type = ProjectionType::Perspective;
-    double fovyDeg = 40;                                // perspective
+    double fovyDeg = 40;                               // perspective
     double left = -1, right = 1, bottom = -1, top = 1; // frustum (at the near plane), orthographic
-    double near = 0.5, far = 20;                        // positive distances
+    double near = 0.5, far = 20;                       // positive distances
 };
 
 // "subdivisions": "auto": the smallest level whose silhouette error stays below the scene's tolerance for
@@ -57,7 +57,7 @@ struct Scene {
     int toonBands = kToonBands; // "toon_bands": diffuse bands of toon shading, kMinToonBands..kMaxToonBands
     double tolerancePx = 0.5;   // "tolerance_px": the silhouette error "auto" subdivision allows, > 0
     DepthMode depth = DepthMode::Standard;
-    VertexNormals vertexNormals = VertexNormals::Averaged; // not in the file format; the demo toggles it
+    VertexNormals vertexNormals = VertexNormals::Averaged; // "vertex_normals": "averaged" | "exact"
     std::vector<SceneObject> objects{SceneObject{}};
     std::vector<Light> lights{defaultLight()};
 

@@ -13,6 +13,9 @@ namespace shadelab {
 inline constexpr int kMaxSubdivisions = 10;
 
 enum class VertexNormals { Averaged, Exact };
+inline constexpr const char* toString(VertexNormals normals) {
+    return normals == VertexNormals::Averaged ? "averaged" : "exact";
+}
 
 struct SphereMesh {
     int level = 0;

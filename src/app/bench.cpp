@@ -66,13 +66,12 @@ std::vector<RatioSpec> registerSpecializationBenchmarks(Gpu& gpu) {
                                          (specialized ? "specialized" : "uber") + "/" +
                                          (level == kAutoSubdivisions ? "auto" : "level8");
                 const Scene scene = withLevel(s.scene, level);
-                benchmark::RegisterBenchmark(name.c_str(),
-                                             [&gpu, scene, specialized](benchmark::State& state) {
-                                                 gpu.renderer.setSpecialize(specialized);
-                                                 gpu.timeFrames(state, [&] {
-                                                     gpu.renderer.render(scene, scene.width, scene.height);
-                                                 });
-                                             })
+                benchmark::RegisterBenchmark(
+                    name.c_str(),
+                    [&gpu, scene, specialized](benchmark::State& state) {
+                        gpu.renderer.setSpecialize(specialized);
+                        gpu.timeFrames(state, [&] { gpu.renderer.render(scene, scene.width, scene.height); });
+                    })
                     ->UseManualTime()
                     ->Iterations(gpu.options.frames)
                     ->Unit(benchmark::kMillisecond);
@@ -87,22 +86,19 @@ std::vector<RatioSpec> registerSpecializationBenchmarks(Gpu& gpu) {
             const std::string name = std::string("frame/flat-layout/") +
                                      (geometryShader ? "geometry-shader" : "duplicated") + "/level" +
                                      std::to_string(level);
-            benchmark::RegisterBenchmark(name.c_str(),
-                                         [&gpu, scene, geometryShader](benchmark::State& state) {
-                                             gpu.renderer.setSpecialize(true);
-                                             gpu.renderer.setFlatGeometryShader(geometryShader);
-                                             gpu.timeFrames(state, [&] {
-                                                 gpu.renderer.render(scene, scene.width, scene.height);
-                                             });
-                                             gpu.renderer.setFlatGeometryShader(false);
-                                             const SphereMesh mesh = buildSphere(scene.objects[0].subdivisions);
-                                             state.counters["vertex_bytes"] =
-                                                 geometryShader ? double(smoothVertices(mesh).size() *
-                                                                             sizeof(SmoothVertex) +
-                                                                         smoothIndices(mesh).size() * 4)
-                                                                : double(flatVertices(mesh).size() *
-                                                                         sizeof(FlatVertex));
-                                         })
+            benchmark::RegisterBenchmark(
+                name.c_str(),
+                [&gpu, scene, geometryShader](benchmark::State& state) {
+                    gpu.renderer.setSpecialize(true);
+                    gpu.renderer.setFlatGeometryShader(geometryShader);
+                    gpu.timeFrames(state, [&] { gpu.renderer.render(scene, scene.width, scene.height); });
+                    gpu.renderer.setFlatGeometryShader(false);
+                    const SphereMesh mesh = buildSphere(scene.objects[0].subdivisions);
+                    state.counters["vertex_bytes"] =
+                        geometryShader ? double(smoothVertices(mesh).size() * sizeof(SmoothVertex) +
+                                                smoothIndices(mesh).size() * 4)
+                                       : double(flatVertices(mesh).size() * sizeof(FlatVertex));
+                })
                 ->UseManualTime()
                 ->Iterations(gpu.options.frames)
                 ->Unit(benchmark::kMillisecond);
@@ -117,22 +113,21 @@ std::vector<RatioSpec> registerSpecializationBenchmarks(Gpu& gpu) {
             variants.emplace(v.name(), v);
         }
     for (const auto& [name, variant] : variants) {
-        benchmark::RegisterBenchmark(("compile/" + name).c_str(),
-                                     [&gpu, variant](benchmark::State& state) {
-                                         const gl::MeshLayout layout = variant.shading == ShadingMode::Flat
-                                                                           ? gl::MeshLayout::Flat
-                                                                           : gl::MeshLayout::Smooth;
-                                         const gl::GpuMesh tetrahedron(buildSphere(0), layout);
-                                         gpu.target.bind();
-                                         for (auto _ : state) {
-                                             const auto start = Clock::now();
-                                             const gl::Program program = gl::buildProgram(variant);
-                                             gl::drawWith(program, tetrahedron);
-                                             gl::finish();
-                                             state.SetIterationTime(
-                                                 std::chrono::duration<double>(Clock::now() - start).count());
-                                         }
-                                     })
+        benchmark::RegisterBenchmark(
+            ("compile/" + name).c_str(),
+            [&gpu, variant](benchmark::State& state) {
+                const gl::MeshLayout layout =
+                    variant.shading == ShadingMode::Flat ? gl::MeshLayout::Flat : gl::MeshLayout::Smooth;
+                const gl::GpuMesh tetrahedron(buildSphere(0), layout);
+                gpu.target.bind();
+                for (auto _ : state) {
+                    const auto start = Clock::now();
+                    const gl::Program program = gl::buildProgram(variant);
+                    gl::drawWith(program, tetrahedron);
+                    gl::finish();
+                    state.SetIterationTime(std::chrono::duration<double>(Clock::now() - start).count());
+                }
+            })
             ->UseManualTime()
             ->Iterations(5)
             ->Unit(benchmark::kMillisecond);
@@ -195,7 +190,8 @@ std::vector<Ratio> measuredRatios(const Collector& c, const std::vector<RatioSpe
     return out;
 }
 
-void writeJson(const Collector& c, const std::vector<Ratio>& rs, const BenchOptions& o, const std::string& renderer) {
+void writeJson(const Collector& c, const std::vector<Ratio>& rs, const BenchOptions& o,
+               const std::string& renderer) {
     nlohmann::json results = nlohmann::json::object();
     for (const auto& [name, r] : c.results) {
         nlohmann::json entry = {{"mean_ms", r.meanMs}};
@@ -204,14 +200,13 @@ void writeJson(const Collector& c, const std::vector<Ratio>& rs, const BenchOpti
     }
     nlohmann::json ratioList = nlohmann::json::array();
     for (const Ratio& r : rs)
-        ratioList.push_back({{"name", r.name}, {"numerator", r.numerator}, {"denominator", r.denominator},
+        ratioList.push_back({{"name", r.name},
+                             {"numerator", r.numerator},
+                             {"denominator", r.denominator},
                              {"ratio", r.value}});
-    const nlohmann::json root = {{"renderer", renderer},
-                                 {"size", {o.width, o.height}},
-                                 {"frames", o.frames},
-                                 {"warmup_frames", o.warmupFrames},
-                                 {"results", results},
-                                 {"ratios", ratioList}};
+    const nlohmann::json root = {{"renderer", renderer}, {"size", {o.width, o.height}},
+                                 {"frames", o.frames},   {"warmup_frames", o.warmupFrames},
+                                 {"results", results},   {"ratios", ratioList}};
     const std::string text = root.dump(2) + "\n";
     writeFileAtomically(*o.json, "JSON", [&](std::FILE* file) {
         if (std::fwrite(text.data(), 1, text.size(), file) != text.size())
@@ -230,7 +225,8 @@ int runBench(const BenchOptions& options) {
                 renderer.c_str(), options.width, options.height, options.frames, options.warmupFrames);
     std::vector<RatioSpec> specs = registerSpecializationBenchmarks(gpu);
 
-    std::string filterFlag = "--benchmark_filter=" + (options.filter.empty() ? std::string(".") : options.filter);
+    std::string filterFlag =
+        "--benchmark_filter=" + (options.filter.empty() ? std::string(".") : options.filter);
     std::string program = "shadelab-bench";
     char* argv[] = {program.data(), filterFlag.data(), nullptr};
     int argc = 2;

@@ -23,7 +23,8 @@ void setSpread(benchmark::State& state, const std::vector<double>& ms) {
     state.counters["p90_ms"] = percentile(ms, 0.9);
 }
 
-Gpu::Gpu(const BenchOptions& o) : context(makeHeadlessContext(o.backend)), target(o.width, o.height), options(o) {}
+Gpu::Gpu(const BenchOptions& o)
+    : context(makeHeadlessContext(o.backend)), target(o.width, o.height), options(o) {}
 
 void Gpu::timeFrames(benchmark::State& state, const std::function<void()>& draw) {
     target.bind();

@@ -1,5 +1,5 @@
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <regex>
 
 #include "app/commands.h"
@@ -10,7 +10,9 @@
 namespace shadelab::app {
 namespace {
 
-std::string quoted(const std::string& s) { return "\"" + s + "\""; }
+std::string quoted(const std::string& s) {
+    return "\"" + s + "\"";
+}
 
 } // namespace
 
@@ -19,7 +21,8 @@ void composeSize(Scene& scene, const std::string& text) {
     std::smatch m;
     const std::string range = "1.." + std::to_string(kMaxImageSize);
     if (!std::regex_match(text, m, kSize))
-        throw InputError("--size: expected WxH with W and H in " + range + " (e.g. 512x512), got " + quoted(text));
+        throw InputError("--size: expected WxH with W and H in " + range + " (e.g. 512x512), got " +
+                         quoted(text));
     const long width = std::stol(m[1]), height = std::stol(m[2]);
     if (width < 1 || height < 1 || width > kMaxImageSize || height > kMaxImageSize)
         throw InputError("--size: W and H must be in " + range + ", got " + quoted(text));

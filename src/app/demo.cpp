@@ -32,16 +32,16 @@ std::string title(const DemoState& state, double frameMs) {
     char timing[32];
     std::snprintf(timing, sizeof timing, "%.2f ms", frameMs);
     return "shadelab — " + modes(state.current()) + " | level " + std::to_string(state.level()) +
-           (state.autoLevel() ? " (auto)" : "") + " | " +
-           std::to_string(state.triangleCount()) + " triangles | " + timing + " | H: keys";
+           (state.autoLevel() ? " (auto)" : "") + " | " + std::to_string(state.triangleCount()) +
+           " triangles | " + timing + " | H: keys";
 }
 
 std::string status(const DemoState& state) {
     const Scene scene = state.current();
     return modes(scene) + "\nlevel " + std::to_string(state.level()) + ", " +
            (state.orthographic() ? "orthographic" : "perspective") + ", " +
-           (scene.vertexNormals == VertexNormals::Averaged ? "averaged" : "exact") + " normals\nmaterial: " +
-           state.materialName() + ", lights: " + state.lightsName();
+           (scene.vertexNormals == VertexNormals::Averaged ? "averaged" : "exact") +
+           " normals\nmaterial: " + state.materialName() + ", lights: " + state.lightsName();
 }
 
 // Exponential moving average of the GPU-synchronized draw time.
@@ -61,7 +61,8 @@ public:
           window_(scene.width, scene.height, title(state_, 0), options.glDebug), panel_(window_) {
         state_.showPanel = !options.hidePanel;
         if (options.glDebug && !gl::enableDebugOutput(&debugSink_))
-            std::fprintf(stderr, "shadelab: --gl-debug: the context has no KHR_debug; no GL messages will show\n");
+            std::fprintf(stderr,
+                         "shadelab: --gl-debug: the context has no KHR_debug; no GL messages will show\n");
         window_.onKeyPress([this](int key) { onKey(key); });
         window_.onDrag([this](double dx, double dy) {
             if (!panel_.wantsMouse()) state_.drag(dx, dy);

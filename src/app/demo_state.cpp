@@ -56,11 +56,14 @@ double sceneExtent(const Scene& scene, const glm::dvec3& target) {
 
 } // namespace
 
-std::span<const KeyBinding> keyBindings() { return bindings(); }
+std::span<const KeyBinding> keyBindings() {
+    return bindings();
+}
 
 std::optional<Command> commandForKey(int key) {
     for (const KeyBinding& binding : bindings())
-        if (std::find(binding.keys.begin(), binding.keys.end(), key) != binding.keys.end()) return binding.command;
+        if (std::find(binding.keys.begin(), binding.keys.end(), key) != binding.keys.end())
+            return binding.command;
     return std::nullopt;
 }
 
@@ -81,14 +84,15 @@ OrbitCamera OrbitCamera::looking(const glm::dvec3& eye, const glm::dvec3& target
     const glm::dvec3 d = eye - target;
     camera.distance = glm::length(d);
     camera.azimuthRad = std::atan2(d.x, d.z);
-    camera.elevationRad =
-        std::clamp(std::asin(std::clamp(d.y / camera.distance, -1.0, 1.0)), -kMaxElevationRad, kMaxElevationRad);
+    camera.elevationRad = std::clamp(std::asin(std::clamp(d.y / camera.distance, -1.0, 1.0)),
+                                     -kMaxElevationRad, kMaxElevationRad);
     return camera;
 }
 
 glm::dvec3 OrbitCamera::eye() const {
     const double c = std::cos(elevationRad);
-    return target + distance * glm::dvec3(c * std::sin(azimuthRad), std::sin(elevationRad), c * std::cos(azimuthRad));
+    return target +
+           distance * glm::dvec3(c * std::sin(azimuthRad), std::sin(elevationRad), c * std::cos(azimuthRad));
 }
 
 void OrbitCamera::drag(double dxPixels, double dyPixels) {
@@ -124,16 +128,18 @@ std::span<const LightPreset> lightPresets() {
             {"point", {pointLight({3, 3, 5}, {1, 1, 1})}},
             {"directional", {directional}},
             {"spot", {spot}},
-            {"three coloured", {pointLight({3, 2, 4}, {0.9, 0.3, 0.3}), pointLight({-3, 2, 4}, {0.3, 0.9, 0.3}),
-                                pointLight({0, -3, 4}, {0.3, 0.4, 1.0})}},
+            {"three coloured",
+             {pointLight({3, 2, 4}, {0.9, 0.3, 0.3}), pointLight({-3, 2, 4}, {0.3, 0.9, 0.3}),
+              pointLight({0, -3, 4}, {0.3, 0.4, 1.0})}},
         };
     }();
     return kPresets;
 }
 
 DemoState::DemoState(Scene scene)
-    : initial_(scene), scene_(std::move(scene)), initialCamera_(OrbitCamera::looking(scene_.eye, scene_.target)),
-      camera_(initialCamera_), orthographic_(scene_.projection.type == ProjectionType::Orthographic) {
+    : initial_(scene), scene_(std::move(scene)),
+      initialCamera_(OrbitCamera::looking(scene_.eye, scene_.target)), camera_(initialCamera_),
+      orthographic_(scene_.projection.type == ProjectionType::Orthographic) {
     for (const SceneObject& o : scene_.objects) exponents_.push_back(o.material.shininess);
 }
 
@@ -179,8 +185,14 @@ Scene DemoState::current(int width, int height) const {
         halfHeight = distance * 0.5 * (own.top - own.bottom) / own.near;
 
     if (orthographic_ && own.type != ProjectionType::Orthographic) {
-        s.projection = {ProjectionType::Orthographic, own.fovyDeg, -halfHeight * aspect, halfHeight * aspect,
-                        -halfHeight, halfHeight, own.near, own.far};
+        s.projection = {ProjectionType::Orthographic,
+                        own.fovyDeg,
+                        -halfHeight * aspect,
+                        halfHeight * aspect,
+                        -halfHeight,
+                        halfHeight,
+                        own.near,
+                        own.far};
     } else if (orthographic_) {
         // The scene's own box, zoomed, and widened or narrowed to the framebuffer's aspect.
         const double centreX = 0.5 * (own.left + own.right), halfWidth = halfHeight * aspect;
@@ -198,17 +210,33 @@ Scene DemoState::current(int width, int height) const {
 
 bool DemoState::apply(Command command) {
     switch (command) {
-    case Command::Flat: scene_.shading = ShadingMode::Flat; break;
-    case Command::Gouraud: scene_.shading = ShadingMode::Gouraud; break;
-    case Command::Phong: scene_.shading = ShadingMode::Phong; break;
-    case Command::Toon: scene_.shading = ShadingMode::Toon; break;
-    case Command::ToggleLighting: toggleLighting(); break;
-    case Command::LevelUp: changeLevels(+1); break;
-    case Command::LevelDown: changeLevels(-1); break;
+    case Command::Flat:
+        scene_.shading = ShadingMode::Flat;
+        break;
+    case Command::Gouraud:
+        scene_.shading = ShadingMode::Gouraud;
+        break;
+    case Command::Phong:
+        scene_.shading = ShadingMode::Phong;
+        break;
+    case Command::Toon:
+        scene_.shading = ShadingMode::Toon;
+        break;
+    case Command::ToggleLighting:
+        toggleLighting();
+        break;
+    case Command::LevelUp:
+        changeLevels(+1);
+        break;
+    case Command::LevelDown:
+        changeLevels(-1);
+        break;
     case Command::AutoLevel:
         for (SceneObject& o : scene_.objects) o.subdivisions = kAutoSubdivisions;
         break;
-    case Command::ToggleProjection: orthographic_ = !orthographic_; break;
+    case Command::ToggleProjection:
+        orthographic_ = !orthographic_;
+        break;
     case Command::ToggleNormals:
         scene_.vertexNormals =
             scene_.vertexNormals == VertexNormals::Averaged ? VertexNormals::Exact : VertexNormals::Averaged;
@@ -217,13 +245,14 @@ bool DemoState::apply(Command command) {
         material_ = (material_ + 1) % int(materialPresets().size() + 1);
         for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
             const Material own = initial_.objects[i].material;
-            scene_.objects[i].material = material_ == 0 ? own : materialPresets()[std::size_t(material_ - 1)].material;
+            scene_.objects[i].material =
+                material_ == 0 ? own : materialPresets()[std::size_t(material_ - 1)].material;
             // Presets are given as α; the scene's own exponent belongs to the scene's lighting model.
             double exponent = presetExponent(scene_.objects[i].material.shininess);
             if (material_ == 0)
                 exponent = !matchHighlight || initial_.lighting == scene_.lighting ? own.shininess
-                           : scene_.lighting == LightingModel::BlinnPhong           ? own.shininess * 4
-                                                                                    : own.shininess / 4;
+                           : scene_.lighting == LightingModel::BlinnPhong          ? own.shininess * 4
+                                                                                   : own.shininess / 4;
             setShininess(i, exponent);
         }
         break;
@@ -235,10 +264,15 @@ bool DemoState::apply(Command command) {
         camera_ = initialCamera_;
         cameraMoved_ = false;
         break;
-    case Command::TogglePanel: showPanel = !showPanel; break;
-    case Command::ToggleHelp: showHelp = !showHelp; break;
+    case Command::TogglePanel:
+        showPanel = !showPanel;
+        break;
+    case Command::ToggleHelp:
+        showHelp = !showHelp;
+        break;
     case Command::Screenshot:
-    case Command::Quit: return false;
+    case Command::Quit:
+        return false;
     }
     return true;
 }

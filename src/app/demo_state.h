@@ -13,8 +13,23 @@
 namespace shadelab::app {
 
 enum class Command {
-    Flat, Gouraud, Phong, Toon, ToggleLighting, LevelUp, LevelDown, ToggleProjection, ToggleNormals,
-    AutoLevel, NextMaterial, NextLights, ResetView, Screenshot, ToggleHelp, TogglePanel, Quit
+    Flat,
+    Gouraud,
+    Phong,
+    Toon,
+    ToggleLighting,
+    LevelUp,
+    LevelDown,
+    ToggleProjection,
+    ToggleNormals,
+    AutoLevel,
+    NextMaterial,
+    NextLights,
+    ResetView,
+    Screenshot,
+    ToggleHelp,
+    TogglePanel,
+    Quit
 };
 
 // One spelling of every key, shared by the window, the help overlay, --help and the README table.

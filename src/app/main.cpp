@@ -5,8 +5,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include "app/commands.h"
 #include "app/bench.h"
+#include "app/commands.h"
 #include "app/demo_state.h"
 #include "shadelab/errors.h"
 
@@ -23,15 +23,18 @@ std::string joined(std::string_view a, std::string_view b, std::string_view c = 
 
 void addSceneFlags(CLI::App& command, app::SceneOverrides& o) {
     command.add_option("--shading", o.shading,
-                       "Shading mode: " + joined("flat", "gouraud", "phong", "toon") + " (overrides the scene)");
+                       "Shading mode: " + joined("flat", "gouraud", "phong", "toon") +
+                           " (overrides the scene)");
     command.add_option("--lighting", o.lighting, "Lighting model: phong, blinn-phong (overrides the scene)");
     command.add_option("--subdivisions", o.subdivisions,
                        "Subdivision level of every object, 0.." + std::to_string(kMaxSubdivisions) +
                            ", or auto: the smallest level whose silhouette error stays below --tolerance-px");
-    command.add_option("--tolerance-px", o.tolerancePx, "Silhouette error auto subdivision allows (default 0.5)");
-    command.add_option("--depth", o.depth,
-                       "Depth mode: standard (DESIGN's [-1,1] convention), reversed (reversed-Z, 32-bit float "
-                       "depth) or reversed-infinite (reversed-Z with the far plane at infinity)");
+    command.add_option("--tolerance-px", o.tolerancePx,
+                       "Silhouette error auto subdivision allows (default 0.5)");
+    command.add_option(
+        "--depth", o.depth,
+        "Depth mode: standard (DESIGN's [-1,1] convention), reversed (reversed-Z, 32-bit float "
+        "depth) or reversed-infinite (reversed-Z with the far plane at infinity)");
     command.add_option("--size", o.size, "Image size WxH, e.g. 512x512 (overrides the scene)");
 }
 
@@ -62,8 +65,9 @@ int run(int argc, char** argv) {
     addSceneFlags(*render, renderFlags);
     render->add_option("--backend", backendName, "Headless context: egl or osmesa")->capture_default_str();
     bool specialize = true;
-    render->add_option("--specialize", specialize,
-                       "on: programs specialized to the scene's lights and terms; off: the uber program")
+    render
+        ->add_option("--specialize", specialize,
+                     "on: programs specialized to the scene's lights and terms; off: the uber program")
         ->transform(CLI::IsMember({"on", "off", "true", "false", "1", "0"}, CLI::ignore_case))
         ->capture_default_str();
     render->add_option("--out", renderOut, "Output PNG")->required();
@@ -77,8 +81,10 @@ int run(int argc, char** argv) {
 
     app::BenchOptions bench;
     std::string benchBackend = "egl", benchSize = "800x600", benchJson;
-    CLI::App* benchCommand = cli.add_subcommand("bench", "Benchmarks, reported as ratios measured in one run");
-    benchCommand->add_option("--backend", benchBackend, "Headless context: egl or osmesa")->capture_default_str();
+    CLI::App* benchCommand =
+        cli.add_subcommand("bench", "Benchmarks, reported as ratios measured in one run");
+    benchCommand->add_option("--backend", benchBackend, "Headless context: egl or osmesa")
+        ->capture_default_str();
     benchCommand->add_option("--size", benchSize, "Frame size WxH")->capture_default_str();
     benchCommand->add_option("--frames", bench.frames, "Timed frames per configuration")
         ->capture_default_str()
@@ -96,7 +102,8 @@ int run(int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
         // A mistyped subcommand lands in the demo's scene argument; name it rather than the flags after it.
         if (!demoScene.empty() && !std::filesystem::exists(demoScene)) {
-            std::fprintf(stderr, "shadelab: \"%s\" is neither a subcommand (render, reference) nor a scene file\n",
+            std::fprintf(stderr,
+                         "shadelab: \"%s\" is neither a subcommand (render, reference) nor a scene file\n",
                          demoScene.c_str());
             return kExitInputError;
         }

@@ -47,7 +47,8 @@ void lightControls(Light& light, int index) {
             dragVec3("position", light.position, 0.05f);
         if (light.type == LightType::Directional || light.type == LightType::Spot) {
             glm::dvec3 direction = light.direction;
-            if (dragVec3("direction", direction, 0.02f) && glm::length(direction) > 1e-6) light.direction = direction;
+            if (dragVec3("direction", direction, 0.02f) && glm::length(direction) > 1e-6)
+                light.direction = direction;
         }
         colorEdit("I_a ambient", light.ambient);
         if (light.type != LightType::Ambient) {
@@ -63,7 +64,8 @@ void lightControls(Light& light, int index) {
         }
         if (light.type == LightType::Spot) {
             float cutoff = float(light.cutoffDeg), exponent = float(light.exponent);
-            if (ImGui::SliderFloat("cutoff (deg)", &cutoff, 0, 90)) light.cutoffDeg = std::clamp(cutoff, 0.0f, 90.0f);
+            if (ImGui::SliderFloat("cutoff (deg)", &cutoff, 0, 90))
+                light.cutoffDeg = std::clamp(cutoff, 0.0f, 90.0f);
             if (ImGui::SliderFloat("exponent", &exponent, 0, 128)) light.exponent = std::max(exponent, 0.0f);
         }
         ImGui::TreePop();
@@ -88,8 +90,12 @@ Panel::~Panel() {
     ImGui::DestroyContext();
 }
 
-bool Panel::wantsKeyboard() const { return ImGui::GetIO().WantCaptureKeyboard; }
-bool Panel::wantsMouse() const { return ImGui::GetIO().WantCaptureMouse; }
+bool Panel::wantsKeyboard() const {
+    return ImGui::GetIO().WantCaptureKeyboard;
+}
+bool Panel::wantsMouse() const {
+    return ImGui::GetIO().WantCaptureMouse;
+}
 
 void Panel::draw(DemoState& state, const std::string& status) {
     ImGui_ImplOpenGL3_NewFrame();

@@ -84,17 +84,35 @@ Window::~Window() {
     glfwTerminate();
 }
 
-bool Window::shouldClose() const { return glfwWindowShouldClose(state_->window); }
-void Window::requestClose() { glfwSetWindowShouldClose(state_->window, GLFW_TRUE); }
-void Window::setTitle(const std::string& title) { glfwSetWindowTitle(state_->window, title.c_str()); }
+bool Window::shouldClose() const {
+    return glfwWindowShouldClose(state_->window);
+}
+void Window::requestClose() {
+    glfwSetWindowShouldClose(state_->window, GLFW_TRUE);
+}
+void Window::setTitle(const std::string& title) {
+    glfwSetWindowTitle(state_->window, title.c_str());
+}
 void Window::framebufferSize(int& width, int& height) const {
     glfwGetFramebufferSize(state_->window, &width, &height);
 }
-void Window::swapBuffers() { glfwSwapBuffers(state_->window); }
-void Window::waitEvents(double timeoutSeconds) { glfwWaitEventsTimeout(timeoutSeconds); }
-void Window::onKeyPress(std::function<void(int)> handler) { state_->keyHandler = std::move(handler); }
-void Window::onDrag(std::function<void(double, double)> handler) { state_->dragHandler = std::move(handler); }
-void Window::onScroll(std::function<void(double)> handler) { state_->scrollHandler = std::move(handler); }
-void* Window::nativeHandle() const { return state_->window; }
+void Window::swapBuffers() {
+    glfwSwapBuffers(state_->window);
+}
+void Window::waitEvents(double timeoutSeconds) {
+    glfwWaitEventsTimeout(timeoutSeconds);
+}
+void Window::onKeyPress(std::function<void(int)> handler) {
+    state_->keyHandler = std::move(handler);
+}
+void Window::onDrag(std::function<void(double, double)> handler) {
+    state_->dragHandler = std::move(handler);
+}
+void Window::onScroll(std::function<void(double)> handler) {
+    state_->scrollHandler = std::move(handler);
+}
+void* Window::nativeHandle() const {
+    return state_->window;
+}
 
 } // namespace shadelab

@@ -7,7 +7,9 @@
 
 namespace shadelab {
 
-std::string_view toString(Backend backend) { return backend == Backend::Egl ? "egl" : "osmesa"; }
+std::string_view toString(Backend backend) {
+    return backend == Backend::Egl ? "egl" : "osmesa";
+}
 
 std::optional<Backend> parseBackend(std::string_view text) {
     if (text == "egl") return Backend::Egl;
@@ -45,13 +47,20 @@ HeadlessRenderer::~HeadlessRenderer() {
     }
 }
 
-void HeadlessRenderer::setSpecialize(bool specialize) { renderer_->setSpecialize(specialize); }
-void HeadlessRenderer::setFlatGeometryShader(bool enabled) { renderer_->setFlatGeometryShader(enabled); }
-int HeadlessRenderer::programsBuilt() const { return renderer_->programsBuilt(); }
+void HeadlessRenderer::setSpecialize(bool specialize) {
+    renderer_->setSpecialize(specialize);
+}
+void HeadlessRenderer::setFlatGeometryShader(bool enabled) {
+    renderer_->setFlatGeometryShader(enabled);
+}
+int HeadlessRenderer::programsBuilt() const {
+    return renderer_->programsBuilt();
+}
 
 Image HeadlessRenderer::render(const Scene& scene) {
     context_->makeCurrent();
-    const gl::RenderTarget target(scene.width, scene.height, gl::ColorFormat::Rgba8, gl::depthFormatFor(scene.depth));
+    const gl::RenderTarget target(scene.width, scene.height, gl::ColorFormat::Rgba8,
+                                  gl::depthFormatFor(scene.depth));
     target.bind();
     renderer_->render(scene, scene.width, scene.height);
     return target.readRgba8();

@@ -52,6 +52,8 @@ private:
 
 } // namespace
 
-std::unique_ptr<HeadlessContext> makeOsmesaContext() { return std::make_unique<OsmesaContext>(); }
+std::unique_ptr<HeadlessContext> makeOsmesaContext() {
+    return std::make_unique<OsmesaContext>();
+}
 
 } // namespace shadelab

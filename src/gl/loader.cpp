@@ -17,8 +17,8 @@ void loadGl(ProcAddressFn getProcAddress, const char* backend) {
         throw RuntimeError(std::string(backend) + ": loading OpenGL entry points failed (glad)");
     const int major = GLAD_VERSION_MAJOR(version), minor = GLAD_VERSION_MINOR(version);
     if (major < 3 || (major == 3 && minor < 3))
-        throw RuntimeError(std::string(backend) + ": the context offers OpenGL " + std::to_string(major) + "." +
-                           std::to_string(minor) + "; shadelab needs 3.3 core");
+        throw RuntimeError(std::string(backend) + ": the context offers OpenGL " + std::to_string(major) +
+                           "." + std::to_string(minor) + "; shadelab needs 3.3 core");
     loadedFrom = getProcAddress;
 }
 
@@ -40,7 +40,9 @@ void checkGlError(const char* stage) {
     throw RuntimeError(std::string("GL error ") + code + " in " + stage);
 }
 
-void finish() { glFinish(); }
+void finish() {
+    glFinish();
+}
 
 bool enableDebugOutput(std::function<void(const std::string&)>* sink) {
     if (!GLAD_GL_KHR_debug && !GLAD_GL_VERSION_4_3) return false;
@@ -58,11 +60,23 @@ bool enableDebugOutput(std::function<void(const std::string&)>* sink) {
     return true;
 }
 
-void deleteBuffer(Id id) { glDeleteBuffers(1, &id); }
-void deleteVertexArray(Id id) { glDeleteVertexArrays(1, &id); }
-void deleteShader(Id id) { glDeleteShader(id); }
-void deleteProgram(Id id) { glDeleteProgram(id); }
-void deleteFramebuffer(Id id) { glDeleteFramebuffers(1, &id); }
-void deleteRenderbuffer(Id id) { glDeleteRenderbuffers(1, &id); }
+void deleteBuffer(Id id) {
+    glDeleteBuffers(1, &id);
+}
+void deleteVertexArray(Id id) {
+    glDeleteVertexArrays(1, &id);
+}
+void deleteShader(Id id) {
+    glDeleteShader(id);
+}
+void deleteProgram(Id id) {
+    glDeleteProgram(id);
+}
+void deleteFramebuffer(Id id) {
+    glDeleteFramebuffers(1, &id);
+}
+void deleteRenderbuffer(Id id) {
+    glDeleteRenderbuffers(1, &id);
+}
 
 } // namespace shadelab::gl

@@ -7,8 +7,7 @@
 namespace shadelab::gl {
 namespace {
 
-template <typename T>
-void upload(GLenum target, const Buffer& buffer, const std::vector<T>& data) {
+template <typename T> void upload(GLenum target, const Buffer& buffer, const std::vector<T>& data) {
     glBindBuffer(target, buffer.get());
     glBufferData(target, GLsizeiptr(data.size() * sizeof(T)), data.data(), GL_STATIC_DRAW);
 }
@@ -33,7 +32,8 @@ Id genBuffer() {
 } // namespace
 
 GpuMesh::GpuMesh(const SphereMesh& mesh, MeshLayout layout)
-    : layout_(layout), triangles_(int(mesh.triangles.size())), vao_(genVertexArray()), vertices_(genBuffer()) {
+    : layout_(layout), triangles_(int(mesh.triangles.size())), vao_(genVertexArray()),
+      vertices_(genBuffer()) {
     glBindVertexArray(vao_.get());
     if (layout == MeshLayout::Smooth) {
         upload(GL_ARRAY_BUFFER, vertices_, smoothVertices(mesh));

@@ -46,8 +46,8 @@ Shader compileStage(GLenum stage, const char* file, const ProgramVariant& varian
     GLint ok = GL_FALSE;
     glGetShaderiv(shader.get(), GL_COMPILE_STATUS, &ok);
     const std::string log = infoLog(shader.get(), false);
-    const std::string where = std::string(file) + " (variant " + variant.name() + "; source 1 = " +
-                              kLightingFile + ", source 2 = " + file + ")";
+    const std::string where = std::string(file) + " (variant " + variant.name() +
+                              "; source 1 = " + kLightingFile + ", source 2 = " + file + ")";
     if (!ok) throw RuntimeError("compiling " + where + " failed:\n" + log);
     if (!log.empty()) std::fprintf(stderr, "shadelab: compile log of %s:\n%s\n", where.c_str(), log.c_str());
     return shader;
@@ -74,7 +74,8 @@ ProgramVariant ProgramVariant::forScene(const Scene& scene, bool specialize) {
         v.attenuation |= positional && light.attenuation != glm::dvec3(1, 0, 0);
         lightSpecular |= light.type != LightType::Ambient && light.specular != glm::dvec3(0);
     }
-    for (const SceneObject& object : scene.objects) objectSpecular |= object.material.specular != glm::dvec3(0);
+    for (const SceneObject& object : scene.objects)
+        objectSpecular |= object.material.specular != glm::dvec3(0);
     v.specular = lightSpecular && objectSpecular;
     return v;
 }
@@ -127,7 +128,8 @@ Program buildProgram(const ProgramVariant& variant) {
     glLinkProgram(program.get());
     GLint ok = GL_FALSE;
     glGetProgramiv(program.get(), GL_LINK_STATUS, &ok);
-    if (!ok) throw RuntimeError("linking program " + variant.name() + " failed:\n" + infoLog(program.get(), true));
+    if (!ok)
+        throw RuntimeError("linking program " + variant.name() + " failed:\n" + infoLog(program.get(), true));
     glDetachShader(program.get(), vertex.get());
     glDetachShader(program.get(), fragment.get());
     if (geometry) glDetachShader(program.get(), geometry.get());

@@ -32,11 +32,11 @@ void checkSize(int width, int height) {
 }
 
 // GL rows run bottom to top; images run top to bottom. This is the one place rows are flipped.
-template <typename T>
-void flipRows(std::vector<T>& pixels, int width, int height) {
+template <typename T> void flipRows(std::vector<T>& pixels, int width, int height) {
     const std::size_t row = std::size_t(width) * 4;
     for (int y = 0; y < height / 2; ++y)
-        std::swap_ranges(pixels.begin() + std::ptrdiff_t(y * row), pixels.begin() + std::ptrdiff_t((y + 1) * row),
+        std::swap_ranges(pixels.begin() + std::ptrdiff_t(y * row),
+                         pixels.begin() + std::ptrdiff_t((y + 1) * row),
                          pixels.begin() + std::ptrdiff_t((height - 1 - y) * row));
 }
 
@@ -52,9 +52,10 @@ RenderTarget::RenderTarget(int width, int height, ColorFormat format, DepthForma
     Id fbo = 0;
     glGenFramebuffers(1, &fbo);
     fbo_ = Framebuffer(fbo);
-    color_ = Renderbuffer(genRenderbuffer(format == ColorFormat::Rgba8 ? GL_RGBA8 : GL_RGBA32F, width, height));
-    depth_ = Renderbuffer(genRenderbuffer(depth == DepthFormat::Depth24 ? GL_DEPTH_COMPONENT24 : GL_DEPTH_COMPONENT32F,
-                                          width, height));
+    color_ =
+        Renderbuffer(genRenderbuffer(format == ColorFormat::Rgba8 ? GL_RGBA8 : GL_RGBA32F, width, height));
+    depth_ = Renderbuffer(genRenderbuffer(
+        depth == DepthFormat::Depth24 ? GL_DEPTH_COMPONENT24 : GL_DEPTH_COMPONENT32F, width, height));
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_.get());
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.get());
@@ -65,9 +66,13 @@ RenderTarget::RenderTarget(int width, int height, ColorFormat format, DepthForma
     checkGlError("creating the offscreen framebuffer");
 }
 
-void bindDefaultFramebuffer() { glBindFramebuffer(GL_FRAMEBUFFER, 0); }
+void bindDefaultFramebuffer() {
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
 
-void RenderTarget::bind() const { glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get()); }
+void RenderTarget::bind() const {
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
+}
 
 Image RenderTarget::readRgba8() const {
     Image image(width_, height_);

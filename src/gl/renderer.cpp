@@ -30,10 +30,14 @@ void setInt(GLuint program, const std::string& name, int value) {
 
 int lightTypeCode(LightType type) {
     switch (type) { // the LIGHT_* constants of shaders/lighting.glsl
-    case LightType::Ambient: return 0;
-    case LightType::Directional: return 1;
-    case LightType::Point: return 2;
-    case LightType::Spot: return 3;
+    case LightType::Ambient:
+        return 0;
+    case LightType::Directional:
+        return 1;
+    case LightType::Point:
+        return 2;
+    case LightType::Spot:
+        return 3;
     }
     return 0;
 }
@@ -107,8 +111,9 @@ void setClipRange(DepthMode mode) {
     const bool zeroToOne = mode != DepthMode::Standard;
     if (!GLAD_GL_VERSION_4_5) {
         if (zeroToOne)
-            throw RuntimeError("depth " + std::string(toString(mode)) +
-                               ": needs glClipControl (OpenGL 4.5), which this context lacks; use depth standard");
+            throw RuntimeError(
+                "depth " + std::string(toString(mode)) +
+                ": needs glClipControl (OpenGL 4.5), which this context lacks; use depth standard");
         return; // the default range is the standard one
     }
     glClipControl(GL_LOWER_LEFT, zeroToOne ? GL_ZERO_TO_ONE : GL_NEGATIVE_ONE_TO_ONE);
@@ -118,7 +123,9 @@ void setClipRange(DepthMode mode) {
 
 Renderer::Renderer() = default;
 
-void Renderer::setSpecialize(bool specialize) { specialize_ = specialize; }
+void Renderer::setSpecialize(bool specialize) {
+    specialize_ = specialize;
+}
 
 const GpuMesh& Renderer::mesh(int level, VertexNormals normals, MeshLayout layout) {
     // Flat shading reads face normals only, so both vertex-normal kinds share one flat mesh.
@@ -169,8 +176,9 @@ void Renderer::render(const Scene& scene, int width, int height) {
         setUberLights(prog, lightsView);
     setInt(prog, "uOrthographic", view.orthographic ? 1 : 0);
     if (scene.shading == ShadingMode::Toon) setFloat(prog, "uToonBands", scene.toonBands);
-    const MeshLayout layout =
-        scene.shading == ShadingMode::Flat && !variant.flatGeometryShader ? MeshLayout::Flat : MeshLayout::Smooth;
+    const MeshLayout layout = scene.shading == ShadingMode::Flat && !variant.flatGeometryShader
+                                  ? MeshLayout::Flat
+                                  : MeshLayout::Smooth;
     for (const SceneObject& object : scene.objects) {
         setMaterial(prog, object.material);
         const glm::dmat4 viewFromObject = view.viewFromWorld * worldFromObject(object);

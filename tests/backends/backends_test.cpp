@@ -35,7 +35,8 @@ TEST(Backends, EglAndOsmesaRenderTheSamePixels) {
             if (std::getenv("CI")) FAIL() << e.what();
             GTEST_SKIP() << e.what();
         }
-        for (const Scene& scene : scenes) (backend == Backend::Egl ? egl : osmesa).push_back(renderer->render(scene));
+        for (const Scene& scene : scenes)
+            (backend == Backend::Egl ? egl : osmesa).push_back(renderer->render(scene));
     }
     for (std::size_t i = 0; i < scenes.size(); ++i) {
         const Comparison c = compareImages(osmesa[i], egl[i], Tolerance{0, 0, 0});

@@ -57,12 +57,13 @@ TEST_P(AutoSubdivision, ChosenLevelIsTheSmallestWithinTolerance) {
     const double gap = silhouetteGapPx(renderer->render(scene), reference, radiusPx);
     scene.objects[0].subdivisions = level - 1;
     const double coarserGap = silhouetteGapPx(renderer->render(scene), reference, radiusPx);
-    std::printf("%s: R = %.1f px, auto level %d: gap %.3f px; level %d: %.3f px\n", c.name, radiusPx, level, gap,
-                level - 1, coarserGap);
+    std::printf("%s: R = %.1f px, auto level %d: gap %.3f px; level %d: %.3f px\n", c.name, radiusPx, level,
+                gap, level - 1, coarserGap);
     EXPECT_LE(gap, scene.tolerancePx) << "the measured gap exceeds the tolerance at the auto level";
     EXPECT_LT(gap, coarserGap) << "one level lower must be visibly coarser";
     // Smallest with the guarantee: the bound holds at the chosen level and fails one level lower.
-    const double tolerance = scene.tolerancePx * (c.perspective ? 1 - std::pow(1 / glm::length(scene.eye), 2) : 1);
+    const double tolerance =
+        scene.tolerancePx * (c.perspective ? 1 - std::pow(1 / glm::length(scene.eye), 2) : 1);
     EXPECT_LE(radiusPx * std::pow(4.0, 1 - level), tolerance);
     EXPECT_GT(radiusPx * std::pow(4.0, 2 - level), tolerance);
     // And the guarantee itself: the mesh's max radial deviation, measured, times R_px.
@@ -71,7 +72,8 @@ TEST_P(AutoSubdivision, ChosenLevelIsTheSmallestWithinTolerance) {
 
 INSTANTIATE_TEST_SUITE_P(Radii, AutoSubdivision,
                          testing::Values(AutoCase{"ortho_r40", 40, false}, AutoCase{"ortho_r120", 120, false},
-                                         AutoCase{"ortho_r300", 300, false}, AutoCase{"persp_r100", 100, true}),
+                                         AutoCase{"ortho_r300", 300, false},
+                                         AutoCase{"persp_r100", 100, true}),
                          [](const auto& info) { return std::string(info.param.name); });
 
 } // namespace

@@ -34,7 +34,8 @@ InteriorError interiorError(const ImageF& rendered, const ReferenceImage& refere
     std::vector<int> renderedIds(reference.objectId.size(), -1);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x)
-            if (rendered.pixel(x, y)[3] > 0.5f) renderedIds[std::size_t(y) * w + x] = reference.objectId[std::size_t(y) * w + x];
+            if (rendered.pixel(x, y)[3] > 0.5f)
+                renderedIds[std::size_t(y) * w + x] = reference.objectId[std::size_t(y) * w + x];
     const std::vector<bool> inReference = interiorMask(reference.objectId, w, h, erode);
     const std::vector<bool> inRendered = interiorMask(renderedIds, w, h, erode);
     InteriorError error;
@@ -44,7 +45,8 @@ InteriorError interiorError(const ImageF& rendered, const ReferenceImage& refere
             const std::size_t i = std::size_t(y) * w + x;
             if (!inReference[i] || !inRendered[i]) continue;
             for (int c = 0; c < 3; ++c) {
-                const double d = 255.0 * std::abs(double(rendered.pixel(x, y)[c]) - reference.color.pixel(x, y)[c]);
+                const double d =
+                    255.0 * std::abs(double(rendered.pixel(x, y)[c]) - reference.color.pixel(x, y)[c]);
                 sum += d;
                 error.max = std::max(error.max, d);
             }

@@ -31,10 +31,10 @@ Scene litSphereScene(int size, LightType light);
 } // namespace shadelab::test
 
 // Without a GL context a test skips with the reason, except in CI (CI set), where it fails.
-#define SHADELAB_REQUIRE_GL(renderer)                                                                      \
-    std::string renderer##Why;                                                                             \
-    HeadlessRenderer* renderer = ::shadelab::test::glRenderer(renderer##Why);                              \
-    if (!renderer) {                                                                                       \
-        if (std::getenv("CI")) FAIL() << "no GL context in CI: " << renderer##Why;                         \
-        GTEST_SKIP() << "no GL context: " << renderer##Why;                                                \
+#define SHADELAB_REQUIRE_GL(renderer)                                                                        \
+    std::string renderer##Why;                                                                               \
+    HeadlessRenderer* renderer = ::shadelab::test::glRenderer(renderer##Why);                                \
+    if (!renderer) {                                                                                         \
+        if (std::getenv("CI")) FAIL() << "no GL context in CI: " << renderer##Why;                           \
+        GTEST_SKIP() << "no GL context: " << renderer##Why;                                                  \
     }

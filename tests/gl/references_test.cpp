@@ -2,10 +2,10 @@
 // transform, rendered at 128×128 and compared with a reference PNG in tests/references/.
 // The references are anchored to the equations by analytic_test.cpp (an independent CPU ray-cast), not
 // only to themselves. Re-bless with scripts/bless.sh after looking at the new pictures.
-#include <filesystem>
-#include <fstream>
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <functional>
 
 #include "gl/gl_test_support.h"
@@ -74,8 +74,10 @@ std::vector<ReferenceCase> cases() {
                        },
                        kLlvmpipeTolerance});
     };
-    variant("orthographic", [](Scene& s) { s.projection = {ProjectionType::Orthographic, 40, -1.5, 1.5, -1.5, 1.5, 1, 10}; });
-    variant("off_centre_frustum", [](Scene& s) { s.projection = {ProjectionType::Frustum, 40, -0.1, 0.25, -0.2, 0.1, 0.5, 20}; });
+    variant("orthographic",
+            [](Scene& s) { s.projection = {ProjectionType::Orthographic, 40, -1.5, 1.5, -1.5, 1.5, 1, 10}; });
+    variant("off_centre_frustum",
+            [](Scene& s) { s.projection = {ProjectionType::Frustum, 40, -0.1, 0.25, -0.2, 0.1, 0.5, 20}; });
     variant("spot_light", [](Scene& s) { s.lights = litSphereScene(128, LightType::Spot).lights; });
     variant("ellipsoid_mirrored", [](Scene& s) { s.objects[0].scale = {-1.3, 0.7, 0.9}; });
     variant("exact_normals_gouraud", [](Scene& s) {
@@ -96,7 +98,9 @@ std::vector<ReferenceCase> cases() {
     return out;
 }
 
-bool blessing() { return std::getenv("SHADELAB_BLESS") != nullptr; }
+bool blessing() {
+    return std::getenv("SHADELAB_BLESS") != nullptr;
+}
 
 class References : public testing::TestWithParam<ReferenceCase> {};
 
@@ -111,8 +115,8 @@ TEST_P(References, MatchesReferenceImage) {
         std::printf("blessed %s\n", expectedPath.c_str());
         return;
     }
-    ASSERT_TRUE(fs::exists(expectedPath)) << "missing reference " << expectedPath
-                                          << "; look at the picture, then run scripts/bless.sh";
+    ASSERT_TRUE(fs::exists(expectedPath))
+        << "missing reference " << expectedPath << "; look at the picture, then run scripts/bless.sh";
     const Comparison result = compareImages(actual, readPng(expectedPath), c.tolerance);
     if (!result.passed) {
         const fs::path failures = fs::current_path() / "reference-failures";

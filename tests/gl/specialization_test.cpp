@@ -29,12 +29,17 @@ Light light(LightType type, glm::dvec3 position, glm::dvec3 color) {
 
 const CrossCheckCase kCases[] = {
     {"default_point", [](Scene&) {}},
-    {"one_directional", [](Scene& s) { s.lights = {light(LightType::Directional, {1, 1, 2}, {1, 1, 1})}; }},
-    {"attenuated_spot", [](Scene& s) {
+    {"one_directional",
+     [](Scene& s) {
+         s.lights = {light(LightType::Directional, {1, 1, 2}, {1, 1, 1})};
+     }},
+    {"attenuated_spot",
+     [](Scene& s) {
          s.lights = {light(LightType::Spot, {1, 1, 3}, {1, 0.9, 0.8})};
          s.lights[0].attenuation = {0.5, 0.1, 0.02};
      }},
-    {"four_mixed_lights", [](Scene& s) {
+    {"four_mixed_lights",
+     [](Scene& s) {
          Light ambient;
          ambient.type = LightType::Ambient;
          ambient.ambient = {0.15, 0.1, 0.1};
@@ -45,13 +50,18 @@ const CrossCheckCase kCases[] = {
          s.lights[2].attenuation = {1, 0.05, 0.01};
      }},
     {"no_specular", [](Scene& s) { s.objects[0].material.specular = glm::dvec3(0); }},
-    {"mirrored_ellipsoid", [](Scene& s) { s.objects[0].scale = {-1.2, 0.8, 1}; }},
-    {"ambient_only", [](Scene& s) {
+    {"mirrored_ellipsoid",
+     [](Scene& s) {
+         s.objects[0].scale = {-1.2, 0.8, 1};
+     }},
+    {"ambient_only",
+     [](Scene& s) {
          s.lights[0].type = LightType::Ambient;
          s.lights[0].ambient = {0.5, 0.5, 0.5};
      }},
     {"no_lights", [](Scene& s) { s.lights.clear(); }},
-    {"eight_lights_two_objects", [](Scene& s) {
+    {"eight_lights_two_objects",
+     [](Scene& s) {
          s.lights.clear();
          for (int i = 0; i < kMaxLights; ++i)
              s.lights.push_back(light(i % 2 ? LightType::Point : LightType::Spot,

@@ -8,8 +8,7 @@ namespace shadelab::gl {
 
 using Id = unsigned int; // GLuint
 
-template <void (*Delete)(Id)>
-class Handle {
+template <void (*Delete)(Id)> class Handle {
 public:
     Handle() = default;
     explicit Handle(Id id) : id_(id) {}

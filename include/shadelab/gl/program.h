@@ -21,9 +21,9 @@ struct ProgramVariant {
     bool flatGeometryShader = false;
     // Specialized programs only:
     int directional = 0, point = 0, spot = 0; // lights of each type
-    bool ambient = true;     // some light's I_a is non-zero
-    bool attenuation = true; // some point or spot light's attenuation is not (1, 0, 0)
-    bool specular = true;    // some object's k_s and some light's I_s are non-zero
+    bool ambient = true;                      // some light's I_a is non-zero
+    bool attenuation = true;                  // some point or spot light's attenuation is not (1, 0, 0)
+    bool specular = true;                     // some object's k_s and some light's I_s are non-zero
 
     static ProgramVariant uber(ShadingMode shading, LightingModel lighting);
     // The scene's specialized variant, or its uber variant when `specialize` is false.
