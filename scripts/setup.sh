@@ -12,6 +12,8 @@ packages=(
   nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev python3-glad libimgui-dev libstb-dev
   # the demo under a virtual display, and driving it in tests
   xvfb xauth xdotool x11-apps
+  # CI's checks: formatting, static analysis, fuzzing (clang's libFuzzer), the report's plot
+  clang-format clang-tidy clang libclang-rt-14-dev gnuplot-nox git
 )
 
 missing=()
@@ -27,5 +29,6 @@ if ((${#missing[@]})); then
 fi
 
 build_type=${SHADELAB_BUILD_TYPE:-RelWithDebInfo}
-cmake -S . -B build -DCMAKE_BUILD_TYPE="$build_type"
+# shellcheck disable=SC2086 # SHADELAB_CMAKE_ARGS is a list of arguments
+cmake -S . -B build -DCMAKE_BUILD_TYPE="$build_type" ${SHADELAB_CMAKE_ARGS:-}
 cmake --build build -j"$(nproc)"

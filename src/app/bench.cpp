@@ -112,9 +112,10 @@ std::vector<RatioSpec> registerSpecializationBenchmarks(Gpu& gpu) {
             const gl::ProgramVariant v = gl::ProgramVariant::forScene(s.scene, specialized);
             variants.emplace(v.name(), v);
         }
-    for (const auto& [name, variant] : variants) {
+    for (const auto& entry : variants) { // not a structured binding: clang 14 cannot capture one
+        const gl::ProgramVariant variant = entry.second;
         benchmark::RegisterBenchmark(
-            ("compile/" + name).c_str(),
+            ("compile/" + entry.first).c_str(),
             [&gpu, variant](benchmark::State& state) {
                 const gl::MeshLayout layout =
                     variant.shading == ShadingMode::Flat ? gl::MeshLayout::Flat : gl::MeshLayout::Smooth;

@@ -34,6 +34,7 @@ struct ProgramVariant {
     std::string name() const;
     std::string defines() const; // the #define lines the variant compiles with
     bool operator==(const ProgramVariant&) const = default;
+    // NOLINTNEXTLINE(modernize-use-nullptr): clang-tidy 14 misreads the defaulted comparison's own 0
     auto operator<=>(const ProgramVariant&) const = default;
 };
 
