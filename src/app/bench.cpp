@@ -225,6 +225,7 @@ int runBench(const BenchOptions& options) {
     std::printf("shadelab bench: %s, %dx%d, %d frames after %d warm-up frames per configuration\n",
                 renderer.c_str(), options.width, options.height, options.frames, options.warmupFrames);
     std::vector<RatioSpec> specs = registerSpecializationBenchmarks(gpu);
+    for (RatioSpec& spec : registerCostBenchmarks(gpu)) specs.push_back(std::move(spec));
 
     std::string filterFlag =
         "--benchmark_filter=" + (options.filter.empty() ? std::string(".") : options.filter);

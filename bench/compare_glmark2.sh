@@ -1,0 +1,169 @@
+#!/usr/bin/env bash
+# shadelab's shading modes beside glmark2's `shading` scenes, on the same GL driver in one run, as
+# frame-time ratios (issue 5, item 4). See bench/README.md for what is matched and what is not.
+#
+#   bench/compare_glmark2.sh [SHADELAB]        SHADELAB: the binary (default: build/shadelab)
+#
+# Environment: DURATION seconds per glmark2 scene (default 10: one full turn of its cat at 36°/s),
+# FRAMES timed shadelab frames per mode (default 200), ROUNDS alternations glmark2 → shadelab (default 1;
+# with more, each figure is the median over the rounds), KEEP=1 keeps the temporary folder.
+#
+# Needs: glmark2-x11, xvfb, python3 (Debian packages). Starts its own Xvfb on a free display.
+set -euo pipefail
+
+shadelab=${1:-build/shadelab}
+duration=${DURATION:-10}
+frames=${FRAMES:-200}
+rounds=${ROUNDS:-1}
+
+fail() {
+    echo "compare_glmark2: $*" >&2
+    exit 1
+}
+[[ -x $shadelab ]] || fail "no shadelab binary at '$shadelab' (pass its path as the first argument)"
+for tool in glmark2 Xvfb python3; do
+    command -v "$tool" >/dev/null || fail "$tool not found (apt-get install glmark2-x11 xvfb python3)"
+done
+
+tmp=$(mktemp -d -t shadelab-glmark2-XXXXXX)
+xvfb_pid=
+cleanup() {
+    [[ -n $xvfb_pid ]] && kill "$xvfb_pid" 2>/dev/null && wait "$xvfb_pid" 2>/dev/null
+    if [[ ${KEEP:-0} == 1 ]]; then echo "kept $tmp"; else rm -rf "$tmp"; fi
+}
+trap cleanup EXIT
+
+# Xvfb picks a free display itself and writes its number once it accepts connections.
+Xvfb -displayfd 3 -screen 0 1024x768x24 -nolisten tcp 3>"$tmp/display" 2>"$tmp/xvfb.log" &
+xvfb_pid=$!
+for _ in $(seq 100); do
+    [[ -s $tmp/display ]] && break
+    kill -0 "$xvfb_pid" 2>/dev/null || fail "Xvfb did not start: $(cat "$tmp/xvfb.log")"
+    sleep 0.1
+done
+[[ -s $tmp/display ]] || fail "Xvfb gave no display number within 10 s"
+display=:$(head -n1 "$tmp/display")
+
+# The shadelab scene of `shadelab bench`'s frame/glmark2-equivalent/phong, written out to check the screen
+# coverage independently: a unit sphere at the distance d where its silhouette's radius is 170 px of 600
+# (R = 300·tan(asin(1/d))/tan(fovy/2)); glmark2's cat covers about 15–20 % of 800×600.
+python3 - "$tmp/scene.json" <<'EOF'
+import json, math, sys
+fovy, radius_px, half_height = 40.0, 170.0, 300.0
+d = 1 / math.sin(math.atan(radius_px / half_height * math.tan(math.radians(fovy / 2))))
+scene = {
+    "image": {"width": 800, "height": 600, "background": [1, 0, 1]},
+    "camera": {"eye": [0, 0, d], "target": [0, 0, 0], "up": [0, 1, 0]},
+    "projection": {"type": "perspective", "fovy_deg": fovy, "near": 0.5, "far": 20},
+    "shading": "phong", "lighting": "phong",
+    "objects": [{"center": [0, 0, 0], "radius": 1, "subdivisions": 6,
+                 "material": {"ambient": [0.2] * 3, "diffuse": [0, 0, 1], "specular": [1, 1, 1],
+                              "shininess": 100}}],
+    "lights": [{"type": "point", "position": [0, 1, d], "ambient": [0.1] * 3, "diffuse": [0.8] * 3,
+                "specular": [0.8] * 3, "attenuation": [1, 0, 0]}],
+}
+json.dump(scene, open(sys.argv[1], "w"), indent=2)
+EOF
+"$shadelab" render "$tmp/scene.json" --out "$tmp/coverage.png" >/dev/null
+
+glmark2_round() {
+    local out=$1
+    DISPLAY=$display glmark2 --off-screen -s 800x600 \
+        -b "clear:duration=$duration" \
+        -b "shading:shading=gouraud:duration=$duration" \
+        -b "shading:shading=blinn-phong-inf:duration=$duration" \
+        -b "shading:shading=phong:duration=$duration" \
+        -b "shading:shading=cel:duration=$duration" >"$out" 2>&1 || fail "glmark2 failed: $(tail -5 "$out")"
+    grep -q "FrameTime" "$out" || fail "glmark2 printed no frame times: $(tail -5 "$out")"
+}
+
+for round in $(seq "$rounds"); do
+    echo "round $round/$rounds: glmark2 (5 scenes × ${duration} s) ..." >&2
+    glmark2_round "$tmp/glmark2-$round.txt"
+    echo "round $round/$rounds: shadelab bench (${frames} frames per configuration) ..." >&2
+    "$shadelab" bench --size 800x600 --frames "$frames" \
+        --filter 'frame/(glmark2-equivalent/|limits/(clear|fill)/)' \
+        --json "$tmp/shadelab-$round.json" >"$tmp/shadelab-$round.txt" 2>&1 ||
+        fail "shadelab bench failed: $(tail -5 "$tmp/shadelab-$round.txt")"
+done
+
+python3 - "$tmp" "$rounds" "$duration" <<'EOF'
+import json, re, statistics, sys, zlib
+
+tmp, rounds, duration = sys.argv[1], int(sys.argv[2]), sys.argv[3]
+
+def png_rgb(path):
+    """The pixels of shadelab's 8-bit RGB PNG (non-interlaced), as rows of bytes."""
+    data = open(path, "rb").read()
+    pos, idat, width, height, channels = 8, b"", 0, 0, 3
+    while pos < len(data):
+        length = int.from_bytes(data[pos:pos + 4], "big")
+        kind, body = data[pos + 4:pos + 8], data[pos + 8:pos + 8 + length]
+        if kind == b"IHDR":
+            width, height = int.from_bytes(body[0:4], "big"), int.from_bytes(body[4:8], "big")
+            channels = {2: 3, 6: 4}[body[9]]
+        elif kind == b"IDAT":
+            idat += body
+        pos += 12 + length
+    raw, stride, rows, previous = zlib.decompress(idat), width * channels, [], bytearray(width * channels)
+    for y in range(height):
+        kind, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for x in range(stride):
+            a = line[x - channels] if x >= channels else 0
+            b, c = previous[x], previous[x - channels] if x >= channels else 0
+            if kind == 1: line[x] = (line[x] + a) & 255
+            elif kind == 2: line[x] = (line[x] + b) & 255
+            elif kind == 3: line[x] = (line[x] + (a + b) // 2) & 255
+            elif kind == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[x] = (line[x] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        rows.append(line)
+        previous = line
+    return width, height, channels, rows
+
+width, height, channels, rows = png_rgb(f"{tmp}/coverage.png")
+covered = sum(1 for row in rows for x in range(0, len(row), channels)
+              if tuple(row[x:x + 3]) != (255, 0, 255))  # the scene's background is magenta
+
+glmark2, shadelab = {}, {}
+for r in range(1, rounds + 1):
+    for line in open(f"{tmp}/glmark2-{r}.txt"):
+        m = re.match(r"\[(\w+)\] (.*): FPS: \d+ FrameTime: ([\d.]+) ms", line)
+        if m:
+            mode = re.search(r"shading=([\w-]+)", m.group(2))
+            glmark2.setdefault(mode.group(1) if mode else m.group(1), []).append(float(m.group(3)))
+    report = json.load(open(f"{tmp}/shadelab-{r}.json"))
+    renderer = report["renderer"]
+    for name, figures in report["results"].items():
+        shadelab.setdefault(name, []).append(figures)
+
+def med(values):
+    return statistics.median(values)
+
+def sl(name, key):
+    return med([f[key] for f in shadelab[name]])
+
+print(f"\nshadelab: {renderer}; glmark2 under Xvfb, --off-screen (glFinish per frame, as shadelab), 800x600")
+print(f"coverage: shadelab render of the equivalent scene covers {covered} px "
+      f"({100 * covered / (width * height):.1f} % of {width}x{height}; the bench counted "
+      f"{sl('frame/glmark2-equivalent/phong', 'covered_px'):.0f} px); glmark2's cat about 15-20 %")
+print(f"frame times in ms: glmark2's mean over {duration} s, shadelab's mean (median) over its frames; "
+      f"median over {rounds} round(s); ratio = shadelab mean / glmark2 mean\n")
+equivalent = "frame/glmark2-equivalent/"
+rows = [("clear", "clear", "frame/limits/clear"),
+        ("gouraud", "gouraud (directional light, diffuse only)", equivalent + "gouraud"),
+        ("blinn-phong-inf", "phong shading, blinn-phong, directional", equivalent + "blinn-phong-inf"),
+        ("phong", "phong shading, phong, point light", equivalent + "phong"),
+        ("cel", "toon, 2 bands, point light", equivalent + "cel")]
+print(f"{'glmark2':<16} {'ms':>7}   {'shadelab':<42} {'ms':>7} {'(median)':>9}  {'ratio':>6}")
+for g, label, name in rows:
+    gm, sm, sd = med(glmark2[g]), sl(name, "mean_ms"), sl(name, "median_ms")
+    print(f"{g:<16} {gm:7.2f}   {label:<42} {sm:7.2f} {f'({sd:.2f})':>9}  {sm / gm:6.2f}")
+print("\nshadelab's limits for this geometry (no lighting):")
+for label, name in [("full-screen fill, 800x600", "frame/limits/fill"),
+                    ("one-colour sphere, back faces drawn (as shadelab)", equivalent + "one-colour"),
+                    ("one-colour sphere, back faces culled (as glmark2)", equivalent + "one-colour-culled")]:
+    print(f"  {label:<58} {sl(name, 'mean_ms'):7.2f} ms  fragments/covered px "
+          f"{sl(name, 'fragments_per_px'):.2f}")
+EOF
