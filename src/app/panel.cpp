@@ -113,7 +113,7 @@ void Panel::draw(DemoState& state, const std::string& status) {
             if (materialControls(scene.objects[0].material))
                 for (SceneObject& o : scene.objects) o.material = scene.objects[0].material;
         }
-        if (ImGui::CollapsingHeader("lights", ImGuiTreeNodeFlags_DefaultOpen))
+        if (ImGui::CollapsingHeader("lights"))
             for (std::size_t i = 0; i < scene.lights.size(); ++i) lightControls(scene.lights[i], int(i));
         if (ImGui::CollapsingHeader("toon")) {
             int bands = scene.toonBands;
