@@ -34,6 +34,7 @@ CameraFrame cameraFrame(const glm::dvec3& eye, const glm::dvec3& target, const g
     // Normalizing up first makes the test scale-free and keeps a tiny up (1e-151) from underflowing:
     // |t̂ × w| = sin θ, and 1e-9 rad is far below any usable camera and far above rounding noise.
     const double upLength = glm::length(up);
+    if (!(upLength > 0)) throw InputError("camera.up: must be non-zero, got " + str(up));
     const glm::dvec3 side = upLength > 0 ? glm::cross(up / upLength, w) : glm::dvec3(0);
     if (!(glm::length(side) > 1e-9))
         throw InputError("camera: up " + str(up) + " is parallel to the view direction " + str(-w) +

@@ -117,10 +117,18 @@ glm::dvec3 safeNormalize(const glm::dvec3& v, const glm::dvec3& fallback) {
     return scaled / glm::length(scaled);
 }
 
-glm::dvec3 shade(const SurfacePoint& p, const Material& material, std::span<const Light> lights,
+glm::dvec3 capColor(const glm::dvec3& color) { return glm::min(color, glm::dvec3(kMaxColorComponent)); }
+
+glm::dvec3 shade(const SurfacePoint& p, const Material& uncapped, std::span<const Light> lights,
                  ShadeOptions options) {
+    const Material material{capColor(uncapped.ambient), capColor(uncapped.diffuse), capColor(uncapped.specular),
+                            uncapped.shininess};
     glm::dvec3 color(0.0);
-    for (const Light& light : lights) {
+    for (const Light& uncappedLight : lights) {
+        Light light = uncappedLight;
+        light.ambient = capColor(light.ambient);
+        light.diffuse = capColor(light.diffuse);
+        light.specular = capColor(light.specular);
         color += material.ambient * light.ambient; // neither attenuated nor spot-limited
         if (light.type == LightType::Ambient) continue;
 

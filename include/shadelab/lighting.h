@@ -72,6 +72,13 @@ struct ShadeOptions {
 glm::dvec3 shade(const SurfacePoint& point, const Material& material, std::span<const Light> lights,
                  ShadeOptions options);
 
+// Colours and intensities are capped at kMaxColorComponent before they are lit, in C++ and (on upload) in
+// GLSL alike: a product of two stays below 1e36, inside float's range, so no term becomes Inf and no
+// Inf·0 becomes NaN on the way to the clamp. The cap changes no pixel a valid scene can show: a term
+// that large is 1 after clamping either way.
+inline constexpr double kMaxColorComponent = 1e18;
+glm::dvec3 capColor(const glm::dvec3& color);
+
 // Clamp to [0, 1] (a NaN becomes 0): what reaches a pixel.
 glm::dvec3 clampColor(const glm::dvec3& color);
 

@@ -57,7 +57,10 @@ int HeadlessRenderer::programsBuilt() const {
     return renderer_->programsBuilt();
 }
 
+// Validated first, so a bad value is reported with its JSON path (objects[1].subdivisions, image.width)
+// rather than by whichever GL step would trip over it.
 Image HeadlessRenderer::render(const Scene& scene) {
+    validateScene(scene);
     context_->makeCurrent();
     const gl::RenderTarget target(scene.width, scene.height, gl::ColorFormat::Rgba8,
                                   gl::depthFormatFor(scene.depth));
@@ -67,6 +70,7 @@ Image HeadlessRenderer::render(const Scene& scene) {
 }
 
 ImageF HeadlessRenderer::renderFloat(const Scene& scene) {
+    validateScene(scene);
     context_->makeCurrent();
     const gl::RenderTarget target(scene.width, scene.height, gl::ColorFormat::Rgba32F,
                                   gl::depthFormatFor(scene.depth));

@@ -45,8 +45,8 @@ int lightTypeCode(LightType type) {
 
 // One light's uniforms; `light` is already in view space.
 void setLight(GLuint program, const std::string& prefix, const Light& light) {
-    setVec3(program, prefix + "diffuse", light.diffuse);
-    setVec3(program, prefix + "specular", light.specular);
+    setVec3(program, prefix + "diffuse", capColor(light.diffuse));
+    setVec3(program, prefix + "specular", capColor(light.specular));
     setVec3(program, prefix + "positionView", light.position);
     setVec3(program, prefix + "directionView", safeNormalize(light.direction, glm::dvec3(0, 0, -1)));
     setFloat(program, prefix + "cosCutoff", std::cos(light.cutoffDeg * std::numbers::pi / 180));
@@ -62,7 +62,7 @@ void setUberLights(GLuint program, const std::vector<Light>& lightsView) {
         const Light& light = lightsView[std::size_t(i)];
         const std::string prefix = "uLights[" + std::to_string(i) + "].";
         setInt(program, prefix + "type", lightTypeCode(light.type));
-        setVec3(program, prefix + "ambient", light.ambient);
+        setVec3(program, prefix + "ambient", capColor(light.ambient));
         setLight(program, prefix, light);
     }
 }
@@ -74,18 +74,18 @@ void setSpecializedLights(GLuint program, const std::vector<Light>& lightsView) 
     int counts[4] = {0, 0, 0, 0};
     static constexpr const char* kArrays[4] = {"", "uDirectionalLights[", "uPointLights[", "uSpotLights["};
     for (const Light& light : lightsView) {
-        ambient += light.ambient;
+        ambient += capColor(light.ambient);
         const int type = lightTypeCode(light.type);
         if (type == 0) continue;
         setLight(program, kArrays[type] + std::to_string(counts[type]++) + "].", light);
     }
-    setVec3(program, "uAmbientLight", ambient);
+    setVec3(program, "uAmbientLight", capColor(ambient));
 }
 
 void setMaterial(GLuint program, const Material& material) {
-    setVec3(program, "uMaterialAmbient", material.ambient);
-    setVec3(program, "uMaterialDiffuse", material.diffuse);
-    setVec3(program, "uMaterialSpecular", material.specular);
+    setVec3(program, "uMaterialAmbient", capColor(material.ambient));
+    setVec3(program, "uMaterialDiffuse", capColor(material.diffuse));
+    setVec3(program, "uMaterialSpecular", capColor(material.specular));
     setFloat(program, "uShininess", std::max(material.shininess, 1.0));
 }
 
