@@ -26,6 +26,9 @@ CameraFrame cameraFrame(const glm::dvec3& eye, const glm::dvec3& target, const g
     if (!finite(eye) || !finite(target) || !finite(up))
         throw InputError("camera: eye, target and up must be finite");
     const glm::dvec3 back = eye - target;
+    if (!finite(back))
+        throw InputError("camera: eye " + str(eye) + " and target " + str(target) +
+                         " are too far apart for double precision; move them closer together");
     const double distance = glm::length(back);
     if (!(distance > 0))
         throw InputError("camera: eye " + str(eye) + " equals target " + str(target) +

@@ -109,7 +109,7 @@ std::string joinKeys(std::span<const std::string_view> keys) {
 // ---- JSON paths: objects[0].material.diffuse[2] ----
 
 bool isPlainKey(std::string_view key) {
-    if (key.empty()) return false;
+    if (key.empty() || key.size() > kMaxQuotedChars) return false; // a long key is quoted, and so truncated
     for (char c : key)
         if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-')) return false;
     return true;
@@ -336,6 +336,8 @@ std::string_view withoutExceptionId(std::string_view message) {
 // built with a callback, which made a 100 000-element array take minutes.
 class PathTrackingSax : public nlohmann::json_sax<Json> {
 public:
+    explicit PathTrackingSax(std::string_view text) : text_(text) {}
+
     bool null() override { return valueDone(); }
     bool boolean(bool) override { return valueDone(); }
     bool number_integer(number_integer_t) override { return valueDone(); }
@@ -357,9 +359,20 @@ public:
 
     bool parse_error(std::size_t byte, const std::string& lastToken, const Json::exception& e) override {
         // 406 is "number overflow": 1e999 would be inf, which the format forbids like any non-finite number.
-        if (e.id == 406) fail(path(), "must be finite, got " + lastToken);
-        fail("", "invalid JSON at byte " + std::to_string(byte) + ": " +
-                     std::string(withoutExceptionId(e.what())));
+        if (e.id == 406)
+            fail(path(), "must be finite, got " + (lastToken.size() > kMaxQuotedChars
+                                                       ? lastToken.substr(0, kMaxQuotedChars) + "..."
+                                                       : lastToken));
+        // Not JSON at all, but what a user who means "not finite" writes: name the field and say so.
+        for (std::string_view literal : {"-Infinity", "Infinity", "NaN"}) {
+            const std::size_t at = text_.find(literal, byte >= 2 ? byte - 2 : 0);
+            if (at != std::string_view::npos && at <= byte)
+                fail(path(),
+                     "must be finite, got " + std::string(literal) + " (JSON has no NaN or Infinity)");
+        }
+        std::string message(withoutExceptionId(e.what()));
+        if (message.size() > 200) message = message.substr(0, 200) + "…";
+        fail("", "invalid JSON at byte " + std::to_string(byte) + ": " + message);
     }
 
 private:
@@ -384,12 +397,13 @@ private:
         return true;
     }
 
+    std::string_view text_;
     std::vector<Frame> frames_;
 };
 
 Json parseJson(std::string_view text) {
     checkNesting(text);
-    PathTrackingSax checker;
+    PathTrackingSax checker(text);
     Json::sax_parse(text.begin(), text.end(), &checker);
     try {
         return Json::parse(text.begin(), text.end());
@@ -832,6 +846,7 @@ void validateScene(const Scene& scene) {
         checkObject(scene.objects[i], indexPath("objects", i));
     checkLightCount(scene.lights.size());
     for (std::size_t i = 0; i < scene.lights.size(); ++i) checkLight(scene.lights[i], indexPath("lights", i));
+    (void)sceneView(scene); // the derived matrices must be finite too
 }
 
 SceneView sceneView(const Scene& scene) {
@@ -857,6 +872,14 @@ SceneView sceneView(const Scene& scene) {
         failWithin("projection", e);
     }
     view.depth = scene.depth;
+    // Valid planes can still be too close together or too large for double (left 0, right 1e-320;
+    // near 1e200): the matrices must come out finite, or the projection is an input error.
+    auto finiteMatrix = [](const glm::dmat4& m) {
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r)
+                if (!std::isfinite(m[c][r])) return false;
+        return true;
+    };
     if (scene.depth == DepthMode::Standard)
         view.clipFromView =
             view.orthographic ? orthographicClipFromView(view.volume) : perspectiveClipFromView(view.volume);
@@ -865,6 +888,13 @@ SceneView sceneView(const Scene& scene) {
             view.orthographic
                 ? reversedOrthographicClipFromView(view.volume)
                 : reversedPerspectiveClipFromView(view.volume, scene.depth == DepthMode::ReversedInfinite);
+    if (!finiteMatrix(view.clipFromView))
+        fail("projection",
+             "its planes give a non-finite projection matrix (left/right, bottom/top or near/far "
+             "too close together or too large for double precision); choose a wider or smaller "
+             "volume");
+    if (!finiteMatrix(view.viewFromWorld))
+        fail("camera", "eye and target give a non-finite view matrix; move them closer to the origin");
     return view;
 }
 

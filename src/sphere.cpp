@@ -74,6 +74,7 @@ glm::dvec3 faceNormal(const std::vector<glm::dvec3>& p, const glm::uvec3& t) {
 
 // Bytes for a level, in double so that absurd levels (asked for by mistake) do not wrap around.
 double memoryBytes(int level) {
+    level = std::min(level, 1000); // 2·level must not overflow int; 4^1000 is inf in double, which is fine
     const double f = std::ldexp(4.0, 2 * level), v = std::ldexp(2.0, 2 * level) + 2;
     const double cpu = v * 2 * sizeof(glm::dvec3) + f * (sizeof(glm::uvec3) + sizeof(glm::dvec3));
     // The last split's midpoint table: 3F/8 edges in at most 4× as many slots of key + value.

@@ -218,6 +218,11 @@ void writeJson(const Collector& c, const std::vector<Ratio>& rs, const BenchOpti
 } // namespace
 
 int runBench(const BenchOptions& options) {
+    try { // Google Benchmark would report a bad expression, run nothing and exit 0
+        (void)std::regex(options.filter, std::regex::extended);
+    } catch (const std::regex_error& e) {
+        throw InputError("--filter: not a regular expression: \"" + options.filter + "\" (" + e.what() + ")");
+    }
     // Compile times must be compiles: Mesa's on-disk shader cache would turn repeats into look-ups.
     ::setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
     Gpu gpu(options);

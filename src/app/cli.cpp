@@ -22,12 +22,18 @@ std::string joined(std::string_view a, std::string_view b, std::string_view c = 
 
 void addSceneFlags(CLI::App& command, SceneOverrides& o) {
     command.add_option("--shading", o.shading,
-                       "Shading mode: " + joined("flat", "gouraud", "phong", "toon") + " (overrides the scene)");
+                       "Shading mode: " + joined("flat", "gouraud", "phong", "toon") +
+                           " (overrides the scene)");
     command.add_option("--lighting", o.lighting, "Lighting model: phong, blinn-phong (overrides the scene)");
     command.add_option("--subdivisions", o.subdivisions,
                        "Subdivision level of every object, 0.." + std::to_string(kMaxSubdivisions) +
                            ", or auto: the smallest level whose silhouette error stays below --tolerance-px");
-    command.add_option("--tolerance-px", o.tolerancePx, "Silhouette error auto subdivision allows (default 0.5)");
+    command.add_option("--tolerance-px", o.tolerancePx,
+                       "Silhouette error auto subdivision allows (default 0.5)");
+    command.add_option(
+        "--depth", o.depth,
+        "Depth mode: standard (DESIGN's [-1,1] convention), reversed (reversed-Z, 32-bit float "
+        "depth) or reversed-infinite (reversed-Z with the far plane at infinity)");
     command.add_option("--size", o.size, "Image size WxH, e.g. 512x512 (overrides the scene)");
 }
 
@@ -81,8 +87,10 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
 
     BenchOptions bench;
     std::string benchBackend = "egl", benchSize = "800x600", benchJson;
-    CLI::App* benchCommand = cli.add_subcommand("bench", "Benchmarks, reported as ratios measured in one run");
-    benchCommand->add_option("--backend", benchBackend, "Headless context: egl or osmesa")->capture_default_str();
+    CLI::App* benchCommand =
+        cli.add_subcommand("bench", "Benchmarks, reported as ratios measured in one run");
+    benchCommand->add_option("--backend", benchBackend, "Headless context: egl or osmesa")
+        ->capture_default_str();
     benchCommand->add_option("--size", benchSize, "Frame size WxH")->capture_default_str();
     benchCommand->add_option("--frames", bench.frames, "Timed frames per configuration")
         ->capture_default_str()
@@ -107,7 +115,8 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
         // The error_code overload: a name too long to stat is not a scene file either, not a run-time error.
         std::error_code ec;
         if (!demoScene.empty() && !std::filesystem::exists(demoScene, ec))
-            throw InputError("\"" + demoScene + "\" is neither a subcommand (render, reference) nor a scene file");
+            throw InputError("\"" + demoScene +
+                             "\" is neither a subcommand (render, reference) nor a scene file");
         std::ostringstream out, err;
         cli.exit(e, out, err); // CLI11's message naming the argument, and its "Run with --help" hint
         throw InputError(withoutTrailingNewlines(err.str()));

@@ -19,13 +19,13 @@ struct ParsedCommand {
     std::string text;
     int exitCode = kExitOk;
 
-    std::string scene;            // Demo, Render, Reference: the scene file; empty for the defaults
-    SceneOverrides overrides;     // Demo, Render, Reference
-    std::string out;              // Render, Reference: --out
-    std::string backend = "egl";  // Render, Bench: --backend, checked by backendFromArgument
-    bool specialize = true;       // Render: --specialize
-    DemoOptions demo;             // Demo
-    BenchOptions bench;           // Bench: frames, warm-up and filter; size, backend and JSON are below
+    std::string scene;           // Demo, Render, Reference: the scene file; empty for the defaults
+    SceneOverrides overrides;    // Demo, Render, Reference
+    std::string out;             // Render, Reference: --out
+    std::string backend = "egl"; // Render, Bench: --backend, checked by backendFromArgument
+    bool specialize = true;      // Render: --specialize
+    DemoOptions demo;            // Demo
+    BenchOptions bench;          // Bench: frames, warm-up and filter; size, backend and JSON are below
     std::string benchSize = "800x600", benchJson; // Bench: --size (checked by composeSize), --json
 };
 

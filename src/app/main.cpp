@@ -1,142 +1,54 @@
-// shadelab's command line: the demo window (default), `render` and `reference` (DESIGN §5).
+// shadelab's entry point: the demo window (default), `render`, `reference` and `bench` (DESIGN §5), and the
+// exit codes: 0 success, 2 bad input, 1 run-time failure.
 #include <cstdio>
 #include <exception>
-#include <filesystem>
-
-#include <CLI/CLI.hpp>
 
 #include "app/bench.h"
+#include "app/cli.h"
 #include "app/commands.h"
-#include "app/demo_state.h"
 #include "shadelab/errors.h"
 
 namespace {
 
 using namespace shadelab;
 
-std::string joined(std::string_view a, std::string_view b, std::string_view c = {}, std::string_view d = {}) {
-    std::string out(a);
-    for (std::string_view s : {b, c, d})
-        if (!s.empty()) out.append(", ").append(s);
-    return out;
-}
-
-void addSceneFlags(CLI::App& command, app::SceneOverrides& o) {
-    command.add_option("--shading", o.shading,
-                       "Shading mode: " + joined("flat", "gouraud", "phong", "toon") +
-                           " (overrides the scene)");
-    command.add_option("--lighting", o.lighting, "Lighting model: phong, blinn-phong (overrides the scene)");
-    command.add_option("--subdivisions", o.subdivisions,
-                       "Subdivision level of every object, 0.." + std::to_string(kMaxSubdivisions) +
-                           ", or auto: the smallest level whose silhouette error stays below --tolerance-px");
-    command.add_option("--tolerance-px", o.tolerancePx,
-                       "Silhouette error auto subdivision allows (default 0.5)");
-    command.add_option(
-        "--depth", o.depth,
-        "Depth mode: standard (DESIGN's [-1,1] convention), reversed (reversed-Z, 32-bit float "
-        "depth) or reversed-infinite (reversed-Z with the far plane at infinity)");
-    command.add_option("--size", o.size, "Image size WxH, e.g. 512x512 (overrides the scene)");
-}
-
+// Runs what the command line asks for (its parsing lives in app/cli.cpp, where the fuzzer reaches it).
 int run(int argc, char** argv) {
-    CLI::App cli{"shadelab: flat, Gouraud, Phong and toon shading under Phong and Blinn-Phong lighting, on a "
-                 "sphere subdivided from a tetrahedron.\nWithout a subcommand: the demo window (or, with no "
-                 "display, the showcase PNG).",
-                 "shadelab"};
-    cli.set_help_all_flag("--help-all", "Help for every subcommand");
-    std::string demoScene;
-    app::DemoOptions demo;
-    app::SceneOverrides demoFlags;
-    cli.add_option("scene", demoScene, "Scene file (JSON) for the demo; the defaults if omitted");
-    addSceneFlags(cli, demoFlags);
-    cli.add_option("--showcase-out", demo.showcaseOut, "Where the showcase goes when there is no display")
-        ->capture_default_str();
-    cli.add_option("--screenshot-dir", demo.screenshotDir, "Where S saves shadelab-NNN.png and .json")
-        ->capture_default_str()
-        ->check(CLI::ExistingDirectory);
-    cli.add_flag("--hide-panel", demo.hidePanel, "Start with the control panel hidden (C shows it)");
-    cli.add_flag("--gl-debug", demo.glDebug, "Ask for a KHR_debug context and print every GL message");
-    cli.footer("Demo keys:\n" + app::keyHelpText());
-
-    app::SceneOverrides renderFlags;
-    std::string renderScene, renderOut, backendName = "egl";
-    CLI::App* render = cli.add_subcommand("render", "Render a scene headless to a PNG");
-    render->add_option("scene", renderScene, "Scene file (JSON); the defaults of DESIGN §4 if omitted");
-    addSceneFlags(*render, renderFlags);
-    render->add_option("--backend", backendName, "Headless context: egl or osmesa")->capture_default_str();
-    bool specialize = true;
-    render
-        ->add_option("--specialize", specialize,
-                     "on: programs specialized to the scene's lights and terms; off: the uber program")
-        ->transform(CLI::IsMember({"on", "off", "true", "false", "1", "0"}, CLI::ignore_case))
-        ->capture_default_str();
-    render->add_option("--out", renderOut, "Output PNG")->required();
-
-    std::string referenceScene, referenceOut;
-    app::SceneOverrides referenceFlags;
-    CLI::App* reference = cli.add_subcommand("reference", "Ray-cast the exact spheres on the CPU to a PNG");
-    reference->add_option("scene", referenceScene, "Scene file (JSON)");
-    addSceneFlags(*reference, referenceFlags);
-    reference->add_option("--out", referenceOut, "Output PNG")->required();
-
-    app::BenchOptions bench;
-    std::string benchBackend = "egl", benchSize = "800x600", benchJson;
-    CLI::App* benchCommand =
-        cli.add_subcommand("bench", "Benchmarks, reported as ratios measured in one run");
-    benchCommand->add_option("--backend", benchBackend, "Headless context: egl or osmesa")
-        ->capture_default_str();
-    benchCommand->add_option("--size", benchSize, "Frame size WxH")->capture_default_str();
-    benchCommand->add_option("--frames", bench.frames, "Timed frames per configuration")
-        ->capture_default_str()
-        ->check(CLI::Range(3, 100000));
-    benchCommand->add_option("--warmup", bench.warmupFrames, "Untimed frames first")
-        ->capture_default_str()
-        ->check(CLI::Range(0, 1000));
-    benchCommand->add_option("--filter", bench.filter, "Regular expression: run only matching benchmarks");
-    benchCommand->add_option("--json", benchJson, "Also write every figure and ratio to this JSON file");
-
-    try {
-        cli.parse(argc, argv);
-    } catch (const CLI::Success& e) {
-        return cli.exit(e);
-    } catch (const CLI::ParseError& e) {
-        // A mistyped subcommand lands in the demo's scene argument; name it rather than the flags after it.
-        if (!demoScene.empty() && !std::filesystem::exists(demoScene)) {
-            std::fprintf(stderr,
-                         "shadelab: \"%s\" is neither a subcommand (render, reference) nor a scene file\n",
-                         demoScene.c_str());
-            return kExitInputError;
-        }
-        std::fprintf(stderr, "shadelab: ");
-        cli.exit(e); // prints the message naming the argument
-        return kExitInputError;
+    const app::ParsedCommand command = app::parseCommandLine(argc, argv);
+    using Kind = app::ParsedCommand::Kind;
+    switch (command.kind) {
+    case Kind::Exit:
+        std::fputs(command.text.c_str(), stdout);
+        return command.exitCode;
+    case Kind::Render: {
+        const Scene scene = app::composeScene(command.scene, command.overrides);
+        const Backend backend = app::backendFromArgument(command.backend);
+        app::checkOutputPath(command.out);
+        return app::runRender(scene, backend, command.out, command.specialize);
     }
-
-    if (*render) {
-        const Scene scene = app::composeScene(renderScene, renderFlags);
-        const Backend backend = app::backendFromArgument(backendName);
-        app::checkOutputPath(renderOut);
-        return app::runRender(scene, backend, renderOut, specialize);
-    }
-    if (*benchCommand) {
+    case Kind::Bench: {
+        app::BenchOptions bench = command.bench;
         Scene sized;
-        app::composeSize(sized, benchSize);
+        app::composeSize(sized, command.benchSize);
         bench.width = sized.width;
         bench.height = sized.height;
-        bench.backend = app::backendFromArgument(benchBackend);
-        if (!benchJson.empty()) {
-            app::checkOutputPath(benchJson, "--json");
-            bench.json = benchJson;
+        bench.backend = app::backendFromArgument(command.backend);
+        if (!command.benchJson.empty()) {
+            app::checkOutputPath(command.benchJson, "--json");
+            bench.json = command.benchJson;
         }
         return app::runBench(bench);
     }
-    if (*reference) {
-        const Scene scene = app::composeScene(referenceScene, referenceFlags);
-        app::checkOutputPath(referenceOut);
-        return app::runReference(scene, referenceOut);
+    case Kind::Reference: {
+        const Scene scene = app::composeScene(command.scene, command.overrides);
+        app::checkOutputPath(command.out);
+        return app::runReference(scene, command.out);
     }
-    app::checkOutputPath(demo.showcaseOut, "--showcase-out");
-    return app::runDemo(app::composeScene(demoScene, demoFlags), demo);
+    case Kind::Demo:
+        break;
+    }
+    app::checkOutputPath(command.demo.showcaseOut, "--showcase-out");
+    return app::runDemo(app::composeScene(command.scene, command.overrides), command.demo);
 }
 
 } // namespace

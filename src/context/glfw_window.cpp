@@ -79,10 +79,10 @@ Window::Window(int width, int height, const std::string& title, bool debugContex
     });
 }
 
-Window::~Window() {
-    glfwDestroyWindow(state_->window);
-    glfwTerminate();
-}
+// No glfwTerminate: it would dlclose libGL and with it Mesa's GLX driver, whose few allocations kept until
+// exit LeakSanitizer could then no longer attribute to a library (they show as "<unknown module>"); the
+// demo's process ends right after its window. (The same reason keeps eglTerminate out of egl_context.cpp.)
+Window::~Window() { glfwDestroyWindow(state_->window); }
 
 bool Window::shouldClose() const {
     return glfwWindowShouldClose(state_->window);

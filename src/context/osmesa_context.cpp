@@ -1,5 +1,9 @@
 // OSMesa: Mesa's off-screen software context, the second headless backend. GL/osmesa.h pulls in GL/gl.h,
 // which cannot share a translation unit with glad's gl.h, hence this file of its own.
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
 #include <GL/osmesa.h>
 
 #include "shadelab/context.h"
@@ -12,6 +16,13 @@ namespace {
 class OsmesaContext final : public HeadlessContext {
 public:
     OsmesaContext() {
+        // Mesa 22.3's OSMesa crashes inside OSMesaCreateContextAttribs for any gallium driver it lacks
+        // (measured: zink, swr, d3d12, virpipe, a typo); say so instead.
+        if (const char* driver = std::getenv("GALLIUM_DRIVER");
+            driver && *driver && std::strcmp(driver, "llvmpipe") != 0 && std::strcmp(driver, "softpipe") != 0)
+            throw RuntimeError(
+                std::string("osmesa: GALLIUM_DRIVER=") + driver +
+                " is not a driver OSMesa has (llvmpipe, softpipe); unset it or use --backend egl");
         // No depth bits: shadelab draws into its own framebuffer object with its own depth buffer.
         const int attributes[] = {OSMESA_FORMAT,
                                   OSMESA_RGBA,

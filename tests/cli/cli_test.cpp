@@ -28,125 +28,13 @@
 
 #include <gtest/gtest.h>
 
-extern char** environ;
+#include "cli/run_process.h"
 
 namespace {
 
+using namespace shadelab::cli_test;
+
 namespace fs = std::filesystem;
-
-// A run that takes longer is hung (e.g. a demo window that opened by mistake); it is killed and fails.
-constexpr int kTimeoutSeconds = 180;
-
-struct Outcome {
-    int exitCode = -1; // -1 when the process did not exit normally
-    std::string out, err;
-};
-
-std::string describe(const Outcome& run) {
-    return "exit code " + std::to_string(run.exitCode) + "\n--- stdout:\n" + run.out + "--- stderr:\n" +
-           run.err;
-}
-
-// Display::None is for the demo's no-display path only; everything else sees the environment unchanged.
-enum class Display { Inherit, None };
-
-std::vector<std::string> childEnvironment(Display display) {
-    std::vector<std::string> env;
-    for (char** entry = environ; *entry != nullptr; ++entry) {
-        const std::string_view text(*entry);
-        if (display == Display::None &&
-            (text.starts_with("DISPLAY=") || text.starts_with("WAYLAND_DISPLAY=")))
-            continue;
-        env.emplace_back(text);
-    }
-    return env;
-}
-
-std::vector<char*> nullTerminated(std::vector<std::string>& strings) {
-    std::vector<char*> pointers;
-    for (std::string& s : strings) pointers.push_back(s.data());
-    pointers.push_back(nullptr);
-    return pointers;
-}
-
-// Reads both pipes until the child closes them (or the deadline passes), so neither can fill and block it.
-bool drain(int outFd, int errFd, Outcome& run) {
-    pollfd fds[2] = {{outFd, POLLIN, 0}, {errFd, POLLIN, 0}};
-    std::string* sinks[2] = {&run.out, &run.err};
-    int open = 2;
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(kTimeoutSeconds);
-    while (open > 0) {
-        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-            deadline - std::chrono::steady_clock::now());
-        if (left.count() <= 0) return false;
-        if (::poll(fds, 2, int(left.count())) < 0) {
-            if (errno == EINTR) continue;
-            return false;
-        }
-        for (int i = 0; i < 2; ++i) {
-            if (fds[i].fd < 0 || fds[i].revents == 0) continue;
-            char buffer[4096];
-            const ssize_t n = ::read(fds[i].fd, buffer, sizeof buffer);
-            if (n > 0) {
-                sinks[i]->append(buffer, std::size_t(n));
-            } else if (n == 0 || errno != EINTR) {
-                ::close(std::exchange(fds[i].fd, -1));
-                --open;
-            }
-        }
-    }
-    return true;
-}
-
-// Runs shadelab with `args` in the folder `cwd`; stdout and stderr are captured separately.
-Outcome runShadelab(const std::vector<std::string>& args, const fs::path& cwd,
-                    Display display = Display::Inherit) {
-    std::vector<std::string> argStrings{SHADELAB_EXE};
-    argStrings.insert(argStrings.end(), args.begin(), args.end());
-    std::vector<std::string> envStrings = childEnvironment(display);
-    const std::vector<char*> argv = nullTerminated(argStrings), envp = nullTerminated(envStrings);
-    const std::string folder = cwd.string();
-
-    Outcome run;
-    int outPipe[2], errPipe[2];
-    if (::pipe2(outPipe, O_CLOEXEC) != 0 || ::pipe2(errPipe, O_CLOEXEC) != 0) {
-        ADD_FAILURE() << "pipe2: " << std::strerror(errno);
-        return run;
-    }
-    const pid_t pid = ::fork();
-    if (pid == 0) {
-        // Only async-signal-safe calls between fork and exec; dup2 clears O_CLOEXEC on 1 and 2.
-        const int devNull = ::open("/dev/null", O_RDONLY);
-        if (devNull < 0 || ::dup2(devNull, 0) < 0 || ::dup2(outPipe[1], 1) < 0 || ::dup2(errPipe[1], 2) < 0 ||
-            ::chdir(folder.c_str()) != 0)
-            ::_exit(126);
-        ::execve(argv[0], argv.data(), envp.data());
-        ::_exit(127);
-    }
-    ::close(outPipe[1]);
-    ::close(errPipe[1]);
-    if (pid < 0) {
-        ADD_FAILURE() << "fork: " << std::strerror(errno);
-        ::close(outPipe[0]);
-        ::close(errPipe[0]);
-        return run;
-    }
-    const bool finished = drain(outPipe[0], errPipe[0], run);
-    if (!finished) {
-        ::kill(pid, SIGKILL);
-        ::close(outPipe[0]);
-        ::close(errPipe[0]);
-    }
-    int status = 0;
-    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-    }
-    if (!finished) ADD_FAILURE() << "shadelab did not finish within " << kTimeoutSeconds << " s; killed";
-    if (WIFEXITED(status)) run.exitCode = WEXITSTATUS(status);
-    if (WIFSIGNALED(status)) run.err += "\n[killed by signal " + std::to_string(WTERMSIG(status)) + "]";
-    if (run.exitCode == 127 && run.out.empty() && run.err.empty())
-        ADD_FAILURE() << "could not execute " << SHADELAB_EXE;
-    return run;
-}
 
 void writeFile(const fs::path& path, std::string_view bytes) {
     std::ofstream(path, std::ios::binary) << bytes;

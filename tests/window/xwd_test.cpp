@@ -1,5 +1,6 @@
 // The XWD reader on files built here byte by byte, so what the window test sees of a capture is known to be
 // decoded right: both byte orders, padded rows, a colormap and a window name to skip, and the rejections.
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -40,14 +41,15 @@ struct XwdFile {
         out.push_back(0);
         out.insert(out.end(), ncolors * kXwdColorBytes, 0xab); // colormap entries: skipped, not read
         for (std::uint32_t y = 0; y < height; ++y) {
-            std::vector<std::uint8_t> row(bytesPerLine, 0xcd); // padding past the pixels
+            // Padding past the pixels; wide enough for them even when bytesPerLine is (deliberately) too short.
+            std::vector<std::uint8_t> row(std::max<std::size_t>(bytesPerLine, std::size_t(width) * 4), 0xcd);
             for (std::uint32_t x = 0; x < width; ++x) {
                 const std::uint32_t p = pixels[y * width + x];
                 for (int i = 0; i < 4; ++i)
                     row[x * 4 + std::uint32_t(i)] =
                         std::uint8_t(p >> (byteOrder == kXwdLsbFirst ? 8 * i : 24 - 8 * i));
             }
-            out.insert(out.end(), row.begin(), row.end());
+            out.insert(out.end(), row.begin(), row.begin() + std::ptrdiff_t(bytesPerLine));
         }
         return out;
     }

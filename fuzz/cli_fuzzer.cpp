@@ -1,0 +1,78 @@
+// libFuzzer target for the command-line parser (src/app/cli.h). The input, split on NUL bytes, is the
+// argument vector after argv[0]. parseCommandLine either returns what to run or throws InputError (CLI11's
+// parse errors surface as InputError); anything else is a crash. It reads no scene file and renders
+// nothing, so the only files it touches are the stat()s of --screenshot-dir and a mistyped subcommand.
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "app/cli.h"
+#include "shadelab/errors.h"
+
+namespace {
+
+using namespace shadelab;
+
+// A command line longer than this is not a command line; the bound keeps each run fast.
+constexpr std::size_t kMaxArguments = 64;
+
+[[noreturn]] void crash(std::string_view what, std::string_view detail) {
+    std::fprintf(stderr, "cli_fuzzer: %.*s: %.*s\n", int(what.size()), what.data(), int(detail.size()),
+                 detail.data());
+    std::abort();
+}
+
+std::vector<std::string> splitOnNul(std::string_view bytes) {
+    std::vector<std::string> arguments{"shadelab"};
+    while (!bytes.empty() && arguments.size() <= kMaxArguments) {
+        const std::size_t end = bytes.find('\0');
+        arguments.emplace_back(bytes.substr(0, end));
+        if (end == std::string_view::npos) break;
+        bytes.remove_prefix(end + 1);
+    }
+    return arguments;
+}
+
+// What parseCommandLine returns must be one of its kinds, each with what main.cpp needs to run it.
+void checkParsed(const app::ParsedCommand& command) {
+    using Kind = app::ParsedCommand::Kind;
+    switch (command.kind) {
+    case Kind::Exit:
+        if (command.exitCode != kExitOk)
+            crash("an Exit that is not a success", std::to_string(command.exitCode));
+        if (command.text.empty()) crash("an Exit with no text to print", "");
+        return;
+    case Kind::Render:
+    case Kind::Reference:
+        // CLI11 enforces --out as required; an empty value is left to checkOutputPath.
+        return;
+    case Kind::Bench:
+        if (command.bench.frames < 3 || command.bench.warmupFrames < 0)
+            crash("bench frames outside their CLI11 range", std::to_string(command.bench.frames));
+        return;
+    case Kind::Demo:
+        return;
+    }
+    crash("an unknown kind", std::to_string(int(command.kind)));
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    std::vector<std::string> arguments = splitOnNul({reinterpret_cast<const char*>(data), size});
+    std::vector<char*> argv;
+    for (std::string& argument : arguments) argv.push_back(argument.data());
+    argv.push_back(nullptr);
+    try {
+        checkParsed(app::parseCommandLine(int(arguments.size()), argv.data()));
+    } catch (const InputError& e) {
+        if (std::string_view(e.what()).empty()) crash("an InputError with no message", "");
+    } catch (const std::exception& e) {
+        crash("parseCommandLine threw something other than InputError", e.what());
+    }
+    return 0;
+}
