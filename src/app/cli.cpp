@@ -102,6 +102,26 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
     benchCommand->add_option("--json", benchJson, "Also write every figure and ratio to this JSON file");
 
     ParsedCommand command;
+    std::string reportScene, reportBackend = "egl";
+    CLI::App* reportCommand = cli.add_subcommand(
+        "report",
+        "Error against run time of every shading mode, lighting model and level: CSV, JSON, a plot");
+    reportCommand->add_option("scene", reportScene,
+                              "Scene file (JSON); the bundled scenes/report.json if omitted");
+    reportCommand->add_option("--out", command.reportOut, "Output folder (created if missing)")
+        ->capture_default_str();
+    reportCommand->add_option("--levels", command.reportLevels, "Levels N or A..B within 0..10")
+        ->capture_default_str();
+    reportCommand->add_flag("--no-auto", command.reportNoAuto, "Leave out the auto-subdivision rows");
+    reportCommand->add_option("--backend", reportBackend, "Headless context: egl or osmesa")
+        ->capture_default_str();
+    reportCommand->add_option("--frames", command.reportFrames, "Timed frames per configuration")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 100000));
+    reportCommand->add_option("--warmup", command.reportWarmup, "Untimed frames first")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 1000));
+
     try {
         cli.parse(argc, argv);
     } catch (const CLI::Success& e) {
@@ -115,8 +135,9 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
         // The error_code overload: a name too long to stat is not a scene file either, not a run-time error.
         std::error_code ec;
         if (!demoScene.empty() && !std::filesystem::exists(demoScene, ec))
-            throw InputError("\"" + demoScene +
-                             "\" is neither a subcommand (render, reference) nor a scene file");
+            throw InputError(
+                "\"" + demoScene +
+                "\" is neither a subcommand (render, reference, bench, report) nor a scene file");
         std::ostringstream out, err;
         cli.exit(e, out, err); // CLI11's message naming the argument, and its "Run with --help" hint
         throw InputError(withoutTrailingNewlines(err.str()));
@@ -135,6 +156,10 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
         command.backend = benchBackend;
         command.benchSize = benchSize;
         command.benchJson = benchJson;
+    } else if (*reportCommand) {
+        command.kind = ParsedCommand::Kind::Report;
+        command.scene = reportScene;
+        command.backend = reportBackend;
     } else if (*reference) {
         command.kind = ParsedCommand::Kind::Reference;
         command.scene = referenceScene;

@@ -12,21 +12,25 @@
 namespace shadelab::app {
 
 struct ParsedCommand {
-    enum class Kind { Exit, Demo, Render, Reference, Bench };
+    enum class Kind { Exit, Demo, Render, Reference, Bench, Report };
     Kind kind = Kind::Demo;
 
     // Kind::Exit (--help, --help-all): print `text` to stdout and exit with `exitCode`.
     std::string text;
     int exitCode = kExitOk;
 
-    std::string scene;           // Demo, Render, Reference: the scene file; empty for the defaults
+    std::string scene;           // Demo, Render, Reference, Report: the scene file; empty for the defaults
     SceneOverrides overrides;    // Demo, Render, Reference
     std::string out;             // Render, Reference: --out
-    std::string backend = "egl"; // Render, Bench: --backend, checked by backendFromArgument
+    std::string backend = "egl"; // Render, Bench, Report: --backend, checked by backendFromArgument
     bool specialize = true;      // Render: --specialize
     DemoOptions demo;            // Demo
     BenchOptions bench;          // Bench: frames, warm-up and filter; size, backend and JSON are below
     std::string benchSize = "800x600", benchJson; // Bench: --size (checked by composeSize), --json
+    // Report (app/report.h, which main.cpp builds the options of): scene and backend as above.
+    std::string reportOut = "report", reportLevels = "0..8";
+    bool reportNoAuto = false;
+    int reportFrames = 20, reportWarmup = 3;
 };
 
 // Throws InputError for anything CLI11 rejects, with CLI11's message (naming the argument) and its

@@ -6,6 +6,7 @@
 #include "app/bench.h"
 #include "app/cli.h"
 #include "app/commands.h"
+#include "app/report.h"
 #include "shadelab/errors.h"
 
 namespace {
@@ -43,6 +44,17 @@ int run(int argc, char** argv) {
         const Scene scene = app::composeScene(command.scene, command.overrides);
         app::checkOutputPath(command.out);
         return app::runReference(scene, command.out);
+    }
+    case Kind::Report: {
+        app::ReportOptions report;
+        if (!command.scene.empty()) report.scene = command.scene;
+        report.outDir = command.reportOut;
+        app::parseLevels(command.reportLevels, report);
+        report.includeAuto = !command.reportNoAuto;
+        report.backend = app::backendFromArgument(command.backend);
+        report.frames = command.reportFrames;
+        report.warmup = command.reportWarmup;
+        return app::runReport(report);
     }
     case Kind::Demo:
         break;

@@ -11,10 +11,10 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <functional>
 #include <map>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <regex>
 #include <set>
 #include <variant>
@@ -117,9 +117,10 @@ std::string levelLabel(const ReportRow& row) {
 
 namespace {
 
+// Clamped to [0, 1]; NaN → 0.
 double unit(float v) {
     return v > 0 ? (v < 1 ? v : 1) : 0;
-} // clamp to [0,1]; NaN → 0
+}
 
 std::vector<double> luminance(const float* rgba, std::size_t pixels) {
     std::vector<double> y(pixels);
@@ -134,17 +135,20 @@ std::vector<double> gaussianBlur(const std::vector<double>& in, int w, int h) {
     constexpr int kRadius = 5;
     constexpr double kSigma = 1.5;
     std::array<double, 2 * kRadius + 1> weight{};
-    for (int k = -kRadius; k <= kRadius; ++k)
-        weight[std::size_t(k + kRadius)] = std::exp(-k * k / (2 * kSigma * kSigma));
+    for (std::size_t i = 0; i < weight.size(); ++i) {
+        const double k = double(i) - kRadius;
+        weight[i] = std::exp(-k * k / (2 * kSigma * kSigma));
+    }
     auto pass = [&](const std::vector<double>& src, bool horizontal) {
         std::vector<double> dst(src.size());
         for (int y = 0; y < h; ++y)
             for (int x = 0; x < w; ++x) {
                 double sum = 0, norm = 0;
-                for (int k = -kRadius; k <= kRadius; ++k) {
+                for (std::size_t i = 0; i < weight.size(); ++i) {
+                    const int k = int(i) - kRadius;
                     const int sx = horizontal ? x + k : x, sy = horizontal ? y : y + k;
                     if (sx < 0 || sx >= w || sy < 0 || sy >= h) continue;
-                    const double wk = weight[std::size_t(k + kRadius)];
+                    const double wk = weight[i];
                     sum += wk * src[std::size_t(sy) * w + sx];
                     norm += wk;
                 }
@@ -274,11 +278,12 @@ std::string configurationName(ShadingMode shading, LightingModel lighting, int l
            (levelConfig == kAutoSubdivisions ? std::string("auto") : "level " + std::to_string(levelConfig));
 }
 
-// The median of `repeats` timings of `run` (one-off costs measured once are at the mercy of one page
-// fault or one preemption).
-double medianMs(int repeats, const std::function<void()>& run) {
+// The median of `repeats` synchronized timings of `run`, each after an untimed `reset` (a one-off cost
+// measured once is at the mercy of one page fault or one preemption).
+template <typename Reset, typename Run> double medianMs(int repeats, Reset reset, Run run) {
     std::vector<double> ms;
     for (int i = 0; i < repeats; ++i) {
+        reset();
         gl::finish();
         const auto start = Clock::now();
         run();
@@ -308,11 +313,16 @@ double compileMs(GlRun& gl, const gl::ProgramVariant& variant, gl::MeshLayout la
 void measureTime(GlRun& gl, const Scene& scene, const std::map<int, BuiltLevel>& built,
                  const ReportOptions& o, ReportRow& row) {
     const gl::MeshLayout layout = layoutOf(scene.shading);
-    for (const auto& [level, b] : built)
-        row.uploadMs += medianMs(kOneOffRepeats, [&] {
-            const gl::GpuMesh mesh(b.mesh, layout);
-            gl::finish();
-        });
+    for (const auto& entry : built) {
+        const SphereMesh& sphere = entry.second.mesh; // a structured binding cannot be captured (C++20)
+        std::optional<gl::GpuMesh> mesh;
+        row.uploadMs += medianMs(
+            kOneOffRepeats, [&] { mesh.reset(); },
+            [&] {
+                mesh.emplace(sphere, layout);
+                gl::finish();
+            });
+    }
 
     gl.frameTarget.bind();
     for (int i = 0; i < o.warmup; ++i) gl.renderer.render(scene, scene.width, scene.height);
@@ -320,7 +330,7 @@ void measureTime(GlRun& gl, const Scene& scene, const std::map<int, BuiltLevel>&
     std::vector<double> ms;
     ms.reserve(std::size_t(o.frames));
     for (int i = 0; i < o.frames; ++i) {
-        start = Clock::now();
+        const auto start = Clock::now();
         gl.renderer.render(scene, scene.width, scene.height);
         gl::finish();
         ms.push_back(msSince(start));
@@ -379,7 +389,9 @@ std::vector<ReportRow> measureReport(HeadlessContext& context, const Scene& scen
             const int level = subdivisionLevel(base, object);
             if (built.count(level)) continue;
             BuiltLevel& b = built[level];
-            b.buildMs = medianMs(kOneOffRepeats, [&] { b.mesh = buildSphere(level, scene.vertexNormals); });
+            b.buildMs = medianMs(
+                kOneOffRepeats, [&] { b.mesh = SphereMesh{}; },
+                [&] { b.mesh = buildSphere(level, scene.vertexNormals); });
             b.radialDeviation = maxRadialDeviation(b.mesh);
             b.normalErrorDeg = maxFaceNormalErrorDeg(b.mesh);
         }
@@ -398,7 +410,8 @@ std::vector<ReportRow> measureReport(HeadlessContext& context, const Scene& scen
                 row.autoLevel = levelConfigs[c] == kAutoSubdivisions;
                 for (const auto& [level, b] : built) row.meshBuildMs += b.buildMs;
                 setGeometry(configured, built, row);
-                const gl::ProgramVariant variant = gl::ProgramVariant::forScene(configured, gl.renderer.specialize());
+                const gl::ProgramVariant variant =
+                    gl::ProgramVariant::forScene(configured, gl.renderer.specialize());
                 if (!compileTimes.count(variant))
                     compileTimes[variant] = compileMs(gl, variant, layoutOf(configured.shading));
                 row.compileMs = compileTimes[variant];
@@ -512,6 +525,8 @@ constexpr const char* modeColor(ShadingMode shading) {
 
 std::string gnuplotScript(const std::vector<ReportRow>& rows, const ReportInfo& info) {
     std::string s;
+    std::set<std::string> blocks; // the data blocks written, by name
+    bool hasAuto = false;
     s += "# report.png of `shadelab report`: interior mean error against median frame time, one curve per\n"
          "# shading mode and lighting model, points labelled by subdivision level. Written by shadelab;\n"
          "# re-draw with: gnuplot report.gp > report.png\n";
@@ -525,7 +540,8 @@ std::string gnuplotScript(const std::vector<ReportRow>& rows, const ReportInfo& 
         gnuplotString(info.sceneName + ", " + std::to_string(info.width) + "x" + std::to_string(info.height) +
                       ", " + info.renderer + " (" + std::string(toString(info.backend)) + ")") +
         "\n";
-    s += "set logscale xy\nset format x '%g'\nset format y '%g'\n"
+    s += "set logscale xy\nset autoscale xfix\nset offsets graph 0.04, graph 0.08, 0, 0\n"
+         "set format x '%g'\nset format y '%g'\nset xtics add (0.2, 0.5, 2, 5, 20, 50, 200, 500)\n"
          "set xlabel 'median frame time, ms (glFinish after each frame)'\n"
          "set ylabel 'interior mean |error| per channel, 1/255'\n"
          "set grid xtics ytics mxtics mytics lc rgb '#dddddd'\n"
@@ -544,38 +560,50 @@ std::string gnuplotScript(const std::vector<ReportRow>& rows, const ReportInfo& 
                                   row.interiorMeanError, levelLabel(row).c_str());
                     block += line;
                 }
-                if (!block.empty())
-                    s += blockName(shading, lighting, autoLevel) + " << EOD\n" + block + "EOD\n";
+                if (block.empty()) continue;
+                const std::string name = blockName(shading, lighting, autoLevel);
+                s.append(name).append(" << EOD\n").append(block).append("EOD\n");
+                blocks.insert(name);
+                hasAuto = hasAuto || autoLevel;
             }
 
     std::vector<std::string> plots;
+    auto plot = [&](const std::string& block, std::string_view style, std::string_view title) {
+        std::string line = block;
+        line.append(" using ").append(style).append(title.empty() ? " notitle" : " title ");
+        if (!title.empty()) line += gnuplotString(title);
+        plots.push_back(std::move(line));
+    };
     for (bool labelled : {true, false})
         for (LightingModel lighting : kLightingModels) {
             if ((lighting == info.labelledLighting) != labelled) continue;
             for (ShadingMode shading : kShadingModes) {
                 const std::string name = blockName(shading, lighting, false);
-                if (s.find(name + " << EOD") == std::string::npos) continue;
-                const std::string color = std::string("lc rgb '") + modeColor(shading) + "'";
-                const std::string title =
-                    std::string(toString(shading)) + " (" + std::string(toString(lighting)) + " lighting)";
-                plots.push_back(name + " using 1:2 with linespoints " +
-                                (labelled ? "lw 2 pt 7 ps 1.1 dt 1 " : "lw 1 pt 6 ps 0.8 dt 2 ") + color +
-                                " title " + gnuplotString(title));
+                if (!blocks.count(name)) continue;
+                std::string color = "lc rgb '";
+                color.append(modeColor(shading)).append("'");
+                std::string title(toString(shading));
+                title.append(" (").append(toString(lighting)).append(" lighting)");
+                plot(name,
+                     std::string(labelled ? "1:2 with linespoints lw 2 pt 7 ps 1.1 dt 1 "
+                                          : "1:2 with linespoints lw 1 pt 6 ps 0.8 dt 2 ") +
+                         color,
+                     title);
                 if (!labelled) continue;
-                plots.push_back(name + " using 1:2:3 with labels offset char 0.9,0.55 font ',9' tc rgb '" +
-                                modeColor(shading) + "' notitle");
+                std::string labels = "1:2:3 with labels offset char 0.9,0.55 font ',9' tc rgb '";
+                labels.append(modeColor(shading)).append("'");
+                plot(name, labels, {});
                 const std::string autoName = blockName(shading, lighting, true);
-                if (s.find(autoName + " << EOD") != std::string::npos)
-                    plots.push_back(autoName + " using 1:2 with points pt 6 ps 2.6 lw 2 " + color +
-                                    " notitle");
+                if (blocks.count(autoName)) plot(autoName, "1:2 with points pt 6 ps 2.6 lw 2 " + color, {});
             }
         }
-    if (s.find("_auto << EOD") != std::string::npos)
-        plots.push_back("NaN with points pt 6 ps 2.6 lw 2 lc rgb 'black' title " +
-                        gnuplotString("auto subdivision (" + std::string(toString(info.labelledLighting)) +
-                                      " lighting)"));
+    if (hasAuto) {
+        std::string title = "auto subdivision (";
+        title.append(toString(info.labelledLighting)).append(" lighting)");
+        plots.push_back("NaN with points pt 6 ps 2.6 lw 2 lc rgb 'black' title " + gnuplotString(title));
+    }
     s += "plot ";
-    for (std::size_t i = 0; i < plots.size(); ++i) s += (i ? ", \\\n     " : "") + plots[i];
+    for (std::size_t i = 0; i < plots.size(); ++i) s.append(i ? ", \\\n     " : "").append(plots[i]);
     return s + "\n";
 }
 
@@ -655,7 +683,7 @@ public:
         const double elapsed = std::chrono::duration<double>(Clock::now() - start_).count();
         std::string eta;
         if (done > 0 && done < total)
-            eta = ", ~" + std::to_string(int(elapsed / done * (total - done) + 0.5)) + " s left";
+            eta = ", ~" + std::to_string(std::lround(elapsed / done * (total - done))) + " s left";
         std::fprintf(stderr, "\r\033[K[%s%s] %d/%d %.*s (%.0f s%s)",
                      std::string(std::size_t(filled), '#').c_str(),
                      std::string(std::size_t(kWidth - filled), '.').c_str(), done, total, int(what.size()),

@@ -43,9 +43,10 @@ struct ReportRow {
 
     // Time, milliseconds. Frames are GPU-synchronized (glFinish after each) into an RGBA8 target.
     double frameMedianMs = 0, frameP10Ms = 0, frameP90Ms = 0;
+    // One-off costs, the median of 3 unless said otherwise:
     double meshBuildMs = 0; // buildSphere on the CPU, every distinct level the objects use
     double uploadMs = 0;    // a GpuMesh constructed from the built mesh (float conversion + buffers), synced
-    double compileMs = 0;   // buildProgram of the configuration's variant + a first draw, synced
+    double compileMs = 0;   // buildProgram + first draw of the variant, synced; once per variant
 
     // Error against renderReference(scene), from the same frame rendered into an RGBA32F target.
     double interiorMeanError = 0, interiorMaxError = 0; // |Δ| per colour channel, in 1/255
