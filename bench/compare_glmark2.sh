@@ -162,8 +162,8 @@ for g, label, name in rows:
     print(f"{g:<16} {gm:7.2f}   {label:<42} {sm:7.2f} {f'({sd:.2f})':>9}  {sm / gm:6.2f}")
 print("\nshadelab's limits for this geometry (no lighting):")
 for label, name in [("full-screen fill, 800x600", "frame/limits/fill"),
-                    ("one-colour sphere, back faces drawn (as shadelab)", equivalent + "one-colour"),
-                    ("one-colour sphere, back faces culled (as glmark2)", equivalent + "one-colour-culled")]:
+                    ("one-colour sphere, back faces drawn", equivalent + "one-colour"),
+                    ("one-colour sphere, back faces culled (as shadelab and glmark2)", equivalent + "one-colour-culled")]:
     print(f"  {label:<58} {sl(name, 'mean_ms'):7.2f} ms  fragments/covered px "
           f"{sl(name, 'fragments_per_px'):.2f}")
 EOF
