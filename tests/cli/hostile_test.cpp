@@ -41,26 +41,6 @@ std::size_t longestOwnLine(const std::string& err) {
     return longest;
 }
 
-void writeFile(const fs::path& path, std::string_view bytes) {
-    std::ofstream(path, std::ios::binary) << bytes;
-}
-
-std::string readFile(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-// Every entry under `folder`, relative, folders with a trailing '/': a leftover temp file shows up here.
-std::set<std::string> listing(const fs::path& folder) {
-    std::set<std::string> names;
-    for (const fs::directory_entry& entry : fs::recursive_directory_iterator(folder)) {
-        std::string name = fs::relative(entry.path(), folder).string();
-        if (entry.is_directory()) name += '/';
-        names.insert(name);
-    }
-    return names;
-}
-
 std::string repeat(std::string_view piece, std::size_t times) {
     std::string out;
     out.reserve(piece.size() * times);

@@ -13,6 +13,9 @@
 #include <chrono>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <set>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -148,6 +151,26 @@ inline Outcome runShadelab(const std::vector<std::string>& args, const std::file
     if (run.exitCode == 127 && run.out.empty() && run.err.empty())
         ADD_FAILURE() << "could not execute " << SHADELAB_EXE;
     return run;
+}
+
+inline void writeFile(const std::filesystem::path& path, std::string_view bytes) {
+    std::ofstream(path, std::ios::binary) << bytes;
+}
+
+inline std::string readFile(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Every entry under `folder`, relative, folders with a trailing '/': a leftover temp file shows up here.
+inline std::set<std::string> listing(const std::filesystem::path& folder) {
+    std::set<std::string> names;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(folder)) {
+        std::string name = std::filesystem::relative(entry.path(), folder).string();
+        if (entry.is_directory()) name += '/';
+        names.insert(name);
+    }
+    return names;
 }
 
 } // namespace shadelab::cli_test

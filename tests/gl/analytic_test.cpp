@@ -82,19 +82,11 @@ INSTANTIATE_TEST_SUITE_P(Scenes, PhongAgainstReference, testing::ValuesIn(kCases
 // interior to the same object in both images (each coverage eroded by `erode` px, as interiorError does).
 std::vector<double> interiorPixelErrors(const ImageF& rendered, const ReferenceImage& reference,
                                         int erode = 2) {
-    const int w = rendered.width, h = rendered.height;
-    std::vector<int> renderedIds(reference.objectId.size(), -1);
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x)
-            if (rendered.pixel(x, y)[3] > 0.5f)
-                renderedIds[std::size_t(y) * w + x] = reference.objectId[std::size_t(y) * w + x];
-    const std::vector<bool> inReference = interiorMask(reference.objectId, w, h, erode);
-    const std::vector<bool> inRendered = interiorMask(renderedIds, w, h, erode);
+    const std::vector<bool> interior = sharedInterior(rendered, reference, erode);
     std::vector<double> errors;
-    for (int y = 0; y < h; ++y) {
-        for (int x = 0; x < w; ++x) {
-            const std::size_t i = std::size_t(y) * w + x;
-            if (!inReference[i] || !inRendered[i]) continue;
+    for (int y = 0; y < rendered.height; ++y) {
+        for (int x = 0; x < rendered.width; ++x) {
+            if (!interior[std::size_t(y) * rendered.width + x]) continue;
             double e = 0;
             for (int c = 0; c < 3; ++c)
                 e = std::max(

@@ -24,6 +24,8 @@ struct InteriorError {
     std::size_t pixels = 0;
 };
 InteriorError interiorError(const ImageF& rendered, const ReferenceImage& reference, int erode = 2);
+// The pixels interiorError measures: interior to the same object in the reference and in the render.
+std::vector<bool> sharedInterior(const ImageF& rendered, const ReferenceImage& reference, int erode = 2);
 
 // A sphere scene of size×size with one light of the given type, lit from the upper right front.
 Scene litSphereScene(int size, LightType light);
