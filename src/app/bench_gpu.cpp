@@ -9,13 +9,6 @@ namespace shadelab::app {
 
 using Clock = std::chrono::steady_clock;
 
-double percentile(std::vector<double> values, double p) {
-    std::sort(values.begin(), values.end());
-    const double index = p * double(values.size() - 1);
-    const std::size_t lo = std::size_t(index), hi = std::min(lo + 1, values.size() - 1);
-    return values[lo] + (index - double(lo)) * (values[hi] - values[lo]);
-}
-
 void setSpread(benchmark::State& state, const std::vector<double>& ms) {
     if (ms.empty()) return;
     state.counters["median_ms"] = percentile(ms, 0.5);

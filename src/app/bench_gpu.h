@@ -10,13 +10,13 @@
 #include <benchmark/benchmark.h>
 
 #include "app/bench.h"
+#include "app/frame_timing.h"
 #include "shadelab/context.h"
 #include "shadelab/gl/render_target.h"
 #include "shadelab/gl/renderer.h"
 
 namespace shadelab::app {
 
-double percentile(std::vector<double> values, double p);
 // Sets the median_ms, p10_ms and p90_ms counters from per-frame times.
 void setSpread(benchmark::State& state, const std::vector<double>& ms);
 

@@ -1,4 +1,4 @@
-// `shadelab report`. Frame times follow the bench's method (src/app/bench.cpp): one context, one renderer
+// `shadelab report`. Frame times follow the bench's method (app/frame_timing.h): one context, one renderer
 // and one offscreen target for the whole run, glFinish after every frame, median and 10th/90th percentiles
 // of the frames after a warm-up. The error of each configuration is taken from the same scene rendered
 // once more into an RGBA32F target, so that it is the shading's error and not the 8-bit rounding's.
@@ -27,6 +27,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/bundled_scenes.h"
+#include "app/frame_timing.h"
 #include "shadelab/atomic_file.h"
 #include "shadelab/errors.h"
 #include "shadelab/gl/loader.h"
@@ -243,13 +244,6 @@ double msSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// Linear interpolation between the order statistics of sorted values (bench.cpp's percentile).
-double quantile(const std::vector<double>& sorted, double p) {
-    const double index = p * double(sorted.size() - 1);
-    const std::size_t lo = std::size_t(index), hi = std::min(lo + 1, sorted.size() - 1);
-    return sorted[lo] + (index - double(lo)) * (sorted[hi] - sorted[lo]);
-}
-
 // One level's mesh, built and timed once per configuration of levels.
 struct BuiltLevel {
     SphereMesh mesh;
@@ -289,8 +283,7 @@ template <typename Reset, typename Run> double medianMs(int repeats, Reset reset
         run();
         ms.push_back(msSince(start));
     }
-    std::sort(ms.begin(), ms.end());
-    return quantile(ms, 0.5);
+    return percentile(ms, 0.5);
 }
 
 constexpr int kOneOffRepeats = 3;
@@ -325,20 +318,11 @@ void measureTime(GlRun& gl, const Scene& scene, const std::map<int, BuiltLevel>&
     }
 
     gl.frameTarget.bind();
-    for (int i = 0; i < o.warmup; ++i) gl.renderer.render(scene, scene.width, scene.height);
-    gl::finish();
-    std::vector<double> ms;
-    ms.reserve(std::size_t(o.frames));
-    for (int i = 0; i < o.frames; ++i) {
-        const auto start = Clock::now();
-        gl.renderer.render(scene, scene.width, scene.height);
-        gl::finish();
-        ms.push_back(msSince(start));
-    }
-    std::sort(ms.begin(), ms.end());
-    row.frameMedianMs = quantile(ms, 0.5);
-    row.frameP10Ms = quantile(ms, 0.1);
-    row.frameP90Ms = quantile(ms, 0.9);
+    const std::vector<double> ms =
+        timeFramesMs(o.warmup, o.frames, [&] { gl.renderer.render(scene, scene.width, scene.height); });
+    row.frameMedianMs = percentile(ms, 0.5);
+    row.frameP10Ms = percentile(ms, 0.1);
+    row.frameP90Ms = percentile(ms, 0.9);
 }
 
 void setGeometry(const Scene& scene, const std::map<int, BuiltLevel>& built, ReportRow& row) {
