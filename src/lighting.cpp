@@ -117,12 +117,14 @@ glm::dvec3 safeNormalize(const glm::dvec3& v, const glm::dvec3& fallback) {
     return scaled / glm::length(scaled);
 }
 
-glm::dvec3 capColor(const glm::dvec3& color) { return glm::min(color, glm::dvec3(kMaxColorComponent)); }
+glm::dvec3 capColor(const glm::dvec3& color) {
+    return glm::min(color, glm::dvec3(kMaxColorComponent));
+}
 
 glm::dvec3 shade(const SurfacePoint& p, const Material& uncapped, std::span<const Light> lights,
                  ShadeOptions options) {
-    const Material material{capColor(uncapped.ambient), capColor(uncapped.diffuse), capColor(uncapped.specular),
-                            uncapped.shininess};
+    const Material material{capColor(uncapped.ambient), capColor(uncapped.diffuse),
+                            capColor(uncapped.specular), uncapped.shininess};
     glm::dvec3 color(0.0);
     for (const Light& uncappedLight : lights) {
         Light light = uncappedLight;

@@ -82,7 +82,9 @@ Window::Window(int width, int height, const std::string& title, bool debugContex
 // No glfwTerminate: it would dlclose libGL and with it Mesa's GLX driver, whose few allocations kept until
 // exit LeakSanitizer could then no longer attribute to a library (they show as "<unknown module>"); the
 // demo's process ends right after its window. (The same reason keeps eglTerminate out of egl_context.cpp.)
-Window::~Window() { glfwDestroyWindow(state_->window); }
+Window::~Window() {
+    glfwDestroyWindow(state_->window);
+}
 
 bool Window::shouldClose() const {
     return glfwWindowShouldClose(state_->window);

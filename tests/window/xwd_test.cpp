@@ -41,7 +41,8 @@ struct XwdFile {
         out.push_back(0);
         out.insert(out.end(), ncolors * kXwdColorBytes, 0xab); // colormap entries: skipped, not read
         for (std::uint32_t y = 0; y < height; ++y) {
-            // Padding past the pixels; wide enough for them even when bytesPerLine is (deliberately) too short.
+            // Padding past the pixels; wide enough for them even when bytesPerLine is (deliberately) too
+            // short.
             std::vector<std::uint8_t> row(std::max<std::size_t>(bytesPerLine, std::size_t(width) * 4), 0xcd);
             for (std::uint32_t x = 0; x < width; ++x) {
                 const std::uint32_t p = pixels[y * width + x];
