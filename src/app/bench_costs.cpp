@@ -248,7 +248,7 @@ void countFragments(benchmark::State& state, Gpu& gpu, const std::function<void(
     state.counters["fragments_per_px"] = covered > 0 ? samples / covered : 0;
 }
 
-void registerFrame(Gpu& gpu, const std::string& name, std::function<void()> draw) {
+void registerFrame(Gpu& gpu, const std::string& name, const std::function<void()>& draw) {
     benchmark::RegisterBenchmark(name.c_str(),
                                  [&gpu, draw](benchmark::State& state) {
                                      gpu.renderer.setSpecialize(true);
@@ -476,7 +476,8 @@ double runProcess(const std::vector<std::string>& args, const char* unset, const
     return seconds;
 }
 
-void registerProcess(const std::string& name, std::function<std::vector<std::string>(const TempDir&)> args,
+void registerProcess(const std::string& name,
+                     const std::function<std::vector<std::string>(const TempDir&)>& args,
                      const char* unsetVariable = nullptr) {
     benchmark::RegisterBenchmark(name.c_str(),
                                  [args, unsetVariable](benchmark::State& state) {
