@@ -74,9 +74,12 @@ Scene composeScene(const std::string& path, const SceneOverrides& o) {
         scene.depth = *mode;
     }
     if (o.tolerancePx) {
-        if (!(*o.tolerancePx > 0) || !std::isfinite(*o.tolerancePx))
-            throw InputError("--tolerance-px: must be a positive number of pixels, got " +
-                             std::to_string(*o.tolerancePx));
+        if (!(*o.tolerancePx > 0) || !std::isfinite(*o.tolerancePx)) {
+            char value[32];
+            std::snprintf(value, sizeof value, "%g", *o.tolerancePx);
+            throw InputError(std::string("--tolerance-px: must be a positive number of pixels, got ") +
+                             value);
+        }
         scene.tolerancePx = *o.tolerancePx;
     }
     if (o.size) composeSize(scene, *o.size);
@@ -92,6 +95,9 @@ void checkOutputPath(const std::filesystem::path& out, const char* argument) {
         throw InputError(std::string(argument) + ": " + quoted(out.string()) +
                          " is a directory; give a file name such as out.png");
     const fs::path folder = out.has_parent_path() ? out.parent_path() : fs::path(".");
+    if (fs::exists(folder, ec) && !fs::is_directory(folder, ec))
+        throw InputError(std::string(argument) + ": " + quoted(folder.string()) +
+                         " is a file, not a folder; choose a path inside a folder");
     if (!fs::is_directory(folder, ec))
         throw InputError(std::string(argument) + ": the folder " + quoted(folder.string()) +
                          " does not exist; create it first or choose another path");
