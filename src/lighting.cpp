@@ -14,9 +14,6 @@ std::optional<Enum> parseEnum(std::string_view text, const std::array<Enum, N>& 
     return std::nullopt;
 }
 
-constexpr std::array kLightTypes = {LightType::Ambient, LightType::Directional, LightType::Point,
-                                    LightType::Spot};
-
 // Largest component below which a vector is treated as zero and not normalized (the same in GLSL, where
 // 1e-30 is still a normal float).
 constexpr double kTinyComponent = 1e-30;

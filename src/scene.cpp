@@ -41,8 +41,6 @@ constexpr std::array kProjectionTypes = {ProjectionType::Perspective, Projection
                                          ProjectionType::Orthographic};
 constexpr std::array kVertexNormals = {VertexNormals::Averaged, VertexNormals::Exact};
 constexpr std::array kDepthModes = {DepthMode::Standard, DepthMode::Reversed, DepthMode::ReversedInfinite};
-constexpr std::array kLightTypes = {LightType::Ambient, LightType::Directional, LightType::Point,
-                                    LightType::Spot};
 
 struct IntRange {
     int lo, hi;

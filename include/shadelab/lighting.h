@@ -19,6 +19,8 @@ enum class LightType { Ambient, Directional, Point, Spot };
 inline constexpr std::array kShadingModes = {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong,
                                              ShadingMode::Toon};
 inline constexpr std::array kLightingModels = {LightingModel::Phong, LightingModel::BlinnPhong};
+inline constexpr std::array kLightTypes = {LightType::Ambient, LightType::Directional, LightType::Point,
+                                           LightType::Spot};
 
 std::string_view toString(ShadingMode mode);    // "flat" | "gouraud" | "phong" | "toon"
 std::string_view toString(LightingModel model); // "phong" | "blinn-phong"

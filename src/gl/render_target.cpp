@@ -74,24 +74,23 @@ void RenderTarget::bind() const {
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
 }
 
-Image RenderTarget::readRgba8() const {
-    Image image(width_, height_);
+// Reads the colour attachment into `image` (rows top first) as GL `type` components.
+template <typename Pixels> Pixels RenderTarget::read(unsigned type, const char* stage) const {
+    Pixels image(width_, height_);
     bind();
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
-    checkGlError("reading back the image");
+    glReadPixels(0, 0, width_, height_, GL_RGBA, type, image.rgba.data());
+    checkGlError(stage);
     flipRows(image.rgba, width_, height_);
     return image;
 }
 
+Image RenderTarget::readRgba8() const {
+    return read<Image>(GL_UNSIGNED_BYTE, "reading back the image");
+}
+
 ImageF RenderTarget::readFloat() const {
-    ImageF image(width_, height_);
-    bind();
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, image.rgba.data());
-    checkGlError("reading back the float image");
-    flipRows(image.rgba, width_, height_);
-    return image;
+    return read<ImageF>(GL_FLOAT, "reading back the float image");
 }
 
 } // namespace shadelab::gl

@@ -26,6 +26,8 @@ public:
     int height() const { return height_; }
 
 private:
+    template <typename Pixels> Pixels read(unsigned type, const char* stage) const;
+
     int width_, height_;
     ColorFormat format_;
     Framebuffer fbo_;
