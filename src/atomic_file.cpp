@@ -1,8 +1,12 @@
 #include "shadelab/atomic_file.h"
 
+#include <array>
+#include <atomic>
 #include <cerrno>
+#include <climits>
+#include <csignal>
+#include <cstdlib>
 #include <cstring>
-#include <system_error>
 #include <utility>
 
 #include <fcntl.h>
@@ -10,6 +14,7 @@
 #include <unistd.h>
 
 #include "shadelab/errors.h"
+#include "shadelab/text.h"
 
 namespace shadelab {
 
@@ -18,18 +23,47 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string quoted(const fs::path& path) {
-    return "\"" + path.string() + "\"";
+    return "\"" + printable(path.string()) + "\"";
 }
 
-} // namespace
-
-[[noreturn]] void failWrite(std::string_view what, const fs::path& path, const std::string& reason) {
-    throw RuntimeError("cannot write " + std::string(what) + " " + quoted(path) + ": " + reason);
+std::string osError(int error = errno) {
+    return std::strerror(error);
 }
 
-namespace {
+// ---- the temporary files a signal must remove: a fixed table the handler can read without allocating ----
 
-// mkstemp creates files 0600; a finished render should get the permissions fopen would have given it.
+constexpr std::size_t kMaxLiveTemps = 16;
+struct TempSlot {
+    std::array<char, PATH_MAX> path{};
+    std::atomic<bool> used{false};
+};
+std::array<TempSlot, kMaxLiveTemps> gTemps;
+constexpr std::array kCleanupSignals{SIGINT, SIGTERM, SIGHUP};
+
+int registerTemp(const std::string& path) {
+    if (path.size() >= PATH_MAX) return -1;
+    for (std::size_t i = 0; i < gTemps.size(); ++i) {
+        TempSlot& slot = gTemps[i];
+        if (slot.used.load()) continue;
+        std::memcpy(slot.path.data(), path.c_str(), path.size() + 1);
+        slot.used.store(true);
+        return int(i);
+    }
+    return -1;
+}
+
+void unregisterTemp(int slot) {
+    if (slot >= 0) gTemps[std::size_t(slot)].used.store(false);
+}
+
+extern "C" void removeTempsAndReraise(int signal) {
+    for (TempSlot& slot : gTemps)
+        if (slot.used.load()) ::unlink(slot.path.data());
+    // SA_RESETHAND restored the default action; SA_NODEFER lets it act now.
+    ::raise(signal);
+}
+
+// mkstemp creates files 0600; a new output should get the permissions fopen would have given it.
 // umask can only be read by setting it, so this runs once.
 mode_t newFileMode() {
     static const mode_t mode = [] {
@@ -40,73 +74,254 @@ mode_t newFileMode() {
     return mode;
 }
 
-// A temporary file beside the target. Until commit() renames it over the target, the destructor removes it,
-// so an exception anywhere in the writer leaves the directory as it was.
-class TempFile {
-public:
-    TempFile(const fs::path& target, std::string_view what) : target_(target), what_(what) {
-        const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-        std::string pattern = (dir / ("." + target.filename().string() + ".XXXXXX")).string();
-        const int fd = ::mkstemp(pattern.data());
-        if (fd < 0)
-            failWrite(what_, target,
-                      "cannot create a temporary file in " + quoted(dir) + ": " + std::strerror(errno));
-        path_ = pattern;
-        // A throwing constructor skips the destructor, so these failures clean up themselves.
-        if (::fchmod(fd, newFileMode()) != 0 || !(file_ = ::fdopen(fd, "wb"))) {
-            const std::string reason = std::strerror(errno);
-            ::close(fd);
-            cleanUp();
-            failWrite(what_, target, "cannot open the temporary file: " + reason);
+const char* kindName(mode_t mode) {
+    if (S_ISDIR(mode)) return "a directory";
+    if (S_ISBLK(mode)) return "a block device";
+    if (S_ISSOCK(mode)) return "a socket";
+    return "not a file";
+}
+
+// write(2) until done; false with errno set on failure.
+bool writeAll(int fd, const char* data, std::size_t size) {
+    while (size > 0) {
+        const ssize_t n = ::write(fd, data, size);
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            return false;
         }
+        data += n;
+        size -= std::size_t(n);
     }
-    TempFile(const TempFile&) = delete;
-    TempFile& operator=(const TempFile&) = delete;
-    ~TempFile() { cleanUp(); }
-
-    FILE* stream() const { return file_; }
-
-    // Everything must be on disk before the rename, or a crash could leave a complete-looking empty file.
-    void close() {
-        if (std::fflush(file_) != 0) fail("flush");
-        if (::fsync(::fileno(file_)) != 0) fail("fsync");
-        FILE* file = std::exchange(file_, nullptr);
-        if (std::fclose(file) != 0) fail("close");
-    }
-
-    void commit() {
-        std::error_code error;
-        fs::rename(path_, target_, error);
-        if (error)
-            failWrite(what_, target_, "cannot rename " + quoted(path_) + " over it: " + error.message());
-        path_.clear();
-    }
-
-private:
-    [[noreturn]] void fail(const char* step) {
-        shadelab::failWrite(what_, target_,
-                            std::string(step) + " " + quoted(path_) + ": " + std::strerror(errno));
-    }
-
-    void cleanUp() noexcept {
-        if (file_) std::fclose(std::exchange(file_, nullptr));
-        if (!path_.empty()) ::unlink(path_.c_str());
-        path_.clear();
-    }
-
-    fs::path target_, path_;
-    std::string what_;
-    FILE* file_ = nullptr;
-};
+    return true;
+}
 
 } // namespace
 
+[[noreturn]] void failWrite(std::string_view what, const fs::path& path, const std::string& reason) {
+    throw RuntimeError("cannot write " + std::string(what) + " " + quoted(path) + ": " + reason);
+}
+
+OutputTarget resolveOutput(const fs::path& userPath, std::string_view field) {
+    const std::string name(field);
+    if (userPath.empty())
+        throw InputError(name + ": the output path is empty; give a file name such as out.png, or - for "
+                                "standard output");
+    if (userPath == "-") return {OutputTarget::Kind::Stdout, {}, name};
+    fs::path path = userPath;
+    for (int hops = 0;; ++hops) {
+        if (hops > 40)
+            throw InputError(name + ": " + quoted(userPath) +
+                             " is a loop of symbolic links; give a path that ends at a file");
+        struct stat st {};
+        if (::lstat(path.c_str(), &st) == 0 && S_ISLNK(st.st_mode)) {
+            std::array<char, PATH_MAX> buffer{};
+            const ssize_t n = ::readlink(path.c_str(), buffer.data(), buffer.size() - 1);
+            if (n < 0) throw InputError(name + ": cannot read the link " + quoted(path) + ": " + osError());
+            const fs::path next(std::string(buffer.data(), std::size_t(n)));
+            path = next.is_absolute() ? next : path.parent_path() / next;
+            continue;
+        }
+        if (::stat(path.c_str(), &st) == 0) {
+            if (S_ISREG(st.st_mode)) return {OutputTarget::Kind::Regular, path, name};
+            if (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode))
+                return {OutputTarget::Kind::WriteThrough, path, name};
+            throw InputError(name + ": " + quoted(userPath) + " is " + kindName(st.st_mode) +
+                             "; give a file name such as out.png, a character device or FIFO, or - for "
+                             "standard output");
+        }
+        if (errno != ENOENT && errno != ENOTDIR)
+            throw InputError(name + ": cannot use " + quoted(userPath) + ": " + osError());
+        break; // a new file
+    }
+    const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
+    struct stat st {};
+    if (::stat(folder.c_str(), &st) != 0) {
+        if (errno == ENOTDIR)
+            throw InputError(name + ": a part of " + quoted(folder) +
+                             " is a file, not a folder; choose a path inside a folder");
+        throw InputError(name + ": the folder " + quoted(folder) +
+                         " does not exist; create it first or choose another path");
+    }
+    if (!S_ISDIR(st.st_mode))
+        throw InputError(name + ": " + quoted(folder) +
+                         " is a file, not a folder; choose a path inside a folder");
+    return {OutputTarget::Kind::Regular, path, name};
+}
+
+bool isSameFile(const fs::path& a, const fs::path& b) {
+    struct stat sa {
+    }, sb{};
+    if (::stat(a.c_str(), &sa) != 0 || ::stat(b.c_str(), &sb) != 0) return false;
+    return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+}
+
+void refuseOverwritingInput(const fs::path& output, std::string_view field, const fs::path& input) {
+    if (output.empty() || output == "-" || input.empty() || input == "-") return;
+    if (isSameFile(output, input))
+        throw InputError(std::string(field) + ": " + quoted(output) + " is the input file " + quoted(input) +
+                         "; writing it would destroy the input: choose another output path");
+}
+
+// ---- PendingOutput ----
+
+struct PendingOutput::State {
+    OutputTarget target;
+    std::string what;
+    std::FILE* file = nullptr;
+    fs::path tempPath; // Regular: the temporary file until commit
+    int slot = -1;
+    char* buffer = nullptr; // WriteThrough and Stdout: the content, held in memory until commit
+    std::size_t size = 0;
+    bool finished = false, committed = false;
+
+    [[noreturn]] void fail(const std::string& reason) const { failWrite(what, displayPath(), reason); }
+    fs::path displayPath() const {
+        return target.kind == OutputTarget::Kind::Stdout ? fs::path("standard output") : target.path;
+    }
+
+    void openTemp() {
+        const fs::path dir = target.path.has_parent_path() ? target.path.parent_path() : fs::path(".");
+        // A short name, so that a legal 255-byte output name still has a legal temporary beside it.
+        std::string pattern = (dir / ".shadelab-XXXXXX").string();
+        const int fd = ::mkstemp(pattern.data());
+        if (fd < 0) fail("cannot create a temporary file in " + quoted(dir) + ": " + osError());
+        tempPath = pattern;
+        slot = registerTemp(pattern);
+        // An existing file keeps its mode and (where we may set it) its owner and group.
+        struct stat old {};
+        mode_t mode = newFileMode();
+        if (::stat(target.path.c_str(), &old) == 0) {
+            mode = old.st_mode & 07777;
+            if (::fchown(fd, old.st_uid, old.st_gid) != 0 && ::geteuid() == 0) {
+                const std::string reason = osError();
+                ::close(fd);
+                fail("cannot keep the owner of the existing file: " + reason);
+            }
+        }
+        if (::fchmod(fd, mode) != 0 || !(file = ::fdopen(fd, "wb"))) {
+            const std::string reason = osError();
+            ::close(fd);
+            fail("cannot open the temporary file: " + reason);
+        }
+    }
+
+    void cleanUp() noexcept {
+        if (file) std::fclose(std::exchange(file, nullptr));
+        if (!tempPath.empty()) ::unlink(tempPath.c_str());
+        unregisterTemp(std::exchange(slot, -1));
+        tempPath.clear();
+        std::free(std::exchange(buffer, nullptr));
+    }
+};
+
+PendingOutput::PendingOutput(OutputTarget target, std::string_view what) : state_(std::make_unique<State>()) {
+    state_->target = std::move(target);
+    state_->what = what;
+    if (state_->target.kind == OutputTarget::Kind::Regular) {
+        try {
+            state_->openTemp();
+        } catch (...) {
+            state_->cleanUp();
+            throw;
+        }
+    } else {
+        state_->file = ::open_memstream(&state_->buffer, &state_->size);
+        if (!state_->file) state_->fail("cannot hold the output in memory: " + osError());
+    }
+}
+
+PendingOutput::PendingOutput(PendingOutput&&) noexcept = default;
+PendingOutput& PendingOutput::operator=(PendingOutput&&) noexcept = default;
+
+PendingOutput::~PendingOutput() {
+    if (state_) state_->cleanUp();
+}
+
+std::FILE* PendingOutput::stream() const {
+    return state_->file;
+}
+
+const OutputTarget& PendingOutput::target() const {
+    return state_->target;
+}
+
+void PendingOutput::finish() {
+    State& s = *state_;
+    if (s.finished) return;
+    if (std::ferror(s.file) || std::fflush(s.file) != 0) s.fail("write error: " + osError());
+    if (s.target.kind == OutputTarget::Kind::Regular && ::fsync(::fileno(s.file)) != 0)
+        s.fail("fsync " + quoted(s.tempPath) + ": " + osError());
+    std::FILE* file = std::exchange(s.file, nullptr);
+    if (std::fclose(file) != 0) s.fail("close: " + osError());
+    s.finished = true;
+}
+
+void PendingOutput::commit() {
+    State& s = *state_;
+    finish();
+    if (s.committed) return;
+    switch (s.target.kind) {
+    case OutputTarget::Kind::Regular:
+        if (::rename(s.tempPath.c_str(), s.target.path.c_str()) != 0)
+            s.fail("cannot rename " + quoted(s.tempPath) + " over it: " + osError());
+        unregisterTemp(std::exchange(s.slot, -1));
+        s.tempPath.clear();
+        break;
+    case OutputTarget::Kind::Stdout:
+        if (!writeAll(STDOUT_FILENO, s.buffer, s.size)) s.fail(osError());
+        break;
+    case OutputTarget::Kind::WriteThrough: {
+        // No O_CREAT, no O_TRUNC: the device or FIFO is used as it is. A FIFO waits here for its reader.
+        const int fd = ::open(s.target.path.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
+        if (fd < 0) s.fail(osError());
+        struct stat st {};
+        if (::fstat(fd, &st) != 0 || !(S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode))) {
+            ::close(fd);
+            s.fail("it is no longer a device or FIFO; not writing through it");
+        }
+        const bool written = writeAll(fd, s.buffer, s.size);
+        const int error = errno;
+        if (::close(fd) != 0 && written) s.fail("close: " + osError());
+        if (!written) s.fail(osError(error));
+        break;
+    }
+    }
+    std::free(std::exchange(s.buffer, nullptr));
+    s.committed = true;
+}
+
+void commitAll(std::vector<PendingOutput>& outputs) {
+    for (PendingOutput& output : outputs) output.finish();
+    sigset_t held, previous;
+    sigemptyset(&held);
+    for (int signal : kCleanupSignals) sigaddset(&held, signal);
+    ::sigprocmask(SIG_BLOCK, &held, &previous);
+    try {
+        for (PendingOutput& output : outputs) output.commit();
+    } catch (...) {
+        ::sigprocmask(SIG_SETMASK, &previous, nullptr);
+        throw;
+    }
+    ::sigprocmask(SIG_SETMASK, &previous, nullptr);
+}
+
 void writeFileAtomically(const fs::path& path, std::string_view what,
                          const std::function<void(std::FILE*)>& write) {
-    TempFile temp(path, what);
-    write(temp.stream());
-    temp.close();
-    temp.commit();
+    PendingOutput output(resolveOutput(path, what), what);
+    write(output.stream());
+    output.commit();
+}
+
+void installOutputSignalHandlers() {
+    for (int signal : kCleanupSignals) {
+        struct sigaction current {};
+        if (::sigaction(signal, nullptr, &current) == 0 && current.sa_handler == SIG_IGN) continue; // nohup
+        struct sigaction action {};
+        action.sa_handler = removeTempsAndReraise;
+        sigemptyset(&action.sa_mask);
+        action.sa_flags = SA_RESETHAND | SA_NODEFER;
+        ::sigaction(signal, &action, nullptr);
+    }
 }
 
 } // namespace shadelab

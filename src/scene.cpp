@@ -17,11 +17,16 @@
 #include <string>
 #include <system_error>
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
 #include "shadelab/atomic_file.h"
 #include "shadelab/errors.h"
+#include "shadelab/text.h"
 
 namespace shadelab {
 
@@ -403,6 +408,11 @@ Json parseJson(std::string_view text) {
     checkNesting(text);
     PathTrackingSax checker(text);
     Json::sax_parse(text.begin(), text.end(), &checker);
+    // Syntax errors before it are reported above; but nlohmann's parser takes a NUL byte for the end of the
+    // input, which would let anything after it pass unread. JSON text never holds a raw NUL (RFC 8259 §7).
+    if (const std::size_t nul = text.find('\0'); nul != std::string_view::npos)
+        fail("", "invalid JSON: a NUL byte at offset " + std::to_string(nul) +
+                     "; a scene file is JSON text, and JSON has no raw NUL");
     try {
         return Json::parse(text.begin(), text.end());
     } catch (const Json::exception& e) { // unreachable after the first pass, but never crash on input
@@ -677,24 +687,48 @@ Scene readScene(const Json& root) {
     return scene;
 }
 
+// A scene is a regular file, or "-" for standard input. Anything else (a FIFO, a device, a folder) is
+// refused before it is opened: opening a FIFO would wait for a writer forever, a device may never end.
 std::string readFile(const std::filesystem::path& path) {
+    const bool fromStdin = path == "-";
+    const std::string name = fromStdin ? std::string("standard input") : printable(path.string());
     auto cannotRead = [&](const std::string& reason) {
-        throw InputError(path.string() + ": cannot read scene file: " + reason);
+        throw InputError(name + ": cannot read scene file: " + reason);
     };
-    std::error_code ec;
-    auto status = std::filesystem::status(path, ec);
-    if (ec) cannotRead(ec.message());
-    if (std::filesystem::is_directory(status)) cannotRead("it is a directory");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) cannotRead(std::generic_category().message(errno));
+    int fd = STDIN_FILENO;
+    if (!fromStdin) {
+        struct stat st {};
+        if (::stat(path.c_str(), &st) != 0) cannotRead(std::generic_category().message(errno));
+        if (S_ISDIR(st.st_mode)) cannotRead("it is a directory");
+        if (!S_ISREG(st.st_mode))
+            cannotRead(std::string("it is ") + (S_ISFIFO(st.st_mode) ? "a FIFO" : "not a regular file") +
+                       "; a scene is a regular file, or - to read standard input");
+        fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NOCTTY | O_NONBLOCK);
+        if (fd < 0) cannotRead(std::generic_category().message(errno));
+        // The file could have been swapped between stat and open: check what was opened.
+        if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+            ::close(fd);
+            cannotRead("it is not a regular file; a scene is a regular file, or - to read standard input");
+        }
+    }
     std::string text;
     std::array<char, 65536> chunk;
-    while (in.read(chunk.data(), chunk.size()) || in.gcount() > 0) {
-        text.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
-        if (text.size() > kMaxSceneFileBytes)
+    for (;;) {
+        const ssize_t n = ::read(fd, chunk.data(), chunk.size());
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) {
+            const int error = errno;
+            if (!fromStdin) ::close(fd);
+            cannotRead("read error: " + std::generic_category().message(error));
+        }
+        if (n == 0) break;
+        text.append(chunk.data(), static_cast<std::size_t>(n));
+        if (text.size() > kMaxSceneFileBytes) {
+            if (!fromStdin) ::close(fd);
             cannotRead("larger than " + std::to_string(kMaxSceneFileBytes >> 20) + " MiB; not a scene file");
+        }
     }
-    if (in.bad()) cannotRead("read error: " + std::generic_category().message(errno));
+    if (!fromStdin) ::close(fd);
     return text;
 }
 

@@ -1,22 +1,87 @@
-// Output files appear whole or not at all: written to a temporary file beside the target, flushed to disk,
-// then renamed over it. Any failure removes the temporary file and leaves the target as it was.
+// Every file shadelab writes goes through here, so every output follows one set of rules (README "Output
+// files"):
+//   - a regular file (new or existing) is written to a temporary file ".shadelab-XXXXXX" beside it, flushed
+//     to disk, then renamed over it: it appears whole or not at all, and a replaced file keeps its mode and
+//     owner (replacement makes a new inode, so hard links to the old file keep the old content);
+//   - a symbolic link is followed, and its target is replaced that way (the link stays a link);
+//   - "-" is standard output, and a character device or FIFO is written through directly (no temporary
+//     file): `--out /dev/null` works, `/dev/full` fails with the OS error, a FIFO's reader gets the file;
+//   - a folder, block device or socket is refused (InputError) before any work is done;
+//   - the content is produced completely in memory or in the temporary file first, so a failure while
+//     producing it never touches the output; a write, flush, fsync or close that fails is an error;
+//   - SIGINT, SIGTERM and SIGHUP remove the live temporary files, then end the process by that signal.
 #pragma once
 
 #include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace shadelab {
 
-// `write` fills the temporary file (throwing on failure); `what` names the content in messages ("PNG").
-// Throws RuntimeError "cannot write <what> "<path>": <reason>".
+// Where an output path really goes, resolved once before any work.
+struct OutputTarget {
+    enum class Kind {
+        Stdout,      // "-"
+        Regular,     // an existing regular file or a new one: temporary file, then rename
+        WriteThrough // a character device or a FIFO: opened and written directly
+    };
+    Kind kind = Kind::Regular;
+    std::filesystem::path path; // symbolic links resolved; empty for Stdout
+    std::string field;          // the argument that named it, for messages ("--out")
+};
+
+// Throws InputError naming `field`, the path and the fix for an empty path, a folder, a block device, a
+// socket, a missing folder, or a loop of symbolic links.
+OutputTarget resolveOutput(const std::filesystem::path& userPath, std::string_view field);
+
+// True when both paths name the same existing file (device and inode, after following links).
+bool isSameFile(const std::filesystem::path& a, const std::filesystem::path& b);
+
+// Throws InputError when `output` (as `field` names it) is the input file `input`: writing would destroy it.
+void refuseOverwritingInput(const std::filesystem::path& output, std::string_view field,
+                            const std::filesystem::path& input);
+
+// One output being written: fill stream(), then finish() and commit(). Destroyed before commit(), it leaves
+// the target as it was and removes its temporary file.
+class PendingOutput {
+public:
+    // `what` names the content in messages ("PNG").
+    PendingOutput(OutputTarget target, std::string_view what);
+    PendingOutput(PendingOutput&&) noexcept;
+    PendingOutput& operator=(PendingOutput&&) noexcept;
+    ~PendingOutput();
+
+    std::FILE* stream() const;
+    // Flushes and closes the content: a regular file is fsynced; a write-through output's bytes are held.
+    void finish();
+    // Puts the content in place: renames the temporary file, or writes the held bytes to the device, FIFO
+    // or standard output. Throws RuntimeError "cannot write <what> "<path>": <reason>".
+    void commit();
+    const OutputTarget& target() const;
+
+private:
+    struct State;
+    std::unique_ptr<State> state_;
+};
+
+// Finishes every output, then commits them one after the other with SIGINT/SIGTERM/SIGHUP held back, so
+// a failure or a signal before the renames leaves every old file as it was.
+void commitAll(std::vector<PendingOutput>& outputs);
+
+// Resolves `path` (field `what`), lets `write` fill the content, and commits it.
 void writeFileAtomically(const std::filesystem::path& path, std::string_view what,
                          const std::function<void(std::FILE*)>& write);
 
 // Throws RuntimeError "cannot write <what> "<path>": <reason>".
 [[noreturn]] void failWrite(std::string_view what, const std::filesystem::path& path,
                             const std::string& reason);
+
+// SIGINT, SIGTERM and SIGHUP (unless ignored): remove the live temporary files, then re-raise the signal
+// with its default action, so the exit status says what happened. Call once at start-up.
+void installOutputSignalHandlers();
 
 } // namespace shadelab

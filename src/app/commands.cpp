@@ -3,6 +3,7 @@
 #include <regex>
 
 #include "app/commands.h"
+#include "shadelab/atomic_file.h"
 #include "shadelab/errors.h"
 #include "shadelab/headless.h"
 #include "shadelab/reference.h"
@@ -88,19 +89,7 @@ Scene composeScene(const std::string& path, const SceneOverrides& o) {
 }
 
 void checkOutputPath(const std::filesystem::path& out, const char* argument) {
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    if (out.empty()) throw InputError(std::string(argument) + ": the output path is empty");
-    if (fs::is_directory(out, ec))
-        throw InputError(std::string(argument) + ": " + quoted(out.string()) +
-                         " is a directory; give a file name such as out.png");
-    const fs::path folder = out.has_parent_path() ? out.parent_path() : fs::path(".");
-    if (fs::exists(folder, ec) && !fs::is_directory(folder, ec))
-        throw InputError(std::string(argument) + ": " + quoted(folder.string()) +
-                         " is a file, not a folder; choose a path inside a folder");
-    if (!fs::is_directory(folder, ec))
-        throw InputError(std::string(argument) + ": the folder " + quoted(folder.string()) +
-                         " does not exist; create it first or choose another path");
+    (void)resolveOutput(out, argument); // throws InputError for what cannot be an output
 }
 
 Backend backendFromArgument(const std::string& name) {
@@ -124,7 +113,7 @@ int runReference(const Scene& scene, const std::filesystem::path& out) {
 int runShowcase(const Scene& scene, Backend backend, const std::filesystem::path& out) {
     HeadlessRenderer renderer(backend);
     writePng(renderShowcase(renderer, scene), out);
-    std::printf("%s\n", out.string().c_str());
+    if (out != "-") std::printf("%s\n", out.string().c_str());
     return kExitOk;
 }
 

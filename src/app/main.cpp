@@ -1,13 +1,17 @@
 // shadelab's entry point: the demo window (default), `render`, `reference` and `bench` (DESIGN §5), and the
 // exit codes: 0 success, 2 bad input, 1 run-time failure.
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 
 #include "app/bench.h"
 #include "app/cli.h"
 #include "app/commands.h"
 #include "app/report.h"
+#include "shadelab/atomic_file.h"
 #include "shadelab/errors.h"
+#include "shadelab/text.h"
 
 namespace {
 
@@ -22,9 +26,10 @@ int run(int argc, char** argv) {
         std::fputs(command.text.c_str(), stdout);
         return command.exitCode;
     case Kind::Render: {
+        app::checkOutputPath(command.out);
+        refuseOverwritingInput(command.out, "--out", command.scene); // before anything is rendered
         const Scene scene = app::composeScene(command.scene, command.overrides);
         const Backend backend = app::backendFromArgument(command.backend);
-        app::checkOutputPath(command.out);
         return app::runRender(scene, backend, command.out, command.specialize);
     }
     case Kind::Bench: {
@@ -36,13 +41,17 @@ int run(int argc, char** argv) {
         bench.backend = app::backendFromArgument(command.backend);
         if (!command.benchJson.empty()) {
             app::checkOutputPath(command.benchJson, "--json");
+            if (command.benchJson == "-")
+                throw InputError("--json: - is not accepted; bench prints its table on standard output, so "
+                                 "give a file name such as bench.json");
             bench.json = command.benchJson;
         }
         return app::runBench(bench);
     }
     case Kind::Reference: {
-        const Scene scene = app::composeScene(command.scene, command.overrides);
         app::checkOutputPath(command.out);
+        refuseOverwritingInput(command.out, "--out", command.scene);
+        const Scene scene = app::composeScene(command.scene, command.overrides);
         return app::runReference(scene, command.out);
     }
     case Kind::Report: {
@@ -60,19 +69,39 @@ int run(int argc, char** argv) {
         break;
     }
     app::checkOutputPath(command.demo.showcaseOut, "--showcase-out");
+    refuseOverwritingInput(command.demo.showcaseOut, "--showcase-out", command.scene);
     return app::runDemo(app::composeScene(command.scene, command.overrides), command.demo);
+}
+
+// Messages carry file names and scene text: control characters and invalid UTF-8 in them are shown as
+// \xNN, never sent raw to the terminal.
+void printError(const std::exception& e) {
+    std::fprintf(stderr, "shadelab: %s\n", printable(e.what(), true).c_str());
+}
+
+// Standard output is checked when it is closed: `shadelab --help >/dev/full` must not report success.
+int closeStdout(int status) {
+    if (std::fflush(stdout) != 0 || std::ferror(stdout) || std::fclose(stdout) != 0) {
+        if (errno == EBADF) return status; // closed by the caller: nothing was lost
+        std::fprintf(stderr, "shadelab: cannot write to standard output: %s\n", std::strerror(errno));
+        return status == kExitOk ? kExitRuntimeError : status;
+    }
+    return status;
 }
 
 } // namespace
 
 int main(int argc, char** argv) {
+    installOutputSignalHandlers();
+    int status = kExitOk;
     try {
-        return run(argc, argv);
+        status = run(argc, argv);
     } catch (const InputError& e) {
-        std::fprintf(stderr, "shadelab: %s\n", e.what());
-        return kExitInputError;
+        printError(e);
+        status = kExitInputError;
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "shadelab: %s\n", e.what());
-        return kExitRuntimeError;
+        printError(e);
+        status = kExitRuntimeError;
     }
+    return closeStdout(status);
 }

@@ -36,6 +36,7 @@
 #include "shadelab/gl/render_target.h"
 #include "shadelab/gl/renderer.h"
 #include "shadelab/subdivision.h"
+#include "shadelab/text.h"
 
 extern char** environ; // POSIX: the environment gnuplot inherits
 
@@ -481,9 +482,13 @@ void writeReportJson(const std::vector<ReportRow>& rows, const ReportInfo& info,
 
 namespace {
 
-std::string gnuplotString(std::string_view text) { // single-quoted: only ' needs escaping, as ''
+// A gnuplot string literal holding `text` as data. In single quotes gnuplot expands nothing (no backquote
+// command, no @macro, no backslash escape); only ' ends the string (doubled as '') and a line break ends the
+// command, so a newline in a file name would start a new gnuplot command (`system(...)` included).
+// printable() writes every control byte and invalid UTF-8 as \xNN text, so no line break gets through.
+std::string gnuplotString(std::string_view text) {
     std::string out = "'";
-    for (char ch : text) out += ch == '\'' ? std::string("''") : std::string(1, ch);
+    for (char ch : printable(text)) out += ch == '\'' ? std::string("''") : std::string(1, ch);
     return out + "'";
 }
 

@@ -1,0 +1,421 @@
+// Output files and special paths end to end (README "Output files"): `--out` never destroys a file the user
+// did not name as the output, writes through devices and FIFOs, follows symbolic links, keeps an existing
+// file's mode and owner, leaves nothing behind when interrupted; a scene is a regular file or "-".
+// Every case runs twice: as root and as the unprivileged user nobody (in a folder only nobody can write).
+#include <fcntl.h>
+#include <grp.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+#include <sys/un.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iterator>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <thread>
+#include <utility>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+extern char** environ;
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace std::chrono_literals;
+
+constexpr uid_t kNobody = 65534;
+constexpr gid_t kNogroup = 65534;
+
+struct Outcome {
+    int exitCode = -1; // -1 unless the process exited normally
+    int signal = 0;    // the signal that ended it, if one did
+    std::string out, err;
+};
+
+std::string describe(const Outcome& run) {
+    return "exit code " + std::to_string(run.exitCode) + ", signal " + std::to_string(run.signal) +
+           "\n--- stdout (" + std::to_string(run.out.size()) + " bytes)\n--- stderr:\n" + run.err;
+}
+
+struct RunOptions {
+    std::optional<uid_t> user;            // run as this user (with group nogroup), from root
+    std::optional<std::string> stdinText; // otherwise /dev/null
+    std::optional<fs::path> stdoutPath;   // otherwise captured
+    std::function<bool()> signalWhen;     // polled every 2 ms; when true, `signal` is sent once
+    int signal = 0;
+    std::chrono::seconds timeout = 120s;
+};
+
+// Runs shadelab through fork/execve (never a shell) in `cwd`.
+Outcome runShadelab(const std::vector<std::string>& args, const fs::path& cwd,
+                    const RunOptions& options = {}) {
+    std::vector<std::string> strings{SHADELAB_EXE};
+    strings.insert(strings.end(), args.begin(), args.end());
+    std::vector<char*> argv;
+    for (std::string& s : strings) argv.push_back(s.data());
+    argv.push_back(nullptr);
+    const std::string folder = cwd.string();
+    const std::string stdoutPath = options.stdoutPath ? options.stdoutPath->string() : std::string();
+
+    Outcome run;
+    int outPipe[2], errPipe[2], inPipe[2];
+    if (::pipe2(outPipe, O_CLOEXEC) != 0 || ::pipe2(errPipe, O_CLOEXEC) != 0 ||
+        ::pipe2(inPipe, O_CLOEXEC) != 0) {
+        ADD_FAILURE() << "pipe2: " << std::strerror(errno);
+        return run;
+    }
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+        // Only async-signal-safe calls between fork and exec.
+        int in = inPipe[0];
+        if (!options.stdinText) in = ::open("/dev/null", O_RDONLY);
+        int out = outPipe[1];
+        if (options.stdoutPath) out = ::open(stdoutPath.c_str(), O_WRONLY);
+        if (in < 0 || out < 0 || ::dup2(in, 0) < 0 || ::dup2(out, 1) < 0 || ::dup2(errPipe[1], 2) < 0)
+            ::_exit(126);
+        if (options.user && (::setgroups(0, nullptr) != 0 || ::setresgid(kNogroup, kNogroup, kNogroup) != 0 ||
+                             ::setresuid(*options.user, *options.user, *options.user) != 0))
+            ::_exit(125);
+        if (::chdir(folder.c_str()) != 0) ::_exit(124);
+        ::execve(argv[0], argv.data(), environ);
+        ::_exit(127);
+    }
+    ::close(outPipe[1]);
+    ::close(errPipe[1]);
+    ::close(inPipe[0]);
+    if (options.stdinText) {
+        // Small scenes only: they fit in the pipe's buffer.
+        if (::write(inPipe[1], options.stdinText->data(), options.stdinText->size()) < 0)
+            ADD_FAILURE() << "write to stdin: " << std::strerror(errno);
+    }
+    ::close(inPipe[1]);
+
+    pollfd fds[2] = {{outPipe[0], POLLIN, 0}, {errPipe[0], POLLIN, 0}};
+    std::string* sinks[2] = {&run.out, &run.err};
+    int open = 2;
+    bool signalled = false;
+    const auto deadline = std::chrono::steady_clock::now() + options.timeout;
+    while (open > 0 && std::chrono::steady_clock::now() < deadline) {
+        if (options.signalWhen && !signalled && options.signalWhen()) {
+            ::kill(pid, options.signal);
+            signalled = true;
+        }
+        if (::poll(fds, 2, 2) < 0 && errno != EINTR) break;
+        for (int i = 0; i < 2; ++i) {
+            if (fds[i].fd < 0 || fds[i].revents == 0) continue;
+            char buffer[65536];
+            const ssize_t n = ::read(fds[i].fd, buffer, sizeof buffer);
+            if (n > 0) {
+                sinks[i]->append(buffer, std::size_t(n));
+            } else if (n == 0 || errno != EINTR) {
+                ::close(std::exchange(fds[i].fd, -1));
+                --open;
+            }
+        }
+    }
+    if (open > 0) {
+        ::kill(pid, SIGKILL);
+        ADD_FAILURE() << "shadelab did not finish within " << options.timeout.count() << " s; killed";
+    }
+    for (pollfd& fd : fds)
+        if (fd.fd >= 0) ::close(fd.fd);
+    int status = 0;
+    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    if (WIFEXITED(status)) run.exitCode = WEXITSTATUS(status);
+    if (WIFSIGNALED(status)) run.signal = WTERMSIG(status);
+    if (options.signalWhen && !signalled) ADD_FAILURE() << "the condition for sending the signal never came";
+    return run;
+}
+
+std::string readFile(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void writeFile(const fs::path& path, std::string_view bytes) {
+    std::ofstream(path, std::ios::binary) << bytes;
+}
+
+// A complete PNG: the signature, and the IEND chunk as its last 12 bytes.
+bool isCompletePng(const std::string& bytes) {
+    static constexpr std::string_view kSignature("\x89PNG\r\n\x1a\n", 8);
+    static constexpr std::string_view kIend("\0\0\0\0IEND\xae\x42\x60\x82", 12);
+    return bytes.size() > 20 && std::string_view(bytes).substr(0, 8) == kSignature &&
+           std::string_view(bytes).substr(bytes.size() - 12) == kIend;
+}
+
+bool isCharDevice(const char* path, unsigned major, unsigned minor) {
+    struct stat st {};
+    return ::stat(path, &st) == 0 && S_ISCHR(st.st_mode) && ::major(st.st_rdev) == major &&
+           ::minor(st.st_rdev) == minor;
+}
+
+bool hasTempFile(const fs::path& folder) {
+    std::error_code error;
+    for (const auto& entry : fs::directory_iterator(folder, error))
+        if (entry.path().filename().string().starts_with(".shadelab-")) return true;
+    return false;
+}
+
+constexpr std::string_view kScene = R"({"image": {"width": 32, "height": 32}})";
+constexpr std::string_view kPrecious = "the bytes of an earlier file, which must survive\n";
+
+enum class User { Root, Nobody };
+
+// Each test in a fresh folder owned by the user it runs as (mode 0700 for nobody: root can still enter).
+class OutputSafety : public ::testing::TestWithParam<User> {
+protected:
+    void SetUp() override {
+        if (::geteuid() != 0)
+            GTEST_SKIP() << "runs as root (as CI does), to run shadelab both as root and as nobody";
+        char pattern[] = "/tmp/shadelab-output-XXXXXX";
+        ASSERT_NE(::mkdtemp(pattern), nullptr) << std::strerror(errno);
+        dir_ = pattern;
+        ::chmod(dir_.c_str(), 0755);
+        if (nobody()) {
+            ASSERT_EQ(::chown(dir_.c_str(), kNobody, kNogroup), 0) << std::strerror(errno);
+        }
+    }
+    void TearDown() override {
+        if (!dir_.empty()) fs::remove_all(dir_);
+        // Nothing here may ever replace a device node.
+        EXPECT_TRUE(isCharDevice("/dev/null", 1, 3)) << "/dev/null is no longer the null device";
+        EXPECT_TRUE(isCharDevice("/dev/full", 1, 7)) << "/dev/full is no longer the full device";
+    }
+
+    bool nobody() const { return GetParam() == User::Nobody; }
+    // A file made by the test, given to the user the case runs as.
+    fs::path make(const std::string& name, std::string_view bytes) {
+        const fs::path path = dir_ / name;
+        writeFile(path, bytes);
+        own(path);
+        return path;
+    }
+    void own(const fs::path& path) {
+        if (nobody()) {
+            EXPECT_EQ(::lchown(path.c_str(), kNobody, kNogroup), 0) << std::strerror(errno);
+        }
+    }
+    Outcome run(const std::vector<std::string>& args, RunOptions options = {}) {
+        if (nobody()) options.user = kNobody;
+        return runShadelab(args, dir_, options);
+    }
+
+    fs::path dir_;
+};
+
+TEST_P(OutputSafety, OutputThatIsTheSceneIsRefusedBeforeRendering) {
+    const fs::path scene = make("sc.json", kScene);
+    ASSERT_EQ(::symlink("sc.json", (dir_ / "link.json").c_str()), 0);
+    own(dir_ / "link.json");
+    ASSERT_EQ(::link(scene.c_str(), (dir_ / "hard.json").c_str()), 0);
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"sc.json", "sc.json"}, {"link.json", "sc.json"}, {"sc.json", "link.json"}, {"hard.json", "sc.json"}};
+    for (const auto& [input, output] : cases) {
+        for (const char* command : {"render", "reference"}) {
+            const Outcome r = run({command, input, "--out", output});
+            EXPECT_EQ(r.exitCode, 2) << command << " " << input << " --out " << output << ": " << describe(r);
+            EXPECT_NE(r.err.find("--out"), std::string::npos) << r.err;
+            EXPECT_NE(r.err.find("is the input file"), std::string::npos) << r.err;
+            EXPECT_EQ(readFile(scene), kScene);
+        }
+    }
+    EXPECT_TRUE(fs::is_symlink(dir_ / "link.json"));
+    EXPECT_FALSE(hasTempFile(dir_));
+}
+
+TEST_P(OutputSafety, DevNullIsWrittenThrough) {
+    const Outcome r = run({"render", "--size", "16x16", "--out", "/dev/null"});
+    EXPECT_EQ(r.exitCode, 0) << describe(r);
+    EXPECT_TRUE(isCharDevice("/dev/null", 1, 3));
+}
+
+TEST_P(OutputSafety, DevFullFailsWithTheOsErrorAndStaysADevice) {
+    for (const char* command : {"render", "reference"}) {
+        const Outcome r = run({command, "--size", "16x16", "--out", "/dev/full"});
+        EXPECT_EQ(r.exitCode, 1) << describe(r);
+        EXPECT_NE(r.err.find("/dev/full"), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find(std::strerror(ENOSPC)), std::string::npos) << r.err;
+        EXPECT_TRUE(isCharDevice("/dev/full", 1, 7));
+    }
+}
+
+TEST_P(OutputSafety, FifoReaderGetsTheWholePng) {
+    const fs::path fifo = dir_ / "p";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0666), 0) << std::strerror(errno);
+    own(fifo);
+    std::string received;
+    std::thread reader([&] { received = readFile(fifo); });
+    const Outcome r = run({"render", "--size", "24x16", "--out", "p"});
+    reader.join();
+    EXPECT_EQ(r.exitCode, 0) << describe(r);
+    EXPECT_TRUE(isCompletePng(received)) << received.size() << " bytes";
+    struct stat st {};
+    ASSERT_EQ(::lstat(fifo.c_str(), &st), 0);
+    EXPECT_TRUE(S_ISFIFO(st.st_mode)) << "the FIFO was replaced";
+    EXPECT_FALSE(hasTempFile(dir_));
+}
+
+TEST_P(OutputSafety, DashWritesThePngToStandardOutput) {
+    const Outcome r = run({"render", "--size", "24x16", "--out", "-"});
+    EXPECT_EQ(r.exitCode, 0) << describe(r);
+    EXPECT_TRUE(isCompletePng(r.out)) << r.out.size() << " bytes on stdout";
+    EXPECT_FALSE(fs::exists(dir_ / "-"));
+    const Outcome ref = run({"reference", "--size", "24x16", "--out", "-"});
+    EXPECT_EQ(ref.exitCode, 0) << describe(ref);
+    EXPECT_TRUE(isCompletePng(ref.out));
+}
+
+TEST_P(OutputSafety, SymlinkIsFollowedAndItsTargetReplaced) {
+    const fs::path target = make("target.png", kPrecious);
+    ASSERT_EQ(::symlink("target.png", (dir_ / "link.png").c_str()), 0);
+    own(dir_ / "link.png");
+    const Outcome r = run({"render", "--size", "16x16", "--out", "link.png"});
+    EXPECT_EQ(r.exitCode, 0) << describe(r);
+    EXPECT_TRUE(fs::is_symlink(dir_ / "link.png")) << "the link itself was replaced";
+    EXPECT_TRUE(isCompletePng(readFile(target)));
+
+    // A dangling link creates its target.
+    ASSERT_EQ(::symlink("new.png", (dir_ / "dangling.png").c_str()), 0);
+    own(dir_ / "dangling.png");
+    const Outcome d = run({"render", "--size", "16x16", "--out", "dangling.png"});
+    EXPECT_EQ(d.exitCode, 0) << describe(d);
+    EXPECT_TRUE(fs::is_symlink(dir_ / "dangling.png"));
+    EXPECT_TRUE(isCompletePng(readFile(dir_ / "new.png")));
+    EXPECT_FALSE(hasTempFile(dir_));
+}
+
+TEST_P(OutputSafety, FolderBlockDeviceAndSocketAreRefused) {
+    fs::create_directory(dir_ / "folder.png");
+    own(dir_ / "folder.png");
+    ASSERT_EQ(::mknod((dir_ / "block.png").c_str(), S_IFBLK | 0666, ::makedev(7, 200)), 0)
+        << std::strerror(errno);
+    const int sock = ::socket(AF_UNIX, SOCK_STREAM, 0);
+    sockaddr_un address{};
+    address.sun_family = AF_UNIX;
+    const std::string socketPath = (dir_ / "socket.png").string();
+    ASSERT_LT(socketPath.size(), sizeof address.sun_path);
+    std::memcpy(address.sun_path, socketPath.c_str(), socketPath.size() + 1);
+    ASSERT_EQ(::bind(sock, reinterpret_cast<sockaddr*>(&address), sizeof address), 0) << std::strerror(errno);
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"folder.png", "is a directory"}, {"block.png", "is a block device"}, {"socket.png", "is a socket"}};
+    for (const auto& [name, what] : cases) {
+        const Outcome r = run({"render", "--size", "16x16", "--out", name});
+        EXPECT_EQ(r.exitCode, 2) << name << ": " << describe(r);
+        EXPECT_NE(r.err.find("--out"), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find(what), std::string::npos) << r.err;
+    }
+    struct stat st {};
+    ASSERT_EQ(::lstat((dir_ / "block.png").c_str(), &st), 0);
+    EXPECT_TRUE(S_ISBLK(st.st_mode));
+    ASSERT_EQ(::lstat(socketPath.c_str(), &st), 0);
+    EXPECT_TRUE(S_ISSOCK(st.st_mode));
+    ::close(sock);
+    EXPECT_FALSE(hasTempFile(dir_));
+}
+
+TEST_P(OutputSafety, ReplacingKeepsModeAndOwner) {
+    const fs::path out = make("out.png", kPrecious);
+    ASSERT_EQ(::chmod(out.c_str(), 0600), 0);
+    // As root, replace a file that belongs to nobody: it must still belong to nobody.
+    if (!nobody()) {
+        ASSERT_EQ(::chown(out.c_str(), kNobody, kNogroup), 0);
+    }
+    struct stat before {};
+    ASSERT_EQ(::stat(out.c_str(), &before), 0);
+    const Outcome r = run({"render", "--size", "16x16", "--out", "out.png"});
+    EXPECT_EQ(r.exitCode, 0) << describe(r);
+    struct stat after {};
+    ASSERT_EQ(::stat(out.c_str(), &after), 0);
+    EXPECT_EQ(after.st_mode & 07777, 0600u);
+    EXPECT_EQ(after.st_uid, kNobody);
+    EXPECT_EQ(after.st_gid, kNogroup);
+    EXPECT_NE(after.st_ino, before.st_ino) << "replaced by rename: a new inode";
+    EXPECT_TRUE(isCompletePng(readFile(out)));
+}
+
+TEST_P(OutputSafety, LongestLegalNameWorks) {
+    const std::string name = std::string(251, 'n') + ".png"; // 255 bytes: NAME_MAX
+    const Outcome r = run({"render", "--size", "8x8", "--out", name});
+    EXPECT_EQ(r.exitCode, 0) << describe(r);
+    EXPECT_TRUE(isCompletePng(readFile(dir_ / name)));
+}
+
+TEST_P(OutputSafety, SignalDuringWriteLeavesNoTempAndTheOldFile) {
+    for (int signal : {SIGTERM, SIGINT, SIGHUP}) {
+        const fs::path out = make("good.png", kPrecious);
+        RunOptions options;
+        options.signal = signal;
+        // Sent while the temporary file exists: the moment that used to leave it behind.
+        options.signalWhen = [&] { return hasTempFile(dir_); };
+        const Outcome r = run({"reference", "--size", "2500x2500", "--out", "good.png"}, options);
+        EXPECT_EQ(r.signal, signal) << "the exit status must say the signal: " << describe(r);
+        EXPECT_FALSE(hasTempFile(dir_)) << "signal " << signal;
+        EXPECT_EQ(readFile(out), kPrecious) << "signal " << signal;
+    }
+}
+
+TEST_P(OutputSafety, HelpToAFullDiskFails) {
+    RunOptions options;
+    options.stdoutPath = "/dev/full";
+    const Outcome r = run({"--help"}, options);
+    EXPECT_EQ(r.exitCode, 1) << describe(r);
+    EXPECT_NE(r.err.find("standard output"), std::string::npos) << r.err;
+}
+
+TEST_P(OutputSafety, ControlCharactersInNamesAreEscapedInMessages) {
+    const std::string name = "evil\x1b[31mred\x1b[0m.json";
+    const Outcome r = run({"render", name, "--out", "o.png"});
+    EXPECT_EQ(r.exitCode, 2) << describe(r);
+    EXPECT_EQ(r.err.find('\x1b'), std::string::npos) << "raw ESC reached the terminal";
+    EXPECT_NE(r.err.find("evil\\x1b[31mred"), std::string::npos) << r.err;
+}
+
+TEST_P(OutputSafety, SceneMustBeARegularFileOrDash) {
+    const fs::path fifo = dir_ / "s.json";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0666), 0);
+    own(fifo);
+    RunOptions options;
+    options.timeout = 20s; // it used to wait forever for a writer
+    const Outcome r = run({"render", "s.json", "--out", "o.png"}, options);
+    EXPECT_EQ(r.exitCode, 2) << describe(r);
+    EXPECT_NE(r.err.find("s.json"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("FIFO"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir_ / "o.png"));
+
+    RunOptions fromStdin;
+    fromStdin.stdinText = std::string(kScene);
+    const Outcome s = run({"render", "-", "--out", "o.png"}, fromStdin);
+    EXPECT_EQ(s.exitCode, 0) << describe(s);
+    EXPECT_TRUE(isCompletePng(readFile(dir_ / "o.png")));
+}
+
+TEST_P(OutputSafety, ContentAfterANulByteIsAnError) {
+    make("nul.json", std::string(R"({"shading":"flat"})") + std::string(1, '\0') + "garbage");
+    const Outcome r = run({"render", "nul.json", "--out", "o.png"});
+    EXPECT_EQ(r.exitCode, 2) << describe(r);
+    EXPECT_NE(r.err.find("NUL"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir_ / "o.png"));
+}
+
+INSTANTIATE_TEST_SUITE_P(AsUser, OutputSafety, ::testing::Values(User::Root, User::Nobody),
+                         [](const ::testing::TestParamInfo<User>& info) {
+                             return info.param == User::Root ? "root" : "nobody";
+                         });
+
+} // namespace
