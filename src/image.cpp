@@ -130,6 +130,25 @@ Image readPng(const fs::path& path) {
     return image;
 }
 
+Image decodePng(std::string_view bytes, std::string_view what) {
+    auto fail = [&](const std::string& reason) { throw RuntimeError(std::string(what) + ": " + reason); };
+    static constexpr std::string_view kSignature("\x89PNG\r\n\x1a\n", 8);
+    // IEND: length 0, type, CRC — the last 12 bytes of every complete PNG. libpng's simplified reader
+    // stops after the last row, so a file cut off after its pixel data would otherwise pass.
+    static constexpr std::string_view kIend("\0\0\0\0IEND\xae\x42\x60\x82", 12);
+    if (bytes.size() < kSignature.size() + kIend.size() || !bytes.starts_with(kSignature))
+        fail("not a PNG (" + std::to_string(bytes.size()) + " bytes without the PNG signature)");
+    if (!bytes.ends_with(kIend)) fail("truncated PNG: it does not end with the IEND chunk");
+    PngImage in;
+    if (!png_image_begin_read_from_memory(&in.png, bytes.data(), bytes.size())) fail(in.png.message);
+    if (in.png.width > kMaxPngSide || in.png.height > kMaxPngSide)
+        fail("implausible size " + std::to_string(in.png.width) + "x" + std::to_string(in.png.height));
+    in.png.format = PNG_FORMAT_RGBA;
+    Image image(int(in.png.width), int(in.png.height));
+    if (!png_image_finish_read(&in.png, nullptr, image.rgba.data(), 0, nullptr)) fail(in.png.message);
+    return image;
+}
+
 // Non-finite values are counted only as non-finite, so the two counts never overlap.
 ValueScan scanValues(const ImageF& image, float lo, float hi) {
     ValueScan scan;

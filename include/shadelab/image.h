@@ -44,6 +44,9 @@ Image toImage8(const ImageF& image);
 void writePng(const Image& image, const std::filesystem::path& path);
 // Reads a PNG as RGBA (alpha 255 if the file has none). Throws RuntimeError naming the path.
 Image readPng(const std::filesystem::path& path);
+// Decodes a complete PNG held in memory (signature, every row, and the closing IEND chunk) as RGBA.
+// Throws RuntimeError "<what>: <reason>" for anything truncated or corrupt.
+Image decodePng(std::string_view bytes, std::string_view what);
 
 // Counts the non-finite values and the values outside [lo, hi] in a float image.
 struct ValueScan {

@@ -19,7 +19,9 @@
 #include <set>
 #include <variant>
 
+#include <fcntl.h>
 #include <spawn.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -35,6 +37,7 @@
 #include "shadelab/gl/program.h"
 #include "shadelab/gl/render_target.h"
 #include "shadelab/gl/renderer.h"
+#include "shadelab/image.h"
 #include "shadelab/subdivision.h"
 #include "shadelab/text.h"
 
@@ -447,7 +450,7 @@ void writeText(const fs::path& path, std::string_view what, const std::string& t
 
 } // namespace
 
-void writeReportCsv(const std::vector<ReportRow>& rows, const fs::path& path) {
+std::string reportCsv(const std::vector<ReportRow>& rows) {
     std::string text;
     for (std::string_view name : reportColumns()) text.append(name).append(",");
     text.back() = '\n';
@@ -455,10 +458,14 @@ void writeReportCsv(const std::vector<ReportRow>& rows, const fs::path& path) {
         for (const auto& [name, cell] : cellsOf(row)) text.append(formatCell(cell)).append(",");
         text.back() = '\n';
     }
-    writeText(path, "CSV", text);
+    return text;
 }
 
-void writeReportJson(const std::vector<ReportRow>& rows, const ReportInfo& info, const fs::path& path) {
+void writeReportCsv(const std::vector<ReportRow>& rows, const fs::path& path) {
+    writeText(path, "CSV", reportCsv(rows));
+}
+
+std::string reportJson(const std::vector<ReportRow>& rows, const ReportInfo& info) {
     nlohmann::ordered_json list = nlohmann::ordered_json::array();
     for (const ReportRow& row : rows) {
         nlohmann::ordered_json entry = nlohmann::ordered_json::object();
@@ -475,7 +482,12 @@ void writeReportJson(const std::vector<ReportRow>& rows, const ReportInfo& info,
                                          {"warmup_frames", info.warmup},
                                          {"columns", reportColumns()},
                                          {"rows", list}};
-    writeText(path, "JSON", root.dump(2) + "\n");
+    // Scene names and renderer strings are input: invalid UTF-8 in them must not make dump() throw.
+    return root.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
+}
+
+void writeReportJson(const std::vector<ReportRow>& rows, const ReportInfo& info, const fs::path& path) {
+    writeText(path, "JSON", reportJson(rows, info));
 }
 
 // ---- the plot ----
@@ -537,6 +549,28 @@ std::string gnuplotScript(const std::vector<ReportRow>& rows, const ReportInfo& 
          "set key inside left bottom box opaque\n"
          "set arrow from graph 0, first 1 to graph 1, first 1 nohead dt 2 lc rgb '#777777'\n"
          "set label '1/255' at graph 0.01, first 1 offset 0,0.7 tc rgb '#555555'\n";
+    // The y axis is logarithmic: an error of exactly zero (an unlit scene, a flat colour) has no place on
+    // it. Such points are drawn on a floor below the smallest non-zero error, marked "0 (exact)".
+    double smallest = 0;
+    bool anyZero = false;
+    for (const ReportRow& row : rows) {
+        if (row.interiorMeanError > 0)
+            smallest = smallest > 0 ? std::min(smallest, row.interiorMeanError) : row.interiorMeanError;
+        else
+            anyZero = true;
+    }
+    const double zeroLevel = smallest > 0 ? smallest / 4 : 0.01;
+    if (anyZero) {
+        char text[400];
+        std::snprintf(
+            text, sizeof text,
+            "set arrow from graph 0, first %.6g to graph 1, first %.6g nohead dt 3 lc rgb '#999999'\n"
+            "set label '0 (exact): an error of zero is drawn on this line' at graph 0.99, first %.6g "
+            "right offset 0,0.7 tc rgb '#555555'\nset yrange [%.6g:%s]\n"
+            "set key inside right center box opaque\nset ytics add ('0' %.6g)\n",
+            zeroLevel, zeroLevel, zeroLevel, zeroLevel / 3, smallest > 0 ? "*" : "3", zeroLevel);
+        s += text;
+    }
     char line[128];
     for (LightingModel lighting : kLightingModels)
         for (ShadingMode shading : kShadingModes)
@@ -546,7 +580,8 @@ std::string gnuplotScript(const std::vector<ReportRow>& rows, const ReportInfo& 
                     if (row.lighting != lighting || row.shading != shading || row.autoLevel != autoLevel)
                         continue;
                     std::snprintf(line, sizeof line, "%.6g %.6g \"%s\"\n", row.frameMedianMs,
-                                  row.interiorMeanError, levelLabel(row).c_str());
+                                  row.interiorMeanError > 0 ? row.interiorMeanError : zeroLevel,
+                                  levelLabel(row).c_str());
                     block += line;
                 }
                 if (block.empty()) continue;
@@ -609,35 +644,83 @@ bool onPath(const char* program) {
     return false;
 }
 
-// Runs `gnuplot script` with its standard output going into the PNG's temporary file, which is renamed
-// over `png` only if gnuplot succeeds.
-void runGnuplot(const fs::path& script, const fs::path& png) {
-    writeFileAtomically(png, "PNG", [&](std::FILE* file) {
-        std::fflush(file);
-        posix_spawn_file_actions_t actions;
-        posix_spawn_file_actions_init(&actions);
-        posix_spawn_file_actions_adddup2(&actions, ::fileno(file), STDOUT_FILENO);
-        std::string program = "gnuplot", scriptArg = script.string();
-        char* argv[] = {program.data(), scriptArg.data(), nullptr};
-        pid_t pid = 0;
-        const int spawnError = ::posix_spawnp(&pid, "gnuplot", &actions, nullptr, argv, environ);
-        posix_spawn_file_actions_destroy(&actions);
-        if (spawnError != 0)
-            throw RuntimeError("report: cannot run gnuplot (" + std::string(std::strerror(spawnError)) +
-                               "); report.png is drawn with gnuplot, Debian package gnuplot-nox");
-        int status = 0;
-        while (::waitpid(pid, &status, 0) < 0)
-            if (errno != EINTR)
-                throw RuntimeError("report: waiting for gnuplot: " + std::string(std::strerror(errno)));
-        if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-            throw RuntimeError("report: gnuplot failed (" +
-                               (WIFEXITED(status) ? "exit status " + std::to_string(WEXITSTATUS(status))
-                                                  : "signal " + std::to_string(WTERMSIG(status))) +
-                               ") on " + script.string() + "; its messages are above");
-        struct stat written {};
-        if (::fstat(::fileno(file), &written) != 0 || written.st_size == 0)
-            throw RuntimeError("report: gnuplot wrote no PNG from " + script.string());
-    });
+// Runs gnuplot on `script`, fed through standard input from an anonymous file, and returns what it wrote to
+// standard output: no path reaches gnuplot's command line (so a folder named "-p" is not an option), and the
+// PNG never touches the disk until it has been checked. --default-settings: no ~/.gnuplot runs first.
+std::string runGnuplot(const std::string& script) {
+    const int in = ::memfd_create("shadelab-report.gp", MFD_CLOEXEC);
+    if (in < 0)
+        throw RuntimeError("report: cannot hold the gnuplot script: " + std::string(std::strerror(errno)));
+    std::size_t done = 0;
+    while (done < script.size()) {
+        const ssize_t n = ::write(in, script.data() + done, script.size() - done);
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) {
+            ::close(in);
+            throw RuntimeError("report: cannot hold the gnuplot script: " +
+                               std::string(std::strerror(errno)));
+        }
+        done += std::size_t(n);
+    }
+    ::lseek(in, 0, SEEK_SET);
+    int out[2];
+    if (::pipe2(out, O_CLOEXEC) != 0) {
+        ::close(in);
+        throw RuntimeError("report: pipe for gnuplot: " + std::string(std::strerror(errno)));
+    }
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_adddup2(&actions, in, STDIN_FILENO);
+    posix_spawn_file_actions_adddup2(&actions, out[1], STDOUT_FILENO);
+    std::string program = "gnuplot", defaults = "--default-settings";
+    char* argv[] = {program.data(), defaults.data(), nullptr};
+    pid_t pid = 0;
+    const int spawnError = ::posix_spawnp(&pid, "gnuplot", &actions, nullptr, argv, environ);
+    posix_spawn_file_actions_destroy(&actions);
+    ::close(in);
+    ::close(out[1]);
+    std::string png;
+    if (spawnError == 0) {
+        char buffer[65536];
+        for (;;) {
+            const ssize_t n = ::read(out[0], buffer, sizeof buffer);
+            if (n < 0 && errno == EINTR) continue;
+            if (n <= 0) break;
+            png.append(buffer, std::size_t(n));
+        }
+    }
+    ::close(out[0]);
+    if (spawnError != 0)
+        throw RuntimeError("report: cannot run gnuplot (" + std::string(std::strerror(spawnError)) +
+                           "); report.png is drawn with gnuplot, Debian package gnuplot-nox");
+    int status = 0;
+    while (::waitpid(pid, &status, 0) < 0)
+        if (errno != EINTR)
+            throw RuntimeError("report: waiting for gnuplot: " + std::string(std::strerror(errno)));
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+        throw RuntimeError("report: gnuplot failed (" +
+                           (WIFEXITED(status) ? "exit status " + std::to_string(WEXITSTATUS(status))
+                                              : "signal " + std::to_string(WTERMSIG(status))) +
+                           ") on report.gp; its messages are above");
+    // gnuplot exits 0 after a write error of its own: check that what it wrote is a whole PNG.
+    (void)decodePng(png, "report: gnuplot's report.png");
+    return png;
+}
+
+void writeAll(PendingOutput& output, const std::string& text) {
+    if (std::fwrite(text.data(), 1, text.size(), output.stream()) != text.size())
+        failWrite("report file", output.target().path, std::strerror(errno));
+}
+
+// The files of one report, written as a set: each to a temporary file, all flushed to disk, then renamed
+// one after the other with signals held back; any failure before the renames leaves the old set whole.
+void writeReportSet(const fs::path& dir, const std::vector<std::pair<std::string, std::string>>& files) {
+    std::vector<PendingOutput> outputs;
+    for (const auto& [name, text] : files) {
+        outputs.emplace_back(resolveOutput(dir / name, "--out"), name);
+        writeAll(outputs.back(), text);
+    }
+    commitAll(outputs);
 }
 
 } // namespace
@@ -650,9 +733,8 @@ void requireGnuplot() {
 
 void plotReport(const std::vector<ReportRow>& rows, const ReportInfo& info, const fs::path& dir) {
     requireGnuplot();
-    const fs::path script = dir / "report.gp";
-    writeText(script, "gnuplot script", gnuplotScript(rows, info));
-    runGnuplot(script, dir / "report.png");
+    const std::string script = gnuplotScript(rows, info);
+    writeReportSet(dir, {{"report.gp", script}, {"report.png", runGnuplot(script)}});
 }
 
 // ---- the command ----
@@ -696,13 +778,37 @@ void printTable(const std::vector<ReportRow>& rows) {
                     r.psnrDb, r.ssim, r.coverageMismatch);
 }
 
-void prepareOutDir(const fs::path& dir) {
+constexpr std::array<const char*, 4> kReportFiles{"report.csv", "report.json", "report.gp", "report.png"};
+
+// Before any measuring: the folder exists (created if need be) and takes a new file, no report file in it is
+// something that cannot be replaced (a folder, a socket) or the scene itself.
+void prepareOutDir(const fs::path& dir, const std::optional<fs::path>& scene) {
+    if (dir.empty()) throw InputError("--out: the folder name is empty; give a folder such as report");
+    const std::string shown = "\"" + printable(dir.string()) + "\"";
     std::error_code error;
     if (fs::exists(dir, error) && !fs::is_directory(dir, error))
-        throw InputError("--out: \"" + dir.string() + "\" exists and is not a folder");
+        throw InputError("--out: " + shown +
+                         " exists and is not a folder; give a folder for the report files");
     fs::create_directories(dir, error);
     if (error)
-        throw RuntimeError("report: cannot create the folder \"" + dir.string() + "\": " + error.message());
+        throw InputError("--out: cannot create the folder " + shown + ": " + error.message() +
+                         "; choose a folder you can write");
+    for (const char* name : kReportFiles) {
+        (void)resolveOutput(dir / name, "--out");
+        if (scene) refuseOverwritingInput(dir / name, "--out", *scene);
+    }
+    std::string probe = (dir / ".shadelab-XXXXXX").string();
+    const int fd = ::mkstemp(probe.data());
+    if (fd < 0) {
+        const int code = errno;
+        const std::string reason = std::strerror(code);
+        if (code == EACCES || code == EPERM || code == EROFS)
+            throw InputError("--out: cannot write in the folder " + shown + ": " + reason +
+                             "; choose a folder you can write");
+        throw RuntimeError("report: cannot write in the folder " + shown + ": " + reason);
+    }
+    ::close(fd);
+    ::unlink(probe.c_str());
 }
 
 } // namespace
@@ -711,9 +817,9 @@ int runReport(const ReportOptions& options) {
     validateReportOptions(options);
     const Scene scene = options.scene ? loadScene(*options.scene) : bundledScene("report.json");
     ReportInfo info;
-    info.sceneName = options.scene ? options.scene->string() : "scenes/report.json (bundled)";
+    info.sceneName = options.scene ? printable(options.scene->string()) : "scenes/report.json (bundled)";
     requireGnuplot(); // before minutes of measuring, not after
-    prepareOutDir(options.outDir);
+    prepareOutDir(options.outDir, options.scene);
 
     const std::unique_ptr<HeadlessContext> context = makeHeadlessContext(options.backend);
     info.renderer = gl::rendererString();
@@ -729,12 +835,14 @@ int runReport(const ReportOptions& options) {
     std::fflush(stdout);
 
     const std::vector<ReportRow> rows = measureReport(*context, scene, options, ProgressBar());
-    const fs::path csv = options.outDir / "report.csv", json = options.outDir / "report.json";
-    writeReportCsv(rows, csv);
-    writeReportJson(rows, info, json);
-    plotReport(rows, info, options.outDir);
+    const std::string script = gnuplotScript(rows, info);
+    writeReportSet(options.outDir, {{"report.csv", reportCsv(rows)},
+                                    {"report.json", reportJson(rows, info)},
+                                    {"report.gp", script},
+                                    {"report.png", runGnuplot(script)}});
     printTable(rows);
-    std::printf("wrote %s, %s, %s\n", csv.c_str(), json.c_str(), (options.outDir / "report.png").c_str());
+    const std::string dir = printable(options.outDir.string());
+    std::printf("wrote report.csv, report.json, report.gp and report.png in %s\n", dir.c_str());
     return kExitOk;
 }
 

@@ -1,0 +1,226 @@
+// `shadelab report` end to end against hostile names and failing tools (README "Error against run time"):
+// nothing from a file name reaches gnuplot as a command or an option, a PNG gnuplot did not finish never
+// replaces a good one, a full disk leaves the earlier report set whole, and zero errors still plot.
+#include <fcntl.h>
+#include <sched.h>
+#include <sys/mount.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "cli/run_process.h"
+
+namespace {
+
+using namespace shadelab::cli_test;
+namespace fs = std::filesystem;
+
+constexpr std::string_view kTinyScene = R"({"image": {"width": 24, "height": 24}})";
+constexpr std::string_view kPrecious = "an earlier report file, which must survive\n";
+const std::vector<std::string> kReportFiles = {"report.csv", "report.json", "report.gp", "report.png"};
+
+std::vector<std::string> quickReport(const std::string& scene, const std::string& out) {
+    return {"report", scene, "--out", out, "--levels", "0..0", "--no-auto", "--frames", "1", "--warmup", "1"};
+}
+
+class ReportCli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        char pattern[] = "/tmp/shadelab-report-XXXXXX";
+        ASSERT_NE(::mkdtemp(pattern), nullptr);
+        dir_ = pattern;
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+    bool noTemp(const fs::path& folder) const {
+        for (const auto& entry : fs::recursive_directory_iterator(folder))
+            if (entry.path().filename().string().starts_with(".shadelab-")) return false;
+        return true;
+    }
+    void writeOldSet(const fs::path& folder) const {
+        fs::create_directories(folder);
+        for (const std::string& name : kReportFiles) writeFile(folder / name, kPrecious);
+    }
+    void expectOldSet(const fs::path& folder) const {
+        for (const std::string& name : kReportFiles)
+            EXPECT_EQ(readFile(folder / name), kPrecious) << name << " was replaced";
+        EXPECT_TRUE(noTemp(folder));
+    }
+    fs::path dir_;
+};
+
+// Runs `gnuplot` on an existing report.gp the way a user re-draws it, with no shell in between.
+int runGnuplotOn(const fs::path& folder) {
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+        const int out = ::open("/dev/null", O_WRONLY);
+        if (out < 0 || ::dup2(out, 1) < 0 || ::dup2(out, 2) < 0 || ::chdir(folder.c_str()) != 0) ::_exit(126);
+        ::execlp("gnuplot", "gnuplot", "report.gp", static_cast<char*>(nullptr));
+        ::_exit(127);
+    }
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// Every byte value 1-255 in a scene file name (a name cannot hold '/', so that one is a folder in the path),
+// with a newline followed by gnuplot's system() among them: no command may run, in report or when
+// report.gp is run again by hand.
+TEST_F(ReportCli, FileNamesNeverRunAsGnuplotCommands) {
+    std::vector<std::string> names = {std::string("evil\nsystem(\"touch PWNED\")\n#.json"),
+                                      std::string("e\r!touch PWNED\n`touch PWNED`@x'\n.json")};
+    std::string bytes;
+    for (int b = 1; b < 256; ++b)
+        if (b != '/') bytes += char(b);
+    for (std::size_t i = 0; i < bytes.size(); i += 120) names.push_back(bytes.substr(i, 120) + ".json");
+    fs::create_directories(dir_ / "sub\ndir");
+    int run = 0;
+    for (const std::string& name : names) {
+        const fs::path scene = dir_ / "sub\ndir" / name;
+        writeFile(scene, kTinyScene);
+        const std::string out = "R" + std::to_string(run++);
+        const Outcome r = runShadelab(quickReport(scene.string(), out), dir_);
+        ASSERT_EQ(r.exitCode, 0) << describe(r);
+        const std::string script = readFile(dir_ / out / "report.gp");
+        for (char c : script)
+            EXPECT_TRUE(c == '\n' || (static_cast<unsigned char>(c) >= 0x20 && c != 0x7f))
+                << "raw control byte " << int(c) << " in report.gp";
+        EXPECT_FALSE(fs::exists(dir_ / "PWNED")) << "a command from the file name ran during report";
+        EXPECT_EQ(runGnuplotOn(dir_ / out), 0);
+        EXPECT_FALSE(fs::exists(dir_ / out / "PWNED")) << "a command ran when report.gp was re-drawn";
+        EXPECT_FALSE(fs::exists(dir_ / "PWNED"));
+    }
+}
+
+// An error of exactly zero everywhere (no lights): a log axis has no place for it; the report still plots.
+TEST_F(ReportCli, ZeroErrorSceneStillPlots) {
+    writeFile(dir_ / "z.json", R"({"lights": [], "image": {"width": 32, "height": 32}})");
+    const Outcome r = runShadelab(
+        {"report", "z.json", "--out", "R", "--levels", "0..2", "--frames", "1", "--warmup", "1"}, dir_);
+    ASSERT_EQ(r.exitCode, 0) << describe(r);
+    EXPECT_NE(readFile(dir_ / "R" / "report.gp").find("0 (exact)"), std::string::npos);
+    const std::string png = readFile(dir_ / "R" / "report.png");
+    EXPECT_GT(png.size(), 1000u);
+    EXPECT_EQ(png.substr(1, 3), "PNG");
+}
+
+// Folder names that look like options reach no tool as options (gnuplot -p used to read standard input).
+TEST_F(ReportCli, OptionLikeFoldersAreFolders) {
+    writeFile(dir_ / "s.json", kTinyScene);
+    for (const std::string folder : {"-p", "-results", "--persist"}) {
+        const Outcome r = runShadelab(quickReport("s.json", folder), dir_);
+        EXPECT_EQ(r.exitCode, 0) << folder << ": " << describe(r);
+        for (const std::string& name : kReportFiles) EXPECT_TRUE(fs::exists(dir_ / folder / name)) << name;
+    }
+}
+
+// Output folders that cannot work are refused before anything is measured.
+TEST_F(ReportCli, BadOutputFolderIsRefusedBeforeMeasuring) {
+    writeFile(dir_ / "s.json", kTinyScene);
+    writeFile(dir_ / "file", "x");
+    struct Case {
+        std::string out, mention;
+    };
+    for (const Case& c : {Case{"", "the folder name is empty"}, Case{"file", "not a folder"},
+                          Case{"/proc/shadelab-report", "cannot create the folder"}}) {
+        const Outcome r = runShadelab(quickReport("s.json", c.out), dir_);
+        EXPECT_EQ(r.exitCode, 2) << "--out " << c.out << ": " << describe(r);
+        EXPECT_NE(r.err.find("--out"), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find(c.mention), std::string::npos) << r.err;
+        EXPECT_EQ(r.err.find("report: 1/"), std::string::npos) << "measured before refusing: " << r.err;
+    }
+    // The scene inside the output folder under a report file's name would be replaced by that file.
+    fs::create_directories(dir_ / "R");
+    writeFile(dir_ / "R" / "report.json", kTinyScene);
+    const Outcome r = runShadelab(quickReport("R/report.json", "R"), dir_);
+    EXPECT_EQ(r.exitCode, 2) << describe(r);
+    EXPECT_NE(r.err.find("is the input file"), std::string::npos) << r.err;
+    EXPECT_EQ(readFile(dir_ / "R" / "report.json"), kTinyScene);
+}
+
+// gnuplot exits 0 after its own write error; a PNG it did not finish must not replace the earlier one.
+// A stand-in gnuplot first on PATH writes the first 100 bytes of a real PNG and exits 0.
+TEST_F(ReportCli, TruncatedPlotKeepsTheEarlierSet) {
+    writeFile(dir_ / "s.json", kTinyScene);
+    ASSERT_EQ(runShadelab({"render", "s.json", "--out", "real.png"}, dir_).exitCode, 0);
+    fs::create_directories(dir_ / "bin");
+    writeFile(dir_ / "bin" / "gnuplot", "#!/bin/sh\nhead -c 100 \"" + (dir_ / "real.png").string() + "\"\n");
+    fs::permissions(dir_ / "bin" / "gnuplot", fs::perms::owner_all);
+    writeOldSet(dir_ / "R");
+    const std::string path = "PATH=" + (dir_ / "bin").string() + ":" + std::getenv("PATH");
+    const Outcome r = runShadelab(quickReport("s.json", "R"), dir_, Display::Inherit, {path});
+    EXPECT_EQ(r.exitCode, 1) << describe(r);
+    EXPECT_NE(r.err.find("report.png"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("truncated PNG"), std::string::npos) << r.err;
+    expectOldSet(dir_ / "R");
+}
+
+// A full disk: the report folder on a 512 KiB tmpfs in a private mount namespace, filled up but for 24
+// KiB. Every write must fail cleanly: exit 1 naming the file, the earlier set whole, no temporary file.
+TEST_F(ReportCli, FullDiskKeepsTheEarlierSet) {
+    if (::geteuid() != 0) GTEST_SKIP() << "mounting a tmpfs needs root (CI runs as root)";
+    writeFile(dir_ / "s.json", kTinyScene);
+    fs::create_directories(dir_ / "mnt");
+    int pipeFds[2];
+    ASSERT_EQ(::pipe(pipeFds), 0);
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+        ::close(pipeFds[0]);
+        auto report = [&](const std::string& text, int code) {
+            (void)!::write(pipeFds[1], text.data(), text.size());
+            ::_exit(code);
+        };
+        const fs::path mnt = dir_ / "mnt";
+        if (::unshare(CLONE_NEWNS) != 0) report(std::string("unshare: ") + std::strerror(errno), 3);
+        if (::mount(nullptr, "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0)
+            report(std::string("private /: ") + std::strerror(errno), 3);
+        if (::mount("tmpfs", mnt.c_str(), "tmpfs", 0, "size=512k") != 0)
+            report(std::string("mount tmpfs: ") + std::strerror(errno), 3);
+        writeOldSet(mnt / "R");
+        {
+            const int fill = ::open((mnt / "filler").c_str(), O_WRONLY | O_CREAT, 0644);
+            std::string block(4096, 'f');
+            off_t size = 0;
+            for (ssize_t n; (n = ::write(fill, block.data(), block.size())) > 0;) size += n;
+            // Room for the text files (about 10 KiB) but not for the plot (about 40 KiB): the old code
+            // replaced report.csv, .json and .gp, then a truncated report.png, and exited 0.
+            if (::ftruncate(fill, size - 24 * 1024) != 0) report("ftruncate filler", 3);
+            ::close(fill);
+        }
+        const Outcome r = runShadelab(quickReport((dir_ / "s.json").string(), "R"), mnt);
+        std::string problems;
+        if (r.exitCode != 1) problems += "exit code " + std::to_string(r.exitCode) + " (expected 1)\n";
+        if (r.err.find("No space left on device") == std::string::npos) problems += "no ENOSPC message\n";
+        for (const std::string& name : kReportFiles)
+            if (readFile(mnt / "R" / name) != kPrecious) problems += name + " was replaced\n";
+        for (const auto& entry : fs::directory_iterator(mnt / "R"))
+            if (entry.path().filename().string().starts_with(".shadelab-"))
+                problems += "temporary file left: " + entry.path().string() + "\n";
+        report(problems.empty() ? std::string() : problems + describe(r), problems.empty() ? 0 : 1);
+    }
+    ::close(pipeFds[1]);
+    std::string message;
+    char buffer[4096];
+    for (ssize_t n; (n = ::read(pipeFds[0], buffer, sizeof buffer)) > 0;)
+        message.append(buffer, std::size_t(n));
+    ::close(pipeFds[0]);
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    ASSERT_TRUE(WIFEXITED(status)) << message;
+    if (WEXITSTATUS(status) == 3) {
+        if (std::getenv("CI")) FAIL() << "cannot make a private tmpfs in CI: " << message;
+        GTEST_SKIP() << "cannot make a private tmpfs here: " << message;
+    }
+    EXPECT_EQ(WEXITSTATUS(status), 0) << message;
+}
+
+} // namespace
