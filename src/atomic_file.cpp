@@ -63,6 +63,24 @@ extern "C" void removeTempsAndReraise(int signal) {
     ::raise(signal);
 }
 
+// Holds SIGINT/SIGTERM/SIGHUP back for its lifetime: a signal that comes meanwhile is handled when it ends,
+// so creating a temporary file and registering it for removal happen as one step for the handler.
+class SignalHold {
+public:
+    SignalHold() {
+        sigset_t held;
+        sigemptyset(&held);
+        for (int signal : kCleanupSignals) sigaddset(&held, signal);
+        ::sigprocmask(SIG_BLOCK, &held, &previous_);
+    }
+    SignalHold(const SignalHold&) = delete;
+    SignalHold& operator=(const SignalHold&) = delete;
+    ~SignalHold() { ::sigprocmask(SIG_SETMASK, &previous_, nullptr); }
+
+private:
+    sigset_t previous_{};
+};
+
 // mkstemp creates files 0600; a new output should get the permissions fopen would have given it.
 // umask can only be read by setting it, so this runs once.
 mode_t newFileMode() {
@@ -183,10 +201,14 @@ struct PendingOutput::State {
         const fs::path dir = target.path.has_parent_path() ? target.path.parent_path() : fs::path(".");
         // A short name, so that a legal 255-byte output name still has a legal temporary beside it.
         std::string pattern = (dir / ".shadelab-XXXXXX").string();
-        const int fd = ::mkstemp(pattern.data());
+        int fd = -1;
+        {
+            const SignalHold hold;
+            fd = ::mkstemp(pattern.data());
+            if (fd >= 0) slot = registerTemp(pattern);
+        }
         if (fd < 0) fail("cannot create a temporary file in " + quoted(dir) + ": " + osError());
         tempPath = pattern;
-        slot = registerTemp(pattern);
         // An existing file keeps its mode and (where we may set it) its owner and group.
         struct stat old {};
         mode_t mode = newFileMode();
@@ -261,12 +283,14 @@ void PendingOutput::commit() {
     finish();
     if (s.committed) return;
     switch (s.target.kind) {
-    case OutputTarget::Kind::Regular:
+    case OutputTarget::Kind::Regular: {
+        const SignalHold hold; // renamed and unregistered as one step
         if (::rename(s.tempPath.c_str(), s.target.path.c_str()) != 0)
             s.fail("cannot rename " + quoted(s.tempPath) + " over it: " + osError());
         unregisterTemp(std::exchange(s.slot, -1));
         s.tempPath.clear();
         break;
+    }
     case OutputTarget::Kind::Stdout:
         if (!writeAll(STDOUT_FILENO, s.buffer, s.size)) s.fail(osError());
         break;
@@ -292,22 +316,19 @@ void PendingOutput::commit() {
 
 void commitAll(std::vector<PendingOutput>& outputs) {
     for (PendingOutput& output : outputs) output.finish();
-    sigset_t held, previous;
-    sigemptyset(&held);
-    for (int signal : kCleanupSignals) sigaddset(&held, signal);
-    ::sigprocmask(SIG_BLOCK, &held, &previous);
-    try {
-        for (PendingOutput& output : outputs) output.commit();
-    } catch (...) {
-        ::sigprocmask(SIG_SETMASK, &previous, nullptr);
-        throw;
-    }
-    ::sigprocmask(SIG_SETMASK, &previous, nullptr);
+    const SignalHold hold;
+    for (PendingOutput& output : outputs) output.commit();
 }
 
 void writeFileAtomically(const fs::path& path, std::string_view what,
                          const std::function<void(std::FILE*)>& write) {
-    PendingOutput output(resolveOutput(path, what), what);
+    OutputTarget target;
+    try {
+        target = resolveOutput(path, what);
+    } catch (const InputError& e) { // the command line was checked before the work: now it is a failure
+        throw RuntimeError(e.what());
+    }
+    PendingOutput output(std::move(target), what);
     write(output.stream());
     output.commit();
 }
