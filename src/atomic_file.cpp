@@ -326,7 +326,10 @@ void writeFileAtomically(const fs::path& path, std::string_view what,
     try {
         target = resolveOutput(path, what);
     } catch (const InputError& e) { // the command line was checked before the work: now it is a failure
-        throw RuntimeError(e.what());
+        std::string_view reason = e.what();
+        if (reason.starts_with(what) && reason.substr(what.size()).starts_with(": "))
+            reason.remove_prefix(what.size() + 2);
+        failWrite(what, path, std::string(reason));
     }
     PendingOutput output(std::move(target), what);
     write(output.stream());
