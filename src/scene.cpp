@@ -218,6 +218,13 @@ void checkProjection(const Projection& p) {
     if (p.type == ProjectionType::Perspective) {
         checkGreater(p.fovyDeg, 0, "projection.fovy_deg");
         if (!(p.fovyDeg < 180)) fail("projection.fovy_deg", "must be < 180, got " + formatNumber(p.fovyDeg));
+        // The projection holds cot(fovy/2) in 32-bit float and scales depth by it: narrower views lose the
+        // picture (4.9e-324 made the window zero-wide). 1e-6 degrees keeps it near 1e8.
+        if (p.fovyDeg < kMinFovyDeg)
+            fail("projection.fovy_deg",
+                 "must be at least " + formatNumber(kMinFovyDeg) +
+                     " degrees (a narrower view does not fit 32-bit float matrices), got " +
+                     formatNumber(p.fovyDeg));
     } else {
         checkFinite(p.left, "projection.left");
         checkDistinct(p.right, p.left, "left", "projection.right");

@@ -120,8 +120,15 @@ void checkSubdivisionLevel(int level, const char* field) {
     if (level > kMaxSubdivisions) {
         const std::string triangles =
             level <= 30 ? " (" + std::to_string(sphereTriangleCount(level)) + " triangles)" : "";
+        // Beyond about level 40 the figure leaves every unit (and double, past level 500): give its power of
+        // two, from the per-triangle cost at a level where it is exact.
+        const std::string need =
+            level <= 40
+                ? humanBytes(memoryBytes(level))
+                : "2^" + std::to_string(long(std::floor(2.0 * level + std::log2(memoryBytes(20)) - 40))) +
+                      " bytes";
         throw InputError(std::string(field) + ": level " + std::to_string(level) + " would need about " +
-                         humanBytes(memoryBytes(level)) + triangles + "; the maximum supported level is " +
+                         need + triangles + "; the maximum supported level is " +
                          std::to_string(kMaxSubdivisions) + " (" + humanBytes(memoryBytes(kMaxSubdivisions)) +
                          ")");
     }

@@ -46,6 +46,7 @@ struct SceneObject {
 };
 
 inline constexpr int kMaxImageSize = 16384;
+inline constexpr double kMinFovyDeg = 1e-6; // projection.fovy_deg: narrower views overflow float
 
 struct Scene {
     int width = 512, height = 512;

@@ -1,5 +1,6 @@
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <regex>
 
 #include "app/commands.h"
@@ -7,6 +8,7 @@
 #include "shadelab/errors.h"
 #include "shadelab/headless.h"
 #include "shadelab/reference.h"
+#include "shadelab/text.h"
 
 namespace shadelab::app {
 namespace {
@@ -45,6 +47,21 @@ int parseLevel(const std::string& text) {
     return level;
 }
 
+// A positive decimal number of pixels: digits, an optional fraction and exponent. Not hex (0x10), not
+// inf or nan, not empty, nothing after the number.
+double parseTolerance(const std::string& text) {
+    static const std::regex kDecimal(R"([+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?)");
+    const std::string shown = quoted(printable(text));
+    if (!std::regex_match(text, kDecimal))
+        throw InputError("--tolerance-px: expected a positive decimal number of pixels such as 0.5, got " +
+                         shown);
+    const double value = std::strtod(text.c_str(), nullptr);
+    if (!(value > 0) || !std::isfinite(value))
+        throw InputError("--tolerance-px: must be a positive, finite number of pixels such as 0.5, got " +
+                         shown);
+    return value;
+}
+
 } // namespace
 
 Scene composeScene(const std::string& path, const SceneOverrides& o) {
@@ -74,17 +91,14 @@ Scene composeScene(const std::string& path, const SceneOverrides& o) {
                              "; expected one of standard, reversed, reversed-infinite");
         scene.depth = *mode;
     }
-    if (o.tolerancePx) {
-        if (!(*o.tolerancePx > 0) || !std::isfinite(*o.tolerancePx)) {
-            char value[32];
-            std::snprintf(value, sizeof value, "%g", *o.tolerancePx);
-            throw InputError(std::string("--tolerance-px: must be a positive number of pixels, got ") +
-                             value);
-        }
-        scene.tolerancePx = *o.tolerancePx;
-    }
+    if (o.tolerancePx) scene.tolerancePx = parseTolerance(*o.tolerancePx);
     if (o.size) composeSize(scene, *o.size);
-    validateScene(scene);
+    try {
+        validateScene(scene);
+    } catch (const InputError& e) { // name the file the values came from, as parsing does
+        if (path.empty() || path == "-") throw;
+        throw InputError(printable(path) + ": " + e.what());
+    }
     return scene;
 }
 

@@ -15,7 +15,7 @@ namespace shadelab::app {
 struct SceneOverrides {
     std::optional<std::string> shading, lighting, size;
     std::optional<std::string> subdivisions; // a level or "auto"
-    std::optional<double> tolerancePx;
+    std::optional<std::string> tolerancePx; // a decimal number, parsed by composeScene
     std::optional<std::string> depth; // standard | reversed | reversed-infinite
 };
 

@@ -1,5 +1,6 @@
 // EGL on Mesa's surfaceless platform: a GL context with no display and no window system. Plain
 // eglGetDisplay(EGL_DEFAULT_DISPLAY) fails without an X display, so the platform is asked for explicitly.
+#include <cstdlib>
 #include <cstring>
 #include <string>
 
@@ -9,6 +10,7 @@
 #include "shadelab/context.h"
 #include "shadelab/errors.h"
 #include "shadelab/gl/loader.h"
+#include "shadelab/text.h"
 
 namespace shadelab {
 namespace {
@@ -42,9 +44,32 @@ const char* eglErrorName(EGLint error) {
     }
 }
 
+// Environment variables that steer Mesa or glvnd: when one is set, it is the likelier cause of a failure
+// than a broken install, so the message names it.
+std::string environmentHint() {
+    static constexpr const char* kVariables[] = {"GALLIUM_DRIVER",
+                                                 "MESA_GL_VERSION_OVERRIDE",
+                                                 "MESA_GLSL_VERSION_OVERRIDE",
+                                                 "MESA_LOADER_DRIVER_OVERRIDE",
+                                                 "LIBGL_ALWAYS_SOFTWARE",
+                                                 "EGL_PLATFORM",
+                                                 "__EGL_VENDOR_LIBRARY_FILENAMES",
+                                                 "__EGL_VENDOR_LIBRARY_DIRS",
+                                                 "LIBGL_DRIVERS_PATH"};
+    std::string set;
+    for (const char* name : kVariables)
+        if (const char* value = std::getenv(name); value && *value)
+            set += (set.empty() ? "" : ", ") + std::string(name) + "=" + printable(value);
+    const std::string install = "Is Mesa's EGL installed (libegl1, libgl1-mesa-dri)?";
+    if (set.empty()) return install;
+    return "The environment sets " + set +
+           ", which Mesa reads: unset it (or give a value this Mesa supports) and try again. Otherwise: " +
+           install;
+}
+
 [[noreturn]] void fail(const std::string& step) {
-    throw RuntimeError("egl: " + step + " failed (" + eglErrorName(eglGetError()) +
-                       "). Is Mesa's EGL installed (libegl1, libgl1-mesa-dri)?");
+    throw RuntimeError("egl: " + step + " failed (" + eglErrorName(eglGetError()) + "). " +
+                       environmentHint());
 }
 
 bool hasExtension(const char* list, const char* name) {
