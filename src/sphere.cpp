@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <new>
 #include <sstream>
 
 #include "shadelab/errors.h"
@@ -134,8 +135,25 @@ void checkSubdivisionLevel(int level, const char* field) {
     }
 }
 
+namespace {
+SphereMesh buildSphereUnchecked(int level, VertexNormals normals);
+} // namespace
+
 SphereMesh buildSphere(int level, VertexNormals normals) {
     checkSubdivisionLevel(level);
+    try {
+        return buildSphereUnchecked(level, normals);
+    } catch (const std::bad_alloc&) {
+        throw RuntimeError("out of memory building the level-" + std::to_string(level) + " sphere (" +
+                           std::to_string(sphereTriangleCount(level)) + " triangles), which needs about " +
+                           humanBytes(memoryBytes(level)) +
+                           "; free memory or raise the limit (ulimit -v), or use a lower --subdivisions");
+    }
+}
+
+namespace {
+
+SphereMesh buildSphereUnchecked(int level, VertexNormals normals) {
     SphereMesh mesh;
     mesh.level = level;
     mesh.positions.reserve(sphereVertexCount(level));
@@ -175,6 +193,8 @@ SphereMesh buildSphere(int level, VertexNormals normals) {
     }
     return mesh;
 }
+
+} // namespace
 
 std::vector<SmoothVertex> smoothVertices(const SphereMesh& mesh) {
     std::vector<SmoothVertex> out(mesh.positions.size());

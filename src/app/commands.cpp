@@ -4,6 +4,7 @@
 #include <regex>
 
 #include "app/commands.h"
+#include "app/memory_budget.h"
 #include "shadelab/atomic_file.h"
 #include "shadelab/errors.h"
 #include "shadelab/headless.h"
@@ -112,7 +113,17 @@ Backend backendFromArgument(const std::string& name) {
     return *backend;
 }
 
+namespace {
+
+std::string sizeText(const Scene& scene) {
+    return std::to_string(scene.width) + "x" + std::to_string(scene.height);
+}
+
+} // namespace
+
 int runRender(const Scene& scene, Backend backend, const std::filesystem::path& out, bool specialize) {
+    checkMemoryBudget("a render of " + sizeText(scene), kGlBaselineBytes + renderBytes(scene),
+                      "--size (or the scene's image)");
     HeadlessRenderer renderer(backend);
     renderer.setSpecialize(specialize);
     writePng(renderer.render(scene), out);
@@ -125,6 +136,9 @@ int runReference(const Scene& scene, const std::filesystem::path& out) {
 }
 
 int runShowcase(const Scene& scene, Backend backend, const std::filesystem::path& out) {
+    // Four panels of the scene's size side by side.
+    checkMemoryBudget("the showcase of " + sizeText(scene), kGlBaselineBytes + 4 * renderBytes(scene),
+                      "--size (or the scene's image)");
     HeadlessRenderer renderer(backend);
     writePng(renderShowcase(renderer, scene), out);
     if (out != "-") std::printf("%s\n", out.string().c_str());

@@ -37,7 +37,15 @@ void checkGlError(const char* stage) {
     }
     char code[16];
     std::snprintf(code, sizeof code, "0x%04X", error);
-    throw RuntimeError(std::string("GL error ") + code + " in " + stage);
+    const char* name = error == GL_OUT_OF_MEMORY       ? " (GL_OUT_OF_MEMORY: the driver could not allocate "
+                                                         "the buffers; free memory, raise the limit (ulimit "
+                                                         "-v), or use a smaller --size or --subdivisions)"
+                       : error == GL_INVALID_ENUM      ? " (GL_INVALID_ENUM)"
+                       : error == GL_INVALID_VALUE     ? " (GL_INVALID_VALUE)"
+                       : error == GL_INVALID_OPERATION ? " (GL_INVALID_OPERATION)"
+                       : error == GL_INVALID_FRAMEBUFFER_OPERATION ? " (GL_INVALID_FRAMEBUFFER_OPERATION)"
+                                                                   : "";
+    throw RuntimeError(std::string("GL error ") + code + " in " + stage + name);
 }
 
 void finish() {

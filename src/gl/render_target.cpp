@@ -1,6 +1,7 @@
 #include "shadelab/gl/render_target.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
 
 #include <glad/gl.h>
@@ -40,6 +41,23 @@ template <typename T> void flipRows(std::vector<T>& pixels, int width, int heigh
                          pixels.begin() + std::ptrdiff_t((height - 1 - y) * row));
 }
 
+const char* framebufferStatusName(GLenum status) {
+    switch (status) {
+    case GL_FRAMEBUFFER_UNDEFINED:
+        return "GL_FRAMEBUFFER_UNDEFINED";
+    case GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT:
+        return "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT";
+    case GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT:
+        return "GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT";
+    case GL_FRAMEBUFFER_UNSUPPORTED:
+        return "GL_FRAMEBUFFER_UNSUPPORTED";
+    case GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE:
+        return "GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE";
+    default:
+        return "an unknown framebuffer status";
+    }
+}
+
 } // namespace
 
 DepthFormat depthFormatFor(DepthMode mode) {
@@ -60,9 +78,22 @@ RenderTarget::RenderTarget(int width, int height, ColorFormat format, DepthForma
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_.get());
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.get());
     const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-    if (status != GL_FRAMEBUFFER_COMPLETE)
-        throw RuntimeError("offscreen framebuffer " + std::to_string(width) + "x" + std::to_string(height) +
-                           " is incomplete (status " + std::to_string(status) + ")");
+    if (status != GL_FRAMEBUFFER_COMPLETE) {
+        GLint maxRenderbuffer = 0;
+        GLint maxViewport[2] = {0, 0};
+        glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxRenderbuffer);
+        glGetIntegerv(GL_MAX_VIEWPORT_DIMS, maxViewport);
+        const double megabytes = double(width) * height * (format == ColorFormat::Rgba8 ? 8 : 20) / 1048576.0;
+        char needed[64];
+        std::snprintf(needed, sizeof needed, "%.0f MiB", megabytes);
+        throw RuntimeError(
+            "offscreen framebuffer " + std::to_string(width) + "x" + std::to_string(height) +
+            " (colour + depth, about " + needed + ") is incomplete: " + framebufferStatusName(status) +
+            "; this context allows renderbuffers up to " + std::to_string(maxRenderbuffer) +
+            " and viewports up to " + std::to_string(maxViewport[0]) + "x" + std::to_string(maxViewport[1]) +
+            " (an attachment that could not be allocated, e.g. under a memory limit, also shows as "
+            "incomplete): try a smaller --size");
+    }
     checkGlError("creating the offscreen framebuffer");
 }
 

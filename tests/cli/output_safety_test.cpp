@@ -6,6 +6,7 @@
 #include <grp.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
 #include <sys/sysmacros.h>
@@ -58,6 +59,7 @@ struct RunOptions {
     std::function<bool()> signalWhen;     // polled every 2 ms; when true, `signal` is sent once
     int signal = 0;
     std::chrono::seconds timeout = 120s;
+    rlim_t addressSpace = RLIM_INFINITY; // RLIMIT_AS for the child, as `ulimit -v` sets it
 };
 
 // Runs shadelab through fork/execve (never a shell) in `cwd`.
@@ -91,6 +93,8 @@ Outcome runShadelab(const std::vector<std::string>& args, const fs::path& cwd,
                              ::setresuid(*options.user, *options.user, *options.user) != 0))
             ::_exit(125);
         if (::chdir(folder.c_str()) != 0) ::_exit(124);
+        const rlimit limit{options.addressSpace, options.addressSpace};
+        if (options.addressSpace != RLIM_INFINITY && ::setrlimit(RLIMIT_AS, &limit) != 0) ::_exit(123);
         ::execve(argv[0], argv.data(), environ);
         ::_exit(127);
     }
@@ -411,6 +415,55 @@ TEST_P(OutputSafety, ContentAfterANulByteIsAnError) {
     EXPECT_EQ(r.exitCode, 2) << describe(r);
     EXPECT_NE(r.err.find("NUL"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(dir_ / "o.png"));
+}
+
+// Memory limits (ulimit -v): estimated before anything is spent, refused with the figures; a failure that
+// still comes names what was being built. Never a crash inside Mesa, never a bare std::bad_alloc.
+class ResourceLimits : public ::testing::Test {
+protected:
+    void SetUp() override {
+#if defined(__SANITIZE_ADDRESS__)
+        GTEST_SKIP() << "AddressSanitizer reserves terabytes of address space: no RLIMIT_AS run can start";
+#endif
+        char pattern[] = "/tmp/shadelab-limits-XXXXXX";
+        ASSERT_NE(::mkdtemp(pattern), nullptr);
+        dir_ = pattern;
+    }
+    void TearDown() override {
+        if (!dir_.empty()) fs::remove_all(dir_);
+    }
+    fs::path dir_;
+};
+
+TEST_F(ResourceLimits, RenderUnderASmallAddressSpaceIsRefusedUpFront) {
+    RunOptions options;
+    options.addressSpace = 500'000 * 1024; // `ulimit -v 500000`: Mesa crashed at random here (exit 139)
+    const Outcome r = runShadelab({"render", "--out", "x.png"}, dir_, options);
+    EXPECT_EQ(r.exitCode, 1) << describe(r);
+    EXPECT_EQ(r.signal, 0) << describe(r);
+    EXPECT_NE(r.err.find("needs about"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("the limit (ulimit -v) is 488 MiB"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir_ / "x.png"));
+}
+
+TEST_F(ResourceLimits, OutOfMemoryNamesWhatWasBeingBuilt) {
+    RunOptions options;
+    options.addressSpace = 800'000 * 1024; // the issue's `ulimit -v 800000`: "std::bad_alloc" before
+    const Outcome r = runShadelab({"render", "--subdivisions", "10", "--out", "x.png"}, dir_, options);
+    EXPECT_EQ(r.exitCode, 1) << describe(r);
+    EXPECT_EQ(r.signal, 0) << describe(r);
+    EXPECT_EQ(r.err.find("std::bad_alloc"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("MiB"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("ulimit -v"), std::string::npos) << r.err;
+}
+
+TEST_F(ResourceLimits, ReportBeyondTheMachineIsRefusedBeforeMeasuring) {
+    writeFile(dir_ / "huge.json", R"({"image": {"width": 16384, "height": 16384}})");
+    const Outcome r = runShadelab({"report", "huge.json", "--out", "R"}, dir_);
+    EXPECT_EQ(r.exitCode, 2) << describe(r);
+    EXPECT_NE(r.err.find("16384x16384"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("more than this machine's"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir_ / "R"));
 }
 
 INSTANTIATE_TEST_SUITE_P(AsUser, OutputSafety, ::testing::Values(User::Root, User::Nobody),

@@ -1,0 +1,51 @@
+#include "app/memory_budget.h"
+
+#include <cstdio>
+#include <set>
+
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include "shadelab/errors.h"
+#include "shadelab/sphere.h"
+
+namespace shadelab::app {
+
+std::string mebibytes(double bytes) {
+    char text[48];
+    std::snprintf(text, sizeof text, "%.0f MiB", bytes / (1024.0 * 1024.0));
+    return text;
+}
+
+double renderBytes(const Scene& scene) {
+    const double pixels = double(scene.width) * scene.height;
+    // RGBA8 colour + 32-bit depth renderbuffers, the RGBA8 read-back, the Image and the PNG's RGB rows.
+    double bytes = pixels * (4 + 4 + 4 + 4 + 3);
+    std::set<int> levels;
+    for (const SceneObject& object : scene.objects)
+        levels.insert(object.subdivisions == kAutoSubdivisions ? kMaxSubdivisions : object.subdivisions);
+    for (int level : levels) {
+        const double vertices = double(sphereVertexCount(level)),
+                     triangles = double(sphereTriangleCount(level));
+        // Smooth: position + normal floats and 32-bit indices; flat: three such vertices per triangle.
+        bytes += scene.shading == ShadingMode::Flat ? triangles * 3 * 24 : vertices * 24 + triangles * 12;
+    }
+    return bytes;
+}
+
+void checkMemoryBudget(std::string_view what, double needBytes, std::string_view sizeField) {
+    const long pages = ::sysconf(_SC_PHYS_PAGES), pageSize = ::sysconf(_SC_PAGESIZE);
+    if (pages > 0 && pageSize > 0 && needBytes > double(pages) * double(pageSize))
+        throw InputError(std::string(sizeField) + ": " + std::string(what) + " would need about " +
+                         mebibytes(needBytes) + ", more than this machine's " +
+                         mebibytes(double(pages) * double(pageSize)) + " of memory; choose a smaller size");
+    rlimit limit{};
+    if (::getrlimit(RLIMIT_AS, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) return;
+    if (needBytes > double(limit.rlim_cur))
+        throw RuntimeError(std::string(what) + " needs about " + mebibytes(needBytes) +
+                           " of address space, but the limit (ulimit -v) is " +
+                           mebibytes(double(limit.rlim_cur)) +
+                           "; raise it (ulimit -v unlimited) or choose a smaller --size or --subdivisions");
+}
+
+} // namespace shadelab::app

@@ -1,0 +1,29 @@
+// What a run will need in memory, estimated before any of it is spent, against what the process may have:
+// the address-space limit (ulimit -v, RLIMIT_AS) and the machine's physical memory. README "Memory".
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+#include "shadelab/scene.h"
+
+namespace shadelab::app {
+
+// Address space the GL stack itself takes before drawing anything, measured with Mesa 22.3 llvmpipe on
+// 2 cores (EGL and OSMesa): a 64x64 render fails or crashes inside Mesa (exit 139) at random below about
+// 640 MiB of `ulimit -v`, and succeeded in every run from 660 MB up.
+inline constexpr double kGlBaselineBytes = 640.0 * 1024 * 1024;
+
+// Bytes one render of `scene` adds on top of the baseline: the offscreen colour and depth buffers, the
+// read-back and PNG rows, and the GPU copies of every distinct sphere (vertex and index buffers).
+double renderBytes(const Scene& scene);
+
+// Throws RuntimeError (exit 1) when `needBytes` is over the address-space limit: names `what`, the
+// estimate, the limit and the fix. Throws InputError (exit 2) naming `sizeField` when it is over the
+// machine's physical memory: no limit could make such a run work here.
+void checkMemoryBudget(std::string_view what, double needBytes, std::string_view sizeField);
+
+std::string mebibytes(double bytes);
+
+} // namespace shadelab::app
