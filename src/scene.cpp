@@ -26,6 +26,7 @@
 
 #include "shadelab/atomic_file.h"
 #include "shadelab/errors.h"
+#include "shadelab/subdivision.h"
 #include "shadelab/text.h"
 
 namespace shadelab {
@@ -255,6 +256,32 @@ void checkObject(const SceneObject& object, const std::string& path) {
         if (object.scale[i] == 0) fail(indexPath(scalePath, i), "must be non-zero, got 0");
     checkSubdivisions(object.subdivisions, keyPath(path, "subdivisions"));
     checkMaterial(object.material, keyPath(path, "material"));
+}
+
+void checkObjectCount(std::size_t count) {
+    if (count > kMaxObjects)
+        fail("objects", "at most " + std::to_string(kMaxObjects) + " objects are supported, got " +
+                            std::to_string(count) + "; draw fewer objects");
+}
+
+// The work a scene asks for, bounded before any of it is done (README "Limits"): the triangles drawn per
+// frame, and the ray-object tests of the analytic reference (pixels × objects), which render and reference
+// share as one notion of a valid scene.
+void checkWork(const Scene& scene) {
+    double triangles = 0;
+    for (const SceneObject& object : scene.objects)
+        triangles += double(sphereTriangleCount(subdivisionLevel(scene, object)));
+    if (triangles > double(kMaxTrianglesPerFrame))
+        fail("objects", "the scene draws " + formatNumber(triangles) +
+                            " triangles per frame (each object 4^(level+1)); at most " +
+                            std::to_string(kMaxTrianglesPerFrame) +
+                            " are allowed: lower the objects' subdivisions or draw fewer objects");
+    const double rayTests = double(scene.width) * scene.height * double(scene.objects.size());
+    if (rayTests > double(kMaxReferenceRayTests))
+        fail("objects", "the analytic reference would test " + formatNumber(rayTests) +
+                            " rays against objects (width x height x objects); at most " +
+                            std::to_string(kMaxReferenceRayTests) +
+                            " are allowed: use a smaller image or fewer objects");
 }
 
 void checkLightCount(std::size_t count) {
@@ -606,6 +633,7 @@ const Json& requireArray(const Json& value, std::string_view path) {
 }
 
 std::vector<SceneObject> readObjects(const Json& json) {
+    checkObjectCount(requireArray(json, "objects").size());
     std::vector<SceneObject> objects;
     for (std::size_t i = 0; i < requireArray(json, "objects").size(); ++i)
         objects.push_back(readObject(json[i], indexPath("objects", i)));
@@ -886,6 +914,8 @@ void validateScene(const Scene& scene) {
     checkLightCount(scene.lights.size());
     for (std::size_t i = 0; i < scene.lights.size(); ++i) checkLight(scene.lights[i], indexPath("lights", i));
     (void)sceneView(scene); // the derived matrices must be finite too
+    checkObjectCount(scene.objects.size());
+    checkWork(scene);
 }
 
 SceneView sceneView(const Scene& scene) {

@@ -2,6 +2,8 @@
 // (DESIGN §4). Parsing validates everything and names the JSON path of any bad value.
 #pragma once
 
+#include <cstddef>
+
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -46,6 +48,11 @@ struct SceneObject {
 };
 
 inline constexpr int kMaxImageSize = 16384;
+// The work one scene may ask for (README "Limits"): measured on 2 cores with llvmpipe, 1,000 level-6
+// spheres (16.4 M triangles) render in 1.1 s and their reference (262 M ray tests) takes 2.2 s.
+inline constexpr std::size_t kMaxObjects = 10000;
+inline constexpr std::size_t kMaxTrianglesPerFrame = std::size_t(1) << 26;
+inline constexpr std::size_t kMaxReferenceRayTests = std::size_t(1) << 32;
 inline constexpr double kMinFovyDeg = 1e-6; // projection.fovy_deg: narrower views overflow float
 
 struct Scene {

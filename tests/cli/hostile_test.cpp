@@ -473,6 +473,34 @@ const HostileCase kCases[] = {
      .mentions = {"egl", "MESA_GL_VERSION_OVERRIDE=2.1", "unset it"},
      .environment = {"MESA_GL_VERSION_OVERRIDE=2.1"},
      .preciousOut = true},
+    // Work bounded before it is spent (README "Limits"): objects, triangles per frame, reference ray tests.
+    {.name = "objects_over_the_limit",
+     .args = {"render", "scene.json", "--size", "8x8", "--out", "out.png"},
+     .exitCode = 2,
+     .mentions = {"scene.json", "objects", "at most 10000 objects", "got 200000"},
+     .prepare = sceneFrom([] {
+         std::string objects = repeat("{},", 200'000);
+         objects.pop_back();
+         return R"({"objects": [)" + objects + "]}";
+     })},
+    {.name = "triangles_over_the_limit",
+     .args = {"render", "scene.json", "--size", "8x8", "--out", "out.png"},
+     .exitCode = 2,
+     .mentions = {"scene.json", "objects", "71303168 triangles per frame", "at most 67108864"},
+     .prepare = sceneFrom([] {
+         std::string objects = repeat(R"({"subdivisions": 10},)", 17);
+         objects.pop_back();
+         return R"({"objects": [)" + objects + "]}";
+     })},
+    {.name = "reference_ray_tests_over_the_limit",
+     .args = {"reference", "scene.json", "--out", "out.png"},
+     .exitCode = 2,
+     .mentions = {"scene.json", "objects", "4563402752 rays", "smaller image or fewer objects"},
+     .prepare = sceneFrom([] {
+         std::string objects = repeat(R"({"subdivisions": 0},)", 17);
+         objects.pop_back();
+         return R"({"image": {"width": 16384, "height": 16384}, "objects": [)" + objects + "]}";
+     })},
     // A value float cannot carry is refused naming the file and the field.
     {.name = "fovy_denormal",
      .args = referenceScene(),
