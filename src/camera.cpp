@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "shadelab/errors.h"
+#include "shadelab/lighting.h"
 
 namespace shadelab {
 namespace {
@@ -29,16 +30,15 @@ CameraFrame cameraFrame(const glm::dvec3& eye, const glm::dvec3& target, const g
     if (!finite(back))
         throw InputError("camera: eye " + str(eye) + " and target " + str(target) +
                          " are too far apart for double precision; move them closer together");
-    const double distance = glm::length(back);
-    if (!(distance > 0))
+    if (back == glm::dvec3(0))
         throw InputError("camera: eye " + str(eye) + " equals target " + str(target) +
                          "; move the eye away from the target");
-    const glm::dvec3 w = back / distance;
-    // Normalizing up first makes the test scale-free and keeps a tiny up (1e-151) from underflowing:
-    // |t̂ × w| = sin θ, and 1e-9 rad is far below any usable camera and far above rounding noise.
-    const double upLength = glm::length(up);
-    if (!(upLength > 0)) throw InputError("camera.up: must be non-zero, got " + str(up));
-    const glm::dvec3 side = upLength > 0 ? glm::cross(up / upLength, w) : glm::dvec3(0);
+    // Both made unit scale-free (divided by their largest component first): |e − t|² would overflow for an
+    // eye at 1.4e154 and underflow for a tiny up. |û × w| = sin θ, and 1e-9 rad is far below any usable
+    // camera and far above rounding noise.
+    const glm::dvec3 w = unitDirection(back);
+    if (up == glm::dvec3(0)) throw InputError("camera.up: must be non-zero, got " + str(up));
+    const glm::dvec3 side = glm::cross(unitDirection(up), w);
     if (!(glm::length(side) > 1e-9))
         throw InputError("camera: up " + str(up) + " is parallel to the view direction " + str(-w) +
                          "; choose an up vector not parallel to target − eye");

@@ -102,8 +102,17 @@ std::optional<LightType> parseLightType(std::string_view text) {
 Light transformLight(const Light& light, const glm::dmat4& m) {
     Light out = light;
     out.position = glm::dvec3(m * glm::dvec4(light.position, 1.0));
-    out.direction = glm::dmat3(m) * light.direction;
+    // A direction is scale-free: made unit in double first, so [1e-30, 0, 0] lights exactly as [1, 0, 0]
+    // in the renderer (float uniforms) and in the reference alike.
+    out.direction = unitDirection(glm::dmat3(m) * unitDirection(light.direction));
     return out;
+}
+
+glm::dvec3 unitDirection(const glm::dvec3& v) {
+    const double largest = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+    if (!(largest > 0) || !std::isfinite(largest)) return v; // validation refuses zero and non-finite
+    const glm::dvec3 scaled = v / largest;                   // exact for any finite scale, subnormals too
+    return scaled / glm::length(scaled);
 }
 
 glm::dvec3 safeNormalize(const glm::dvec3& v, const glm::dvec3& fallback) {

@@ -236,6 +236,28 @@ void checkProjection(const Projection& p) {
     checkFinite(p.far, "projection.far");
     if (!(p.far > p.near))
         fail("projection.far", "must be > near (" + formatNumber(p.near) + "), got " + formatNumber(p.far));
+    // The projection matrix reaches the GPU as 32-bit float (normal range 1.2e-38..3.4e38, and its entries
+    // are products and quotients of these values): near 1e-300 or a window of ±1e-300 became 0 there and
+    // drew nothing. Refuse what float cannot carry instead of drawing a wrong picture; a scene that needs
+    // more can change its units.
+    auto inFloatRange = [](double magnitude, std::string_view path) {
+        if (magnitude != 0 && (magnitude < kMinProjectionExtent || magnitude > kMaxProjectionExtent))
+            fail(path, "must be 0 or between " + formatNumber(kMinProjectionExtent) + " and " +
+                           formatNumber(kMaxProjectionExtent) +
+                           " in magnitude (the projection is 32-bit float on the GPU), got " +
+                           formatNumber(magnitude) + "; change the scene's units");
+    };
+    inFloatRange(p.near, "projection.near");
+    inFloatRange(p.far, "projection.far");
+    if (p.type == ProjectionType::Orthographic) {
+        inFloatRange(std::abs(p.left), "projection.left");
+        inFloatRange(std::abs(p.right), "projection.right");
+        inFloatRange(std::abs(p.bottom), "projection.bottom");
+        inFloatRange(std::abs(p.top), "projection.top");
+        inFloatRange(std::abs(p.right - p.left), "projection.right");
+        inFloatRange(std::abs(p.top - p.bottom), "projection.top");
+    }
+    inFloatRange(p.far - p.near, "projection.far");
 }
 
 void checkMaterial(const Material& m, const std::string& path) {

@@ -117,6 +117,20 @@ TEST(CameraFrame, IsOrthonormalRightHandedAndLooksAtTheTarget) {
     }
 }
 
+// |e − t|² overflows double for an eye at 1.4e154; the frame used to be refused with a false "up is
+// parallel to the view direction [-0, -0, -0]". Scale-free normalization gives the exact frame.
+TEST(CameraFrame, HugeAndTinyEyeDistancesGiveTheExactFrame) {
+    for (double z : {1.4e154, 1e300, 1e-300, 4.9e-324}) {
+        SCOPED_TRACE(z);
+        const CameraFrame f = cameraFrame({0, 0, z}, {0, 0, 0}, {0, 1, 0});
+        EXPECT_EQ(f.w, glm::dvec3(0, 0, 1));
+        EXPECT_EQ(f.u, glm::dvec3(1, 0, 0));
+        EXPECT_EQ(f.v, glm::dvec3(0, 1, 0));
+    }
+    const CameraFrame tinyUp = cameraFrame({0, 0, 3}, {0, 0, 0}, {0, 1e-320, 0});
+    EXPECT_EQ(tinyUp.v, glm::dvec3(0, 1, 0));
+}
+
 TEST(CameraFrame, UpParallelToTheViewDirectionIsAnInputError) {
     const glm::dvec3 eye{1, 2, 3}, target{-2, 0.5, 7};
     const glm::dvec3 forward = target - eye;

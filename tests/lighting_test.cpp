@@ -439,7 +439,7 @@ TEST(TransformLight, MovesPositionsWithTranslationAndDirectionsWithout) {
     light.attenuation = {0.5, 0.25, 0.125};
     const Light moved = transformLight(light, m);
     EXPECT_VEC_NEAR(moved.position, glm::dvec3(1, 3, 3), 1e-15);  // (0, 1, 0) + (1, 2, 3)
-    EXPECT_VEC_NEAR(moved.direction, glm::dvec3(0, 2, 0), 1e-15); // rotated, not translated
+    EXPECT_VEC_NEAR(moved.direction, glm::dvec3(0, 1, 0), 1e-15); // rotated, not translated, made unit
     EXPECT_EQ(moved.type, light.type);
     EXPECT_EQ(moved.ambient, light.ambient);
     EXPECT_EQ(moved.diffuse, light.diffuse);
@@ -448,9 +448,9 @@ TEST(TransformLight, MovesPositionsWithTranslationAndDirectionsWithout) {
     EXPECT_EQ(moved.exponent, light.exponent);
     EXPECT_EQ(moved.attenuation, light.attenuation);
 
-    // A pure translation leaves directions alone.
+    // A pure translation leaves directions alone (made unit: [2, 0, 0] is [1, 0, 0]).
     const Light shifted = transformLight(light, glm::translate(glm::dmat4(1.0), glm::dvec3(-5, 6, 7)));
-    EXPECT_EQ(shifted.direction, light.direction);
+    EXPECT_EQ(shifted.direction, glm::dvec3(1, 0, 0));
     EXPECT_VEC_NEAR(shifted.position, glm::dvec3(-4, 6, 7), 1e-15);
 }
 
@@ -472,6 +472,23 @@ TEST(TransformLight, ShadingIsInvariantUnderARigidMove) {
         const glm::dvec3 after = shade(movedPoint, exampleMaterial(8), moved, ShadeOptions{model, false});
         EXPECT_VEC_NEAR(after, before, 1e-12) << toString(model);
     }
+}
+
+// A direction is scale-free (issue 14): [1e-30, 0, 0] used to light differently from [1, 0, 0] in the
+// renderer, the reference and the unit direction, because 1e-30 fell under the "zero" threshold.
+TEST(TransformLight, DirectionsOfAnyScaleLightAlike) {
+    const glm::dmat4 view = glm::rotate(glm::dmat4(1.0), 0.3, glm::dvec3(0, 1, 0));
+    Light unit = spotLight(25, 4);
+    unit.direction = {1, -2, 0.5};
+    const glm::dvec3 expected = transformLight(unit, view).direction;
+    EXPECT_NEAR(glm::length(expected), 1.0, 1e-15);
+    for (double scale : {1e-30, 1e-300, 1e30, 1e300}) {
+        Light scaled = unit;
+        scaled.direction = unit.direction * scale;
+        EXPECT_VEC_NEAR(transformLight(scaled, view).direction, expected, 1e-15) << "scale " << scale;
+    }
+    EXPECT_VEC_NEAR(unitDirection(glm::dvec3(1e-320, 0, 0)), glm::dvec3(1, 0, 0), 0);
+    EXPECT_VEC_NEAR(unitDirection(glm::dvec3(0, -1e308, 1e308)), glm::normalize(glm::dvec3(0, -1, 1)), 1e-15);
 }
 
 } // namespace

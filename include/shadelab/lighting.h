@@ -88,4 +88,8 @@ glm::dvec3 clampColor(const glm::dvec3& color);
 // 0).
 glm::dvec3 safeNormalize(const glm::dvec3& v, const glm::dvec3& fallback);
 
+// `v` scaled to unit length whatever its magnitude (1e-300 or 1e300): divided by its largest component
+// first. Directions (of lights, of spots) are scale-free; `v` must be finite and non-zero.
+glm::dvec3 unitDirection(const glm::dvec3& v);
+
 } // namespace shadelab

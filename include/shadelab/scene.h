@@ -53,6 +53,9 @@ inline constexpr int kMaxImageSize = 16384;
 inline constexpr std::size_t kMaxObjects = 10000;
 inline constexpr std::size_t kMaxTrianglesPerFrame = std::size_t(1) << 26;
 inline constexpr std::size_t kMaxReferenceRayTests = std::size_t(1) << 32;
+// Projection planes (near, far, an orthographic window and its widths) must lie in this magnitude range:
+// the projection matrix is 32-bit float on the GPU.
+inline constexpr double kMinProjectionExtent = 1e-30, kMaxProjectionExtent = 1e30;
 inline constexpr double kMinFovyDeg = 1e-6; // projection.fovy_deg: narrower views overflow float
 
 struct Scene {

@@ -501,6 +501,19 @@ const HostileCase kCases[] = {
          objects.pop_back();
          return R"({"image": {"width": 16384, "height": 16384}, "objects": [)" + objects + "]}";
      })},
+    // Projections 32-bit float cannot carry: render and reference both drew nothing, exit 0.
+    {.name = "perspective_near_1e_minus_300_far_1e300",
+     .args = referenceScene(),
+     .exitCode = 2,
+     .mentions = {"scene.json", "projection.near", "between 1e-30 and 1e+30", "1e-300"},
+     .prepare =
+         scene(R"({"projection": {"type": "perspective", "fovy_deg": 40, "near": 1e-300, "far": 1e300}})")},
+    {.name = "orthographic_window_1e_minus_300",
+     .args = {"render", "scene.json", "--size", "8x8", "--out", "out.png"},
+     .exitCode = 2,
+     .mentions = {"scene.json", "projection.left", "between 1e-30 and 1e+30"},
+     .prepare = scene(R"({"projection": {"type": "orthographic", "left": -1e-300, "right": 1e-300,
+                          "bottom": -1e-300, "top": 1e-300, "near": 1, "far": 10}})")},
     // A value float cannot carry is refused naming the file and the field.
     {.name = "fovy_denormal",
      .args = referenceScene(),

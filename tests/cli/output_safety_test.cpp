@@ -466,6 +466,29 @@ TEST_F(ResourceLimits, ReportBeyondTheMachineIsRefusedBeforeMeasuring) {
     EXPECT_FALSE(fs::exists(dir_ / "R"));
 }
 
+// Accepted, then drawn wrong (issue 14): a directional or spot direction of any scale must light exactly as
+// its unit direction, in the renderer and in the reference alike.
+TEST_F(ResourceLimits, DirectionsOfAnyScaleDrawTheSamePicture) {
+    auto scene = [](const std::string& direction) {
+        return R"({"image": {"width": 48, "height": 48}, "lights": [{"type": "directional", "direction": )" +
+               direction + R"(}, {"type": "spot", "position": [0, 0, 4], "direction": )" + direction +
+               R"(, "cutoff_deg": 40}]})";
+    };
+    writeFile(dir_ / "unit.json", scene("[1, -1, -1]"));
+    writeFile(dir_ / "tiny.json", scene("[1e-30, -1e-30, -1e-30]"));
+    writeFile(dir_ / "tinier.json", scene("[1e-300, -1e-300, -1e-300]"));
+    for (const char* command : {"render", "reference"}) {
+        std::vector<std::string> pictures;
+        for (const char* name : {"unit.json", "tiny.json", "tinier.json"}) {
+            const Outcome r = runShadelab({command, name, "--out", "-"}, dir_);
+            ASSERT_EQ(r.exitCode, 0) << describe(r);
+            pictures.push_back(r.out);
+        }
+        EXPECT_EQ(pictures[1], pictures[0]) << command << ": [1e-30, ...] differs from [1, ...]";
+        EXPECT_EQ(pictures[2], pictures[0]) << command << ": [1e-300, ...] differs from [1, ...]";
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(AsUser, OutputSafety, ::testing::Values(User::Root, User::Nobody),
                          [](const ::testing::TestParamInfo<User>& info) {
                              return info.param == User::Root ? "root" : "nobody";
