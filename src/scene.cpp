@@ -306,6 +306,29 @@ void checkWork(const Scene& scene) {
                             " are allowed: use a smaller image or fewer objects");
 }
 
+// Standard depth (DESIGN's [-1, 1] mapping, near → +1) puts a point at distance d at NDC z ≈ 1 − 2·near/d
+// in 32-bit float, whose spacing just below 1 is 6e-8: past d ≈ 3e7·near whole objects round onto the near
+// plane and are clipped (measured: the default sphere at d = 3 loses a third of its pixels with near 1e-7
+// and vanishes with near 1e-10, while the reversed modes draw it whole). Refuse before that, with a margin.
+void checkStandardDepthRange(const Scene& scene) {
+    if (scene.depth != DepthMode::Standard || scene.projection.type != ProjectionType::Perspective) return;
+    const double near = scene.projection.near;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const SceneObject& o = scene.objects[i];
+        const double extent =
+            std::abs(o.radius) * std::max({std::abs(o.scale.x), std::abs(o.scale.y), std::abs(o.scale.z)});
+        const double farthest = std::min(glm::length(o.center - scene.eye) + extent, scene.projection.far);
+        if (farthest / near > kMaxStandardDepthRatio)
+            fail("projection.near",
+                 "with \"depth\": \"standard\", " + indexPath("objects", i) + " reaches " +
+                     formatNumber(farthest / near) +
+                     " x near from the eye; 32-bit depth rounds points beyond " +
+                     formatNumber(kMaxStandardDepthRatio) +
+                     " x near onto the near plane and clips them: raise near to at least " +
+                     formatNumber(farthest / kMaxStandardDepthRatio) + " or use \"depth\": \"reversed\"");
+    }
+}
+
 void checkLightCount(std::size_t count) {
     if (count > static_cast<std::size_t>(kMaxLights))
         fail("lights",
@@ -938,6 +961,7 @@ void validateScene(const Scene& scene) {
     (void)sceneView(scene); // the derived matrices must be finite too
     checkObjectCount(scene.objects.size());
     checkWork(scene);
+    checkStandardDepthRange(scene);
 }
 
 SceneView sceneView(const Scene& scene) {

@@ -56,6 +56,9 @@ inline constexpr std::size_t kMaxReferenceRayTests = std::size_t(1) << 32;
 // Projection planes (near, far, an orthographic window and its widths) must lie in this magnitude range:
 // the projection matrix is 32-bit float on the GPU.
 inline constexpr double kMinProjectionExtent = 1e-30, kMaxProjectionExtent = 1e30;
+// With standard depth, no object may reach farther than this many near distances from the eye (32-bit NDC
+// z rounds farther points onto the near plane: measured onset about 3e7).
+inline constexpr double kMaxStandardDepthRatio = 1e7;
 inline constexpr double kMinFovyDeg = 1e-6; // projection.fovy_deg: narrower views overflow float
 
 struct Scene {

@@ -514,6 +514,11 @@ const HostileCase kCases[] = {
      .mentions = {"scene.json", "projection.left", "between 1e-30 and 1e+30"},
      .prepare = scene(R"({"projection": {"type": "orthographic", "left": -1e-300, "right": 1e-300,
                           "bottom": -1e-300, "top": 1e-300, "near": 1, "far": 10}})")},
+    {.name = "standard_depth_with_near_1e_minus_7",
+     .args = {"render", "scene.json", "--size", "8x8", "--out", "out.png"},
+     .exitCode = 2,
+     .mentions = {"scene.json", "projection.near", "objects[0]", "\"depth\": \"reversed\""},
+     .prepare = scene(R"({"projection": {"type": "perspective", "fovy_deg": 40, "near": 1e-7, "far": 10}})")},
     // A value float cannot carry is refused naming the file and the field.
     {.name = "fovy_denormal",
      .args = referenceScene(),
