@@ -30,8 +30,11 @@ public:
     static bool displayNamed();
 
     // Throws RuntimeError naming the GLFW error when the display cannot give a window or a GL context.
-    // `debugContext` asks for a KHR_debug context (see gl::enableDebugOutput).
+    // `debugContext` asks for a KHR_debug context (see gl::enableDebugOutput). A width or height of 0 asks
+    // for the default size: kDefaultWidth × kDefaultHeight, each at most 90 % of the primary monitor's
+    // work area.
     Window(int width, int height, const std::string& title, bool debugContext = false);
+    static constexpr int kDefaultWidth = 1280, kDefaultHeight = 800;
     ~Window();
     Window(const Window&) = delete;
     Window& operator=(const Window&) = delete;

@@ -15,8 +15,8 @@ namespace shadelab::app {
 struct SceneOverrides {
     std::optional<std::string> shading, lighting, size;
     std::optional<std::string> subdivisions; // a level or "auto"
-    std::optional<std::string> tolerancePx; // a decimal number, parsed by composeScene
-    std::optional<std::string> depth; // standard | reversed | reversed-infinite
+    std::optional<std::string> tolerancePx;  // a decimal number, parsed by composeScene
+    std::optional<std::string> depth;        // standard | reversed | reversed-infinite
 };
 
 // The scene file (or the DESIGN §4 defaults when `path` is empty) with the overrides applied and the
@@ -37,8 +37,9 @@ int runReference(const Scene& scene, const std::filesystem::path& out);
 struct DemoOptions {
     std::filesystem::path showcaseOut = "shadelab-showcase.png"; // where the showcase goes without a display
     std::filesystem::path screenshotDir = ".";                   // where S saves PNG + scene JSON
-    bool hidePanel = false; // start with the control panel hidden (C shows it)
-    bool glDebug = false;   // a KHR_debug context; every GL message is printed and counted
+    bool hidePanel = false;                // start with the control panel hidden (C shows it)
+    bool glDebug = false;                  // a KHR_debug context; every GL message is printed and counted
+    int windowWidth = 0, windowHeight = 0; // --size; 0: a size fit for the screen, not the scene's image
 };
 
 // The window; without a display, the showcase rendered headless to options.showcaseOut.

@@ -58,7 +58,8 @@ class Demo {
 public:
     Demo(const Scene& scene, const DemoOptions& options)
         : options_(options), state_(scene),
-          window_(scene.width, scene.height, title(state_, 0), options.glDebug), panel_(window_) {
+          window_(options.windowWidth, options.windowHeight, title(state_, 0), options.glDebug),
+          panel_(window_) {
         state_.showPanel = !options.hidePanel;
         if (options.glDebug && !gl::enableDebugOutput(&debugSink_))
             std::fprintf(stderr,
@@ -92,11 +93,13 @@ private:
         int width = 0, height = 0;
         window_.framebufferSize(width, height);
         if (width <= 0 || height <= 0) return; // minimized: nothing to draw, no NaN aspect
+        // The panel is a column on the left; the picture takes the rest, framed as the scene defines it.
+        const int column = panelColumnWidth(width, state_.showPanel);
         const auto start = Clock::now();
-        renderer_.render(sized(width, height), width, height);
+        renderer_.render(sized(width - column, height), width - column, height, column);
         gl::finish();
         timer_.add(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
-        panel_.draw(state_, status(state_));
+        panel_.draw(state_, status(state_), column);
     }
 
     Scene sized(int width, int height) const { return state_.current(width, height); }
@@ -113,6 +116,7 @@ private:
     void saveScreenshot() {
         int width = 0, height = 0;
         window_.framebufferSize(width, height);
+        width -= panelColumnWidth(width, state_.showPanel); // the picture, without the panel's column
         if (width <= 0 || height <= 0) return;
         const Scene scene = sized(width, height);
         char name[32];

@@ -12,6 +12,13 @@
 
 namespace shadelab::app {
 
+// The width of the demo's control panel, docked as a left column beside the picture (0 when hidden): at
+// most 420 px and at most half the window, so the picture always keeps at least half of it.
+inline int panelColumnWidth(int windowWidth, bool panelShown) {
+    if (!panelShown || windowWidth <= 0) return 0;
+    return windowWidth / 2 < 420 ? windowWidth / 2 : 420;
+}
+
 enum class Command {
     Flat,
     Gouraud,

@@ -70,7 +70,13 @@ int run(int argc, char** argv) {
     }
     app::checkOutputPath(command.demo.showcaseOut, "--showcase-out");
     refuseOverwritingInput(command.demo.showcaseOut, "--showcase-out", command.scene);
-    return app::runDemo(app::composeScene(command.scene, command.overrides), command.demo);
+    const Scene scene = app::composeScene(command.scene, command.overrides);
+    app::DemoOptions demo = command.demo;
+    if (command.overrides.size) { // the window takes --size when given, never the scene's image size
+        demo.windowWidth = scene.width;
+        demo.windowHeight = scene.height;
+    }
+    return app::runDemo(scene, demo);
 }
 
 // Messages carry file names and scene text: control characters and invalid UTF-8 in them are shown as

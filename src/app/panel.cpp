@@ -97,15 +97,19 @@ bool Panel::wantsMouse() const {
     return ImGui::GetIO().WantCaptureMouse;
 }
 
-void Panel::draw(DemoState& state, const std::string& status) {
+void Panel::draw(DemoState& state, const std::string& status, int columnWidth) {
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
     Scene& scene = state.scene();
     if (state.showPanel) {
-        ImGui::SetNextWindowPos({8, 8}, ImGuiCond_FirstUseEver);
-        ImGui::SetNextWindowSize({430, 0}, ImGuiCond_FirstUseEver);
-        ImGui::Begin("shadelab controls (C hides, H helps)");
+        // Docked: the whole left column, beside the picture rather than over it.
+        const ImVec2 display = ImGui::GetIO().DisplaySize;
+        ImGui::SetNextWindowPos({0, 0}, ImGuiCond_Always);
+        ImGui::SetNextWindowSize({float(columnWidth), display.y}, ImGuiCond_Always);
+        ImGui::Begin("shadelab controls (C hides, H helps)", nullptr,
+                     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+        ImGui::PushTextWrapPos(0.0f);
         ImGui::TextUnformatted(status.c_str());
         ImGui::Checkbox("B keeps the highlight size (beta = 4 alpha)", &state.matchHighlight);
         if (!scene.objects.empty() && ImGui::CollapsingHeader("material", ImGuiTreeNodeFlags_DefaultOpen)) {
@@ -120,12 +124,19 @@ void Panel::draw(DemoState& state, const std::string& status) {
             if (ImGui::SliderInt("bands", &bands, kMinToonBands, kMaxToonBands))
                 scene.toonBands = std::clamp(bands, kMinToonBands, kMaxToonBands);
         }
+        ImGui::PopTextWrapPos();
         ImGui::End();
     }
     if (state.showHelp) {
+        // Readable in any window: at most the window less a margin, lines wrapped to its width, and a
+        // scroll bar when the window is too short for all of it.
+        const ImVec2 display = ImGui::GetIO().DisplaySize;
+        const float width = std::min(640.0f, std::max(120.0f, display.x - 16));
         ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Always, {0.5f, 0.5f});
-        ImGui::Begin("keys", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse);
-        ImGui::TextUnformatted(keyHelpText().c_str());
+        ImGui::SetNextWindowSizeConstraints({width, 0}, {width, std::max(60.0f, display.y - 16)});
+        ImGui::SetNextWindowSize({width, 0}, ImGuiCond_Always);
+        ImGui::Begin("keys", nullptr, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoResize);
+        ImGui::TextWrapped("%s", keyHelpText().c_str());
         ImGui::End();
     }
     ImGui::Render();

@@ -25,7 +25,7 @@ public:
 
     // Builds and draws this frame's panel and help over the bound framebuffer. Every edited value is
     // clamped to its valid range here, so nothing invalid reaches the scene or the shader.
-    void draw(DemoState& state, const std::string& status);
+    void draw(DemoState& state, const std::string& status, int columnWidth);
 };
 
 } // namespace shadelab::app

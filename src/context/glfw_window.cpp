@@ -1,5 +1,6 @@
 #include "shadelab/window.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <string>
 
@@ -47,6 +48,17 @@ Window::Window(int width, int height, const std::string& title, bool debugContex
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     glfwWindowHint(GLFW_DEPTH_BITS, 24);
     glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, debugContext ? GLFW_TRUE : GLFW_FALSE);
+    if (width <= 0 || height <= 0) {
+        // Not the scene's image size (often 256×256, too small for the panel): a size fit for the screen.
+        width = kDefaultWidth;
+        height = kDefaultHeight;
+        int x = 0, y = 0, areaWidth = 0, areaHeight = 0;
+        if (GLFWmonitor* monitor = glfwGetPrimaryMonitor()) {
+            glfwGetMonitorWorkarea(monitor, &x, &y, &areaWidth, &areaHeight);
+            if (areaWidth > 0) width = std::min(width, areaWidth * 9 / 10);
+            if (areaHeight > 0) height = std::min(height, areaHeight * 9 / 10);
+        }
+    }
     state_->window = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
     if (!state_->window) {
         const std::string error = lastGlfwError();

@@ -162,14 +162,14 @@ Id Renderer::program(const ProgramVariant& variant) {
     return slot.get();
 }
 
-void Renderer::render(const Scene& scene, int width, int height) {
+void Renderer::render(const Scene& scene, int width, int height, int x) {
     if (width <= 0 || height <= 0) return; // a minimized window: nothing to draw, no NaN aspect
     Scene sized = scene;
     sized.width = width;
     sized.height = height;
     const SceneView view = sceneView(sized);
 
-    glViewport(0, 0, width, height);
+    glViewport(x, 0, width, height);
     glClearColor(float(scene.background.x), float(scene.background.y), float(scene.background.z), 0.0f);
     // DESIGN §2: near maps to NDC z = +1 (standard) or clip depth 1 (reversed), so in both modes the nearer
     // surface has the greater depth. Reversed-Z also needs the [0, 1] clip range.

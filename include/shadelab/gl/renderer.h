@@ -18,7 +18,8 @@ public:
     // Draws `scene` into the bound framebuffer over a viewport of width × height (which may differ from
     // the scene's image size, e.g. a resized window; the aspect comes from the viewport). A 0×0 viewport
     // draws nothing.
-    void render(const Scene& scene, int width, int height);
+    // `x` moves the viewport right (the demo's picture beside its panel); the clear covers the whole target.
+    void render(const Scene& scene, int width, int height, int x = 0);
 
     // Specialized programs (the default) or the uber program of each mode (the baseline they are measured
     // and cross-checked against).
