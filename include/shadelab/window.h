@@ -4,6 +4,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "shadelab/errors.h"
@@ -28,6 +29,10 @@ class Window {
 public:
     // True when an X11 or Wayland display is named in the environment.
     static bool displayNamed();
+    // Connects to the display in a child process and waits at most `seconds` for it to answer. Returns a
+    // message naming the display when it does not answer in time (a stopped X server accepts connections
+    // and never replies: opening a window would hang forever), nullopt when it answered or refused.
+    static std::optional<std::string> unresponsiveDisplay(double seconds);
 
     // Throws RuntimeError naming the GLFW error when the display cannot give a window or a GL context.
     // `debugContext` asks for a KHR_debug context (see gl::enableDebugOutput). A width or height of 0 asks

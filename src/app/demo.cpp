@@ -3,6 +3,9 @@
 // scene JSON saved beside it.
 #include <chrono>
 #include <cstdio>
+#include <exception>
+#include <new>
+#include <optional>
 #include <string>
 #include <thread>
 
@@ -13,6 +16,7 @@
 #include "shadelab/gl/loader.h"
 #include "shadelab/gl/render_target.h"
 #include "shadelab/gl/renderer.h"
+#include "shadelab/text.h"
 #include "shadelab/window.h"
 
 namespace shadelab::app {
@@ -104,12 +108,18 @@ private:
 
     Scene sized(int width, int height) const { return state_.current(width, height); }
 
+    // Called from GLFW's C callback: nothing may escape it (it would end the demo), so a failure is
+    // reported and the demo goes on.
     void onKey(int key) {
-        if (panel_.wantsKeyboard()) return;
-        const auto command = commandForKey(key);
-        if (!command || state_.apply(*command)) return;
-        if (*command == Command::Quit) window_.requestClose();
-        if (*command == Command::Screenshot) saveScreenshot();
+        try {
+            if (panel_.wantsKeyboard()) return;
+            const auto command = commandForKey(key);
+            if (!command || state_.apply(*command)) return;
+            if (*command == Command::Quit) window_.requestClose();
+            if (*command == Command::Screenshot) saveScreenshot();
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "shadelab: key not handled: %s\n", printable(e.what()).c_str());
+        }
     }
 
     // The scene JSON first, the PNG last: a reader that sees the PNG finds its scene beside it.
@@ -122,18 +132,24 @@ private:
         char name[32];
         std::snprintf(name, sizeof name, "shadelab-%03d", ++screenshots_);
         const auto stem = options_.screenshotDir / name;
-        const gl::RenderTarget target(width, height);
-        target.bind();
-        renderer_.render(scene, width, height);
-        const Image image = target.readRgba8();
-        gl::bindDefaultFramebuffer();
+        // Out of memory (a big window under a limit) or a write error: say so and keep the demo running.
         try {
+            const gl::RenderTarget target(width, height);
+            target.bind();
+            renderer_.render(scene, width, height);
+            const Image image = target.readRgba8();
+            gl::bindDefaultFramebuffer();
             saveScene(scene, stem.string() + ".json");
             writePng(image, stem.string() + ".png");
             std::printf("%s.png\n", stem.c_str());
             std::fflush(stdout);
-        } catch (const RuntimeError& e) {
-            std::fprintf(stderr, "shadelab: screenshot not saved: %s\n", e.what());
+        } catch (const std::bad_alloc&) {
+            gl::bindDefaultFramebuffer();
+            std::fprintf(stderr, "shadelab: screenshot not saved: out of memory for a %dx%d capture\n", width,
+                         height);
+        } catch (const std::exception& e) {
+            gl::bindDefaultFramebuffer();
+            std::fprintf(stderr, "shadelab: screenshot not saved: %s\n", printable(e.what()).c_str());
         }
     }
 
@@ -152,6 +168,8 @@ private:
     int screenshots_ = 0;
 };
 
+constexpr double kDisplayAnswerSeconds = 5;
+
 int showcaseInstead(const Scene& scene, const DemoOptions& options, const std::string& why) {
     std::fprintf(stderr, "shadelab: %s; rendering the showcase headless instead\n", why.c_str());
     return runShowcase(scene, Backend::Egl, options.showcaseOut);
@@ -162,6 +180,10 @@ int showcaseInstead(const Scene& scene, const DemoOptions& options, const std::s
 int runDemo(const Scene& scene, const DemoOptions& options) {
     if (!Window::displayNamed())
         return showcaseInstead(scene, options, "no display (DISPLAY and WAYLAND_DISPLAY are unset)");
+    // An X server that accepts the connection but never answers (a stopped Xvfb) would hang the window
+    // forever inside XOpenDisplay: ask it first, in a child we can give up on.
+    if (const std::optional<std::string> silent = Window::unresponsiveDisplay(kDisplayAnswerSeconds))
+        return showcaseInstead(scene, options, *silent);
     std::unique_ptr<Demo> demo;
     try {
         demo = std::make_unique<Demo>(scene, options);

@@ -1,13 +1,22 @@
 #include "shadelab/window.h"
 
 #include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <thread>
+
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <GLFW/glfw3.h>
 
 #include "shadelab/errors.h"
 #include "shadelab/gl/loader.h"
+#include "shadelab/text.h"
 
 namespace shadelab {
 
@@ -37,6 +46,33 @@ bool Window::displayNamed() {
     const char* x11 = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
     return (x11 && *x11) || (wayland && *wayland);
+}
+
+std::optional<std::string> Window::unresponsiveDisplay(double seconds) {
+    const pid_t child = ::fork();
+    if (child < 0) return std::nullopt; // cannot ask: go on and let GLFW try
+    if (child == 0) {
+        // glfwInit opens the display: it returns (true or false) once the server has answered.
+        const int ok = glfwInit() ? 0 : 1;
+        ::_exit(ok);
+    }
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    while (std::chrono::steady_clock::now() < deadline) {
+        int status = 0;
+        const pid_t done = ::waitpid(child, &status, WNOHANG);
+        if (done == child || (done < 0 && errno != EINTR)) return std::nullopt;
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    ::kill(child, SIGKILL);
+    while (::waitpid(child, nullptr, 0) < 0 && errno == EINTR) {
+    }
+    const char* display = std::getenv("DISPLAY");
+    char text[512];
+    std::snprintf(text, sizeof text,
+                  "the display %s accepted the connection but did not answer within %.0f s "
+                  "(a stopped X server?)",
+                  display ? printable(display).c_str() : "(unset)", seconds);
+    return std::string(text);
 }
 
 Window::Window(int width, int height, const std::string& title, bool debugContext)

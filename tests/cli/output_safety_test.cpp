@@ -489,6 +489,48 @@ TEST_F(ResourceLimits, DirectionsOfAnyScaleDrawTheSamePicture) {
     }
 }
 
+// Issue 16: DISPLAY names an X server that accepts the connection but never answers (a stopped Xvfb). The
+// demo used to hang in XOpenDisplay forever; it must give up within seconds and render the showcase
+// headless instead. The silent server is a Unix socket in /tmp/.X11-unix that listens and never accepts.
+TEST(SilentDisplay, DemoFallsBackToTheShowcaseWithinSeconds) {
+    fs::create_directories("/tmp/.X11-unix");
+    int number = 200;
+    while (number < 300 && fs::exists("/tmp/.X11-unix/X" + std::to_string(number))) ++number;
+    ASSERT_LT(number, 300) << "no free display number";
+    const std::string socketPath = "/tmp/.X11-unix/X" + std::to_string(number);
+    const int sock = ::socket(AF_UNIX, SOCK_STREAM, 0);
+    sockaddr_un address{};
+    address.sun_family = AF_UNIX;
+    std::memcpy(address.sun_path, socketPath.c_str(), socketPath.size() + 1);
+    ASSERT_EQ(::bind(sock, reinterpret_cast<sockaddr*>(&address), sizeof address), 0) << std::strerror(errno);
+    ASSERT_EQ(::listen(sock, 8), 0);
+
+    char pattern[] = "/tmp/shadelab-display-XXXXXX";
+    ASSERT_NE(::mkdtemp(pattern), nullptr);
+    const fs::path dir = pattern;
+    const char* oldDisplay = std::getenv("DISPLAY");
+    const std::string saved = oldDisplay ? oldDisplay : "";
+    ::setenv("DISPLAY", (":" + std::to_string(number)).c_str(), 1);
+    RunOptions options;
+    options.timeout = 60s; // a hang is killed here and fails the test
+    const auto start = std::chrono::steady_clock::now();
+    const Outcome r = runShadelab({"--showcase-out", "showcase.png"}, dir, options);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (oldDisplay)
+        ::setenv("DISPLAY", saved.c_str(), 1);
+    else
+        ::unsetenv("DISPLAY");
+    ::close(sock);
+    ::unlink(socketPath.c_str());
+
+    EXPECT_EQ(r.exitCode, 0) << describe(r);
+    EXPECT_LT(seconds, 30) << "took " << seconds << " s";
+    EXPECT_NE(r.err.find("did not answer"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("showcase"), std::string::npos) << r.err;
+    EXPECT_TRUE(isCompletePng(readFile(dir / "showcase.png")));
+    fs::remove_all(dir);
+}
+
 INSTANTIATE_TEST_SUITE_P(AsUser, OutputSafety, ::testing::Values(User::Root, User::Nobody),
                          [](const ::testing::TestParamInfo<User>& info) {
                              return info.param == User::Root ? "root" : "nobody";
