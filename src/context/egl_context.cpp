@@ -60,7 +60,7 @@ std::string environmentHint() {
     for (const char* name : kVariables)
         if (const char* value = std::getenv(name); value && *value)
             set += (set.empty() ? "" : ", ") + std::string(name) + "=" + printable(value);
-    const std::string install = "Is Mesa's EGL installed (libegl1, libgl1-mesa-dri)?";
+    std::string install = "Is Mesa's EGL installed (libegl1, libgl1-mesa-dri)?";
     if (set.empty()) return install;
     return "The environment sets " + set +
            ", which Mesa reads: unset it (or give a value this Mesa supports) and try again. Otherwise: " +
