@@ -31,129 +31,16 @@
 
 #include <gtest/gtest.h>
 
-extern char** environ;
+#include "cli/run_process.h"
 
 namespace {
 
+using namespace shadelab::cli_test;
 namespace fs = std::filesystem;
 using namespace std::chrono_literals;
 
 constexpr uid_t kNobody = 65534;
 constexpr gid_t kNogroup = 65534;
-
-struct Outcome {
-    int exitCode = -1; // -1 unless the process exited normally
-    int signal = 0;    // the signal that ended it, if one did
-    std::string out, err;
-};
-
-std::string describe(const Outcome& run) {
-    return "exit code " + std::to_string(run.exitCode) + ", signal " + std::to_string(run.signal) +
-           "\n--- stdout (" + std::to_string(run.out.size()) + " bytes)\n--- stderr:\n" + run.err;
-}
-
-struct RunOptions {
-    std::optional<uid_t> user;            // run as this user (with group nogroup), from root
-    std::optional<std::string> stdinText; // otherwise /dev/null
-    std::optional<fs::path> stdoutPath;   // otherwise captured
-    std::function<bool()> signalWhen;     // polled every 2 ms; when true, `signal` is sent once
-    int signal = 0;
-    std::chrono::seconds timeout = 120s;
-    rlim_t addressSpace = RLIM_INFINITY; // RLIMIT_AS for the child, as `ulimit -v` sets it
-};
-
-// Runs shadelab through fork/execve (never a shell) in `cwd`.
-Outcome runShadelab(const std::vector<std::string>& args, const fs::path& cwd,
-                    const RunOptions& options = {}) {
-    std::vector<std::string> strings{SHADELAB_EXE};
-    strings.insert(strings.end(), args.begin(), args.end());
-    std::vector<char*> argv;
-    for (std::string& s : strings) argv.push_back(s.data());
-    argv.push_back(nullptr);
-    const std::string folder = cwd.string();
-    const std::string stdoutPath = options.stdoutPath ? options.stdoutPath->string() : std::string();
-
-    Outcome run;
-    int outPipe[2], errPipe[2], inPipe[2];
-    if (::pipe2(outPipe, O_CLOEXEC) != 0 || ::pipe2(errPipe, O_CLOEXEC) != 0 ||
-        ::pipe2(inPipe, O_CLOEXEC) != 0) {
-        ADD_FAILURE() << "pipe2: " << std::strerror(errno);
-        return run;
-    }
-    const pid_t pid = ::fork();
-    if (pid == 0) {
-        // Only async-signal-safe calls between fork and exec.
-        int in = inPipe[0];
-        if (!options.stdinText) in = ::open("/dev/null", O_RDONLY);
-        int out = outPipe[1];
-        if (options.stdoutPath) out = ::open(stdoutPath.c_str(), O_WRONLY);
-        if (in < 0 || out < 0 || ::dup2(in, 0) < 0 || ::dup2(out, 1) < 0 || ::dup2(errPipe[1], 2) < 0)
-            ::_exit(126);
-        if (options.user && (::setgroups(0, nullptr) != 0 || ::setresgid(kNogroup, kNogroup, kNogroup) != 0 ||
-                             ::setresuid(*options.user, *options.user, *options.user) != 0))
-            ::_exit(125);
-        if (::chdir(folder.c_str()) != 0) ::_exit(124);
-        const rlimit limit{options.addressSpace, options.addressSpace};
-        if (options.addressSpace != RLIM_INFINITY && ::setrlimit(RLIMIT_AS, &limit) != 0) ::_exit(123);
-        ::execve(argv[0], argv.data(), environ);
-        ::_exit(127);
-    }
-    ::close(outPipe[1]);
-    ::close(errPipe[1]);
-    ::close(inPipe[0]);
-    if (options.stdinText) {
-        // Small scenes only: they fit in the pipe's buffer.
-        if (::write(inPipe[1], options.stdinText->data(), options.stdinText->size()) < 0)
-            ADD_FAILURE() << "write to stdin: " << std::strerror(errno);
-    }
-    ::close(inPipe[1]);
-
-    pollfd fds[2] = {{outPipe[0], POLLIN, 0}, {errPipe[0], POLLIN, 0}};
-    std::string* sinks[2] = {&run.out, &run.err};
-    int open = 2;
-    bool signalled = false;
-    const auto deadline = std::chrono::steady_clock::now() + options.timeout;
-    while (open > 0 && std::chrono::steady_clock::now() < deadline) {
-        if (options.signalWhen && !signalled && options.signalWhen()) {
-            ::kill(pid, options.signal);
-            signalled = true;
-        }
-        if (::poll(fds, 2, 2) < 0 && errno != EINTR) break;
-        for (int i = 0; i < 2; ++i) {
-            if (fds[i].fd < 0 || fds[i].revents == 0) continue;
-            char buffer[65536];
-            const ssize_t n = ::read(fds[i].fd, buffer, sizeof buffer);
-            if (n > 0) {
-                sinks[i]->append(buffer, std::size_t(n));
-            } else if (n == 0 || errno != EINTR) {
-                ::close(std::exchange(fds[i].fd, -1));
-                --open;
-            }
-        }
-    }
-    if (open > 0) {
-        ::kill(pid, SIGKILL);
-        ADD_FAILURE() << "shadelab did not finish within " << options.timeout.count() << " s; killed";
-    }
-    for (pollfd& fd : fds)
-        if (fd.fd >= 0) ::close(fd.fd);
-    int status = 0;
-    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-    }
-    if (WIFEXITED(status)) run.exitCode = WEXITSTATUS(status);
-    if (WIFSIGNALED(status)) run.signal = WTERMSIG(status);
-    if (options.signalWhen && !signalled) ADD_FAILURE() << "the condition for sending the signal never came";
-    return run;
-}
-
-std::string readFile(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-void writeFile(const fs::path& path, std::string_view bytes) {
-    std::ofstream(path, std::ios::binary) << bytes;
-}
 
 // A complete PNG: the signature, and the IEND chunk as its last 12 bytes.
 bool isCompletePng(const std::string& bytes) {
@@ -217,7 +104,8 @@ protected:
     }
     Outcome run(const std::vector<std::string>& args, RunOptions options = {}) {
         if (nobody()) options.user = kNobody;
-        return runShadelab(args, dir_, options);
+        options.group = kNogroup;
+        return runWith(args, dir_, options);
     }
 
     fs::path dir_;
@@ -438,7 +326,7 @@ protected:
 TEST_F(ResourceLimits, RenderUnderASmallAddressSpaceIsRefusedUpFront) {
     RunOptions options;
     options.addressSpace = 500'000 * 1024; // `ulimit -v 500000`: Mesa crashed at random here (exit 139)
-    const Outcome r = runShadelab({"render", "--out", "x.png"}, dir_, options);
+    const Outcome r = runWith({"render", "--out", "x.png"}, dir_, options);
     EXPECT_EQ(r.exitCode, 1) << describe(r);
     EXPECT_EQ(r.signal, 0) << describe(r);
     EXPECT_NE(r.err.find("needs about"), std::string::npos) << r.err;
@@ -449,7 +337,7 @@ TEST_F(ResourceLimits, RenderUnderASmallAddressSpaceIsRefusedUpFront) {
 TEST_F(ResourceLimits, OutOfMemoryNamesWhatWasBeingBuilt) {
     RunOptions options;
     options.addressSpace = 800'000 * 1024; // the issue's `ulimit -v 800000`: "std::bad_alloc" before
-    const Outcome r = runShadelab({"render", "--subdivisions", "10", "--out", "x.png"}, dir_, options);
+    const Outcome r = runWith({"render", "--subdivisions", "10", "--out", "x.png"}, dir_, options);
     EXPECT_EQ(r.exitCode, 1) << describe(r);
     EXPECT_EQ(r.signal, 0) << describe(r);
     EXPECT_EQ(r.err.find("std::bad_alloc"), std::string::npos) << r.err;
@@ -459,7 +347,7 @@ TEST_F(ResourceLimits, OutOfMemoryNamesWhatWasBeingBuilt) {
 
 TEST_F(ResourceLimits, ReportBeyondTheMachineIsRefusedBeforeMeasuring) {
     writeFile(dir_ / "huge.json", R"({"image": {"width": 16384, "height": 16384}})");
-    const Outcome r = runShadelab({"report", "huge.json", "--out", "R"}, dir_);
+    const Outcome r = runWith({"report", "huge.json", "--out", "R"}, dir_);
     EXPECT_EQ(r.exitCode, 2) << describe(r);
     EXPECT_NE(r.err.find("16384x16384"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("more than this machine's"), std::string::npos) << r.err;
@@ -480,7 +368,7 @@ TEST_F(ResourceLimits, DirectionsOfAnyScaleDrawTheSamePicture) {
     for (const char* command : {"render", "reference"}) {
         std::vector<std::string> pictures;
         for (const char* name : {"unit.json", "tiny.json", "tinier.json"}) {
-            const Outcome r = runShadelab({command, name, "--out", "-"}, dir_);
+            const Outcome r = runWith({command, name, "--out", "-"}, dir_);
             ASSERT_EQ(r.exitCode, 0) << describe(r);
             pictures.push_back(r.out);
         }
@@ -508,18 +396,12 @@ TEST(SilentDisplay, DemoFallsBackToTheShowcaseWithinSeconds) {
     char pattern[] = "/tmp/shadelab-display-XXXXXX";
     ASSERT_NE(::mkdtemp(pattern), nullptr);
     const fs::path dir = pattern;
-    const char* oldDisplay = std::getenv("DISPLAY");
-    const std::string saved = oldDisplay ? oldDisplay : "";
-    ::setenv("DISPLAY", (":" + std::to_string(number)).c_str(), 1);
     RunOptions options;
     options.timeout = 60s; // a hang is killed here and fails the test
+    options.environment = childEnvironment(Display::Inherit, {"DISPLAY=:" + std::to_string(number)});
     const auto start = std::chrono::steady_clock::now();
-    const Outcome r = runShadelab({"--showcase-out", "showcase.png"}, dir, options);
+    const Outcome r = runWith({"--showcase-out", "showcase.png"}, dir, options);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (oldDisplay)
-        ::setenv("DISPLAY", saved.c_str(), 1);
-    else
-        ::unsetenv("DISPLAY");
     ::close(sock);
     ::unlink(socketPath.c_str());
 
