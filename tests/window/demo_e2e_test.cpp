@@ -5,11 +5,15 @@
 //   - the PNG that S saves is that same picture.
 // Esc must exit 0 with zero KHR_debug messages. Without Xvfb, xdotool or xwd the tests skip with the
 // reason, except in CI (CI set), where that fails.
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <functional>
 #include <memory>
@@ -401,6 +405,31 @@ TEST_F(DemoWindow, DefaultWindowFitsTheScreenAndThePanelCoversNothing) {
     const Image picture = renderWithCli(besideScene, scratch() / "beside-default.png", scratch());
     (void)settledBesidePanel(demo, kW, kH, picture, "default_window");
     expectCleanQuit(demo);
+}
+
+// Issue 16: a screenshot that runs out of memory used to end the demo (the exception escaped GLFW's key
+// callback). Under an address-space limit just above what the demo holds (set on the running process, as
+// `prlimit --as` does), S must report "screenshot not saved" and the demo must go on and quit cleanly.
+TEST_F(DemoWindow, ScreenshotOutOfMemoryKeepsTheDemoRunning) {
+#if defined(__SANITIZE_ADDRESS__)
+    GTEST_SKIP() << "AddressSanitizer reserves terabytes of address space: no RLIMIT_AS applies to it";
+#endif
+    DemoProcess& demo = startDemo("oom-demo", {"--size", "640x480", "--hide-panel"});
+    std::ifstream status("/proc/" + std::to_string(demo.pid()) + "/status");
+    long vmSizeKiB = 0;
+    for (std::string line; std::getline(status, line);)
+        if (line.starts_with("VmSize:")) vmSizeKiB = std::stol(line.substr(7));
+    ASSERT_GT(vmSizeKiB, 0);
+    const rlimit tight{rlim_t(vmSizeKiB + 2048) * 1024, RLIM_INFINITY};
+    ASSERT_EQ(::prlimit(demo.pid(), RLIMIT_AS, &tight, nullptr), 0) << std::strerror(errno);
+    demo.window().key("s");
+    const bool reported =
+        pollUntil([&] { return demo.err().find("screenshot not saved") != std::string::npos; });
+    EXPECT_TRUE(reported) << "no 'screenshot not saved' on stderr:\n" << demo.err();
+    const rlimit free{RLIM_INFINITY, RLIM_INFINITY};
+    ASSERT_EQ(::prlimit(demo.pid(), RLIMIT_AS, &free, nullptr), 0) << std::strerror(errno);
+    const ExitStatus exit = demo.quit();
+    EXPECT_EQ(exit.code, 0) << "the demo did not survive the failed screenshot: " << exit.describe();
 }
 
 } // namespace

@@ -26,6 +26,7 @@ public:
     // Presses Escape and waits (bounded) for the exit; throws if it does not exit.
     ExitStatus quit();
     std::string err() const { return child_->err(); }
+    pid_t pid() const { return child_->pid(); }
     std::string logs() const { return child_->logs(); }
 
 private:
