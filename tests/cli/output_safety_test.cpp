@@ -307,12 +307,16 @@ TEST_P(OutputSafety, ContentAfterANulByteIsAnError) {
 
 // Memory limits (ulimit -v): estimated before anything is spent, refused with the figures; a failure that
 // still comes names what was being built. Never a crash inside Mesa, never a bare std::bad_alloc.
+#if defined(__SANITIZE_ADDRESS__)
+#define SKIP_UNDER_ASAN()                                                                                    \
+    GTEST_SKIP() << "AddressSanitizer reserves terabytes of address space: no RLIMIT_AS run can start"
+#else
+#define SKIP_UNDER_ASAN() (void)0
+#endif
+
 class ResourceLimits : public ::testing::Test {
 protected:
     void SetUp() override {
-#if defined(__SANITIZE_ADDRESS__)
-        GTEST_SKIP() << "AddressSanitizer reserves terabytes of address space: no RLIMIT_AS run can start";
-#endif
         char pattern[] = "/tmp/shadelab-limits-XXXXXX";
         ASSERT_NE(::mkdtemp(pattern), nullptr);
         dir_ = pattern;
@@ -324,6 +328,7 @@ protected:
 };
 
 TEST_F(ResourceLimits, RenderUnderASmallAddressSpaceIsRefusedUpFront) {
+    SKIP_UNDER_ASAN();
     RunOptions options;
     options.addressSpace = 500'000 * 1024; // `ulimit -v 500000`: Mesa crashed at random here (exit 139)
     const Outcome r = runWith({"render", "--out", "x.png"}, dir_, options);
@@ -335,6 +340,7 @@ TEST_F(ResourceLimits, RenderUnderASmallAddressSpaceIsRefusedUpFront) {
 }
 
 TEST_F(ResourceLimits, OutOfMemoryNamesWhatWasBeingBuilt) {
+    SKIP_UNDER_ASAN();
     RunOptions options;
     options.addressSpace = 800'000 * 1024; // the issue's `ulimit -v 800000`: "std::bad_alloc" before
     const Outcome r = runWith({"render", "--subdivisions", "10", "--out", "x.png"}, dir_, options);
