@@ -836,7 +836,7 @@ int runReport(const ReportOptions& options) {
     checkMemoryBudget("report at " + std::to_string(scene.width) + "x" + std::to_string(scene.height),
                       kGlBaselineBytes + 220.0 * scene.width * scene.height + renderBytes(largest),
                       "the scene's image size");
-    requireGnuplot(); // before minutes of measuring, not after
+    if (options.plot) requireGnuplot(); // before minutes of measuring, not after
     prepareOutDir(options.outDir, options.scene);
 
     const std::unique_ptr<HeadlessContext> context = makeHeadlessContext(options.backend);
@@ -853,14 +853,20 @@ int runReport(const ReportOptions& options) {
     std::fflush(stdout);
 
     const std::vector<ReportRow> rows = measureReport(*context, scene, options, ProgressBar());
-    const std::string script = gnuplotScript(rows, info);
-    writeReportSet(options.outDir, {{"report.csv", reportCsv(rows)},
-                                    {"report.json", reportJson(rows, info)},
-                                    {"report.gp", script},
-                                    {"report.png", runGnuplot(script)}});
+    std::vector<std::pair<std::string, std::string>> files = {{"report.csv", reportCsv(rows)},
+                                                              {"report.json", reportJson(rows, info)}};
+    if (options.plot) {
+        const std::string script = gnuplotScript(rows, info);
+        files.emplace_back("report.gp", script);
+        files.emplace_back("report.png", runGnuplot(script));
+    }
+    writeReportSet(options.outDir, files);
     printTable(rows);
     const std::string dir = printable(options.outDir.string());
-    std::printf("wrote report.csv, report.json, report.gp and report.png in %s\n", dir.c_str());
+    std::printf("wrote %s in %s\n",
+                options.plot ? "report.csv, report.json, report.gp and report.png"
+                             : "report.csv and report.json",
+                dir.c_str());
     return kExitOk;
 }
 

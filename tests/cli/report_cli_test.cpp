@@ -270,3 +270,19 @@ TEST_F(ReportCli, InterruptedRunLeavesTheOldOrTheNewSet) {
                 << "stray file " << entry.path().filename();
     }
 }
+
+// --no-plot (issue 15): report.csv and report.json only, and gnuplot is not needed (none on PATH here).
+TEST_F(ReportCli, NoPlotWritesCsvAndJsonWithoutGnuplot) {
+    writeFile(dir_ / "s.json", kTinyScene);
+    fs::create_directories(dir_ / "empty-bin");
+    std::vector<std::string> args = quickReport("s.json", "R");
+    args.emplace_back("--no-plot");
+    RunOptions options;
+    options.environment = {"PATH=" + (dir_ / "empty-bin").string()};
+    const Outcome r = runWith(args, dir_, options);
+    ASSERT_EQ(r.exitCode, 0) << describe(r);
+    EXPECT_NE(readFile(dir_ / "R" / "report.csv").find("shading,lighting,level"), std::string::npos);
+    EXPECT_TRUE(fs::exists(dir_ / "R" / "report.json"));
+    EXPECT_FALSE(fs::exists(dir_ / "R" / "report.gp"));
+    EXPECT_FALSE(fs::exists(dir_ / "R" / "report.png"));
+}
