@@ -113,6 +113,8 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
     reportCommand->add_option("--levels", command.reportLevels, "Levels N or A..B within 0..10")
         ->capture_default_str();
     reportCommand->add_flag("--no-auto", command.reportNoAuto, "Leave out the auto-subdivision rows");
+    reportCommand->add_flag("--no-plot", command.reportNoPlot,
+                            "Write report.csv and report.json only (no gnuplot needed)");
     reportCommand->add_option("--backend", reportBackend, "Headless context: egl or osmesa")
         ->capture_default_str();
     reportCommand->add_option("--frames", command.reportFrames, "Timed frames per configuration")

@@ -30,6 +30,7 @@ struct ParsedCommand {
     // Report (app/report.h, which main.cpp builds the options of): scene and backend as above.
     std::string reportOut = "report", reportLevels = "0..8";
     bool reportNoAuto = false;
+    bool reportNoPlot = false;
     int reportFrames = 20, reportWarmup = 3;
 };
 

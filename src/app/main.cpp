@@ -60,6 +60,7 @@ int run(int argc, char** argv) {
         report.outDir = command.reportOut;
         app::parseLevels(command.reportLevels, report);
         report.includeAuto = !command.reportNoAuto;
+        report.plot = !command.reportNoPlot;
         report.backend = app::backendFromArgument(command.backend);
         report.frames = command.reportFrames;
         report.warmup = command.reportWarmup;

@@ -20,6 +20,7 @@
 #include <variant>
 
 #include <fcntl.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/mman.h>
 #include <sys/stat.h>
@@ -83,7 +84,7 @@ std::vector<std::pair<std::string_view, Cell>> cellsOf(const ReportRow& r) {
     return {
         {"shading", std::string(toString(r.shading))},
         {"lighting", std::string(toString(r.lighting))},
-        {"level", levelLabel(r)},
+        {"level", r.autoLevel ? Cell(std::string("auto")) : Cell(r.level)},
         {"effective_level", r.level},
         {"frame_median_ms", r.frameMedianMs},
         {"frame_p10_ms", r.frameP10Ms},
@@ -798,18 +799,27 @@ void prepareOutDir(const fs::path& dir, const std::optional<fs::path>& scene) {
         (void)resolveOutput(dir / name, "--out");
         if (scene) refuseOverwritingInput(dir / name, "--out", *scene);
     }
+    // The probe file lives only between mkstemp and unlink: SIGINT/TERM/HUP are held back meanwhile, so an
+    // interrupt cannot leave it behind (it is delivered at once after the unlink).
+    sigset_t held, previous;
+    sigemptyset(&held);
+    for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&held, sig);
+    ::sigprocmask(SIG_BLOCK, &held, &previous);
     std::string probe = (dir / ".shadelab-XXXXXX").string();
     const int fd = ::mkstemp(probe.data());
+    const int code = errno;
+    if (fd >= 0) {
+        ::close(fd);
+        ::unlink(probe.c_str());
+    }
+    ::sigprocmask(SIG_SETMASK, &previous, nullptr);
     if (fd < 0) {
-        const int code = errno;
         const std::string reason = std::strerror(code);
         if (code == EACCES || code == EPERM || code == EROFS)
             throw InputError("--out: cannot write in the folder " + shown + ": " + reason +
                              "; choose a folder you can write");
         throw RuntimeError("report: cannot write in the folder " + shown + ": " + reason);
     }
-    ::close(fd);
-    ::unlink(probe.c_str());
 }
 
 } // namespace
@@ -826,7 +836,7 @@ int runReport(const ReportOptions& options) {
     checkMemoryBudget("report at " + std::to_string(scene.width) + "x" + std::to_string(scene.height),
                       kGlBaselineBytes + 220.0 * scene.width * scene.height + renderBytes(largest),
                       "the scene's image size");
-    requireGnuplot(); // before minutes of measuring, not after
+    if (options.plot) requireGnuplot(); // before minutes of measuring, not after
     prepareOutDir(options.outDir, options.scene);
 
     const std::unique_ptr<HeadlessContext> context = makeHeadlessContext(options.backend);
@@ -843,14 +853,20 @@ int runReport(const ReportOptions& options) {
     std::fflush(stdout);
 
     const std::vector<ReportRow> rows = measureReport(*context, scene, options, ProgressBar());
-    const std::string script = gnuplotScript(rows, info);
-    writeReportSet(options.outDir, {{"report.csv", reportCsv(rows)},
-                                    {"report.json", reportJson(rows, info)},
-                                    {"report.gp", script},
-                                    {"report.png", runGnuplot(script)}});
+    std::vector<std::pair<std::string, std::string>> files = {{"report.csv", reportCsv(rows)},
+                                                              {"report.json", reportJson(rows, info)}};
+    if (options.plot) {
+        const std::string script = gnuplotScript(rows, info);
+        files.emplace_back("report.gp", script);
+        files.emplace_back("report.png", runGnuplot(script));
+    }
+    writeReportSet(options.outDir, files);
     printTable(rows);
     const std::string dir = printable(options.outDir.string());
-    std::printf("wrote report.csv, report.json, report.gp and report.png in %s\n", dir.c_str());
+    std::printf("wrote %s in %s\n",
+                options.plot ? "report.csv, report.json, report.gp and report.png"
+                             : "report.csv and report.json",
+                dir.c_str());
     return kExitOk;
 }
 

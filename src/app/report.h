@@ -23,6 +23,7 @@ struct ReportOptions {
     std::filesystem::path outDir = "report";
     int minLevel = 0, maxLevel = 8;
     bool includeAuto = true; // one more row per mode: "subdivisions": "auto" at the scene's tolerance_px
+    bool plot = true;        // false (--no-plot): report.csv and report.json only, gnuplot not needed
     Backend backend = Backend::Egl;
     int frames = 20; // timed frames per configuration, >= 1
     int warmup = 3;  // untimed frames first, >= 1 (the first frame builds the mesh and the program)

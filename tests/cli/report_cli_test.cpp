@@ -229,3 +229,65 @@ TEST_F(ReportCli, FullDiskKeepsTheEarlierSet) {
 }
 
 } // namespace
+
+// Interrupted (issue 14 item 3): SIGINT in the middle of measuring, SIGTERM/SIGHUP as soon as a temporary
+// file appears in the folder (the probe or the set being written). Afterwards the folder holds the complete
+// old set or the complete new set, never a mix, and no temporary file; the exit status names the signal.
+TEST_F(ReportCli, InterruptedRunLeavesTheOldOrTheNewSet) {
+    // About 1.5 s uninterrupted (llvmpipe, RelWithDebInfo, 2 cores); far longer under ASan.
+    writeFile(dir_ / "s.json", R"({"image": {"width": 256, "height": 256}})");
+    struct Case {
+        int signal;
+        bool onTemp; // signal when a temporary file appears (or at 1.2 s); otherwise at 0.4 s, mid-measure
+    };
+    int run = 0;
+    for (const Case& c : {Case{SIGINT, false}, Case{SIGTERM, true}, Case{SIGHUP, true}, Case{SIGINT, true}}) {
+        const fs::path folder = dir_ / ("R" + std::to_string(run++));
+        writeOldSet(folder);
+        RunOptions options;
+        options.signal = c.signal;
+        const auto start = std::chrono::steady_clock::now();
+        options.signalWhen = [&] {
+            const auto elapsed = std::chrono::steady_clock::now() - start;
+            if (!c.onTemp) return elapsed > std::chrono::milliseconds(400);
+            if (elapsed > std::chrono::milliseconds(1200)) return true;
+            std::error_code error;
+            for (fs::directory_iterator it(folder, error), end; !error && it != end; it.increment(error))
+                if (it->path().filename().string().starts_with(".shadelab-")) return true;
+            return false;
+        };
+        const Outcome r = runWith({"report", "s.json", "--out", folder.string(), "--levels", "0..6",
+                                   "--frames", "10", "--warmup", "2"},
+                                  dir_, options);
+        SCOPED_TRACE("signal " + std::to_string(c.signal) + ": " + describe(r));
+        EXPECT_TRUE(noTemp(folder)) << "a temporary file was left behind";
+        std::size_t old = 0;
+        for (const std::string& name : kReportFiles) old += readFile(folder / name) == kPrecious ? 1 : 0;
+        if (old != kReportFiles.size()) {
+            // The new set, then whole: each file new and the PNG a PNG.
+            EXPECT_EQ(old, 0u) << "a mix of the old and the new report set";
+            EXPECT_EQ(readFile(folder / "report.png").substr(1, 3), "PNG");
+        } else {
+            EXPECT_EQ(r.signal, c.signal) << "killed without finishing, yet not by the signal";
+        }
+        for (const auto& entry : fs::directory_iterator(folder))
+            EXPECT_TRUE(entry.path().filename().string().starts_with("report."))
+                << "stray file " << entry.path().filename();
+    }
+}
+
+// --no-plot (issue 15): report.csv and report.json only, and gnuplot is not needed (none on PATH here).
+TEST_F(ReportCli, NoPlotWritesCsvAndJsonWithoutGnuplot) {
+    writeFile(dir_ / "s.json", kTinyScene);
+    fs::create_directories(dir_ / "empty-bin");
+    std::vector<std::string> args = quickReport("s.json", "R");
+    args.emplace_back("--no-plot");
+    RunOptions options;
+    options.environment = {"PATH=" + (dir_ / "empty-bin").string()};
+    const Outcome r = runWith(args, dir_, options);
+    ASSERT_EQ(r.exitCode, 0) << describe(r);
+    EXPECT_NE(readFile(dir_ / "R" / "report.csv").find("shading,lighting,level"), std::string::npos);
+    EXPECT_TRUE(fs::exists(dir_ / "R" / "report.json"));
+    EXPECT_FALSE(fs::exists(dir_ / "R" / "report.gp"));
+    EXPECT_FALSE(fs::exists(dir_ / "R" / "report.png"));
+}

@@ -199,6 +199,10 @@ TEST(Report, JsonHasTheRunAndOneObjectPerRow) {
         for (std::size_t c = kTextColumns; c < kDocumentedColumns.size(); ++c)
             EXPECT_TRUE(row.at(kDocumentedColumns[c]).is_number())
                 << kDocumentedColumns[c] << " in " << row.dump();
+        // issue 15: level is a number where it is one ("auto" only for the automatic level).
+        if (row.at("level") != "auto") {
+            EXPECT_TRUE(row.at("level").is_number_integer()) << "level in " << row.dump();
+        }
     }
 }
 
