@@ -132,7 +132,7 @@ private:
         for (int tries = 0; tries < 100000; ++tries) {
             char name[32];
             std::snprintf(name, sizeof name, "shadelab-%03d", ++screenshots_);
-            const std::string stem = (options_.screenshotDir / name).string();
+            std::string stem = (options_.screenshotDir / name).string();
             const std::string json = stem + ".json", png = stem + ".png";
             if (::link(tempJson.c_str(), json.c_str()) != 0) {
                 if (errno == EEXIST) continue;
