@@ -1,13 +1,17 @@
 // The demo window: every mode on a key, an orbit camera, a live control panel. It draws through the same
 // Renderer and Scene as `shadelab render`, so a screenshot (S) is the picture `render` gives for the
 // scene JSON saved beside it.
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <exception>
 #include <new>
 #include <optional>
+#include <stdexcept>
 #include <string>
+#include <system_error>
 #include <thread>
+#include <unistd.h>
 
 #include "app/commands.h"
 #include "app/demo_state.h"
@@ -122,6 +126,31 @@ private:
         }
     }
 
+    // Links the written temporaries to the first shadelab-NNN whose .json and .png are both free
+    // (the JSON first, the PNG last) and removes the temporaries; returns the stem.
+    [[nodiscard]] std::string claimFreeStem(const std::string& tempJson, const std::string& tempPng) {
+        for (int tries = 0; tries < 100000; ++tries) {
+            char name[32];
+            std::snprintf(name, sizeof name, "shadelab-%03d", ++screenshots_);
+            std::string stem = (options_.screenshotDir / name).string();
+            const std::string json = stem + ".json", png = stem + ".png";
+            if (::link(tempJson.c_str(), json.c_str()) != 0) {
+                if (errno == EEXIST) continue;
+                throw std::runtime_error(json + ": " + std::generic_category().message(errno));
+            }
+            if (::link(tempPng.c_str(), png.c_str()) != 0) {
+                const int error = errno;
+                ::unlink(json.c_str());
+                if (error == EEXIST) continue;
+                throw std::runtime_error(png + ": " + std::generic_category().message(error));
+            }
+            ::unlink(tempJson.c_str());
+            ::unlink(tempPng.c_str());
+            return stem;
+        }
+        throw std::runtime_error("no free shadelab-NNN name in " + options_.screenshotDir.string());
+    }
+
     // The scene JSON first, the PNG last: a reader that sees the PNG finds its scene beside it.
     void saveScreenshot() {
         int width = 0, height = 0;
@@ -129,9 +158,11 @@ private:
         width -= panelColumnWidth(width, state_.showPanel); // the picture, without the panel's column
         if (width <= 0 || height <= 0) return;
         const Scene scene = sized(width, height);
-        char name[32];
-        std::snprintf(name, sizeof name, "shadelab-%03d", ++screenshots_);
-        const auto stem = options_.screenshotDir / name;
+        // Both files are written under temporary names in the folder, then linked to the first free
+        // shadelab-NNN (link() never replaces: EEXIST takes the next number), so no launch overwrites
+        // an earlier screenshot.
+        const auto temp = options_.screenshotDir / (".shadelab-shot-" + std::to_string(::getpid()));
+        const std::string tempJson = temp.string() + ".json", tempPng = temp.string() + ".png";
         // Out of memory (a big window under a limit) or a write error: say so and keep the demo running.
         try {
             const gl::RenderTarget target(width, height);
@@ -139,16 +170,21 @@ private:
             renderer_.render(scene, width, height);
             const Image image = target.readRgba8();
             gl::bindDefaultFramebuffer();
-            saveScene(scene, stem.string() + ".json");
-            writePng(image, stem.string() + ".png");
+            saveScene(scene, tempJson);
+            writePng(image, tempPng);
+            const std::string stem = claimFreeStem(tempJson, tempPng);
             std::printf("%s.png\n", stem.c_str());
             std::fflush(stdout);
         } catch (const std::bad_alloc&) {
             gl::bindDefaultFramebuffer();
+            ::unlink(tempJson.c_str());
+            ::unlink(tempPng.c_str());
             std::fprintf(stderr, "shadelab: screenshot not saved: out of memory for a %dx%d capture\n", width,
                          height);
         } catch (const std::exception& e) {
             gl::bindDefaultFramebuffer();
+            ::unlink(tempJson.c_str());
+            ::unlink(tempPng.c_str());
             std::fprintf(stderr, "shadelab: screenshot not saved: %s\n", printable(e.what()).c_str());
         }
     }

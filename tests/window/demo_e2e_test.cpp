@@ -432,5 +432,26 @@ TEST_F(DemoWindow, ScreenshotOutOfMemoryKeepsTheDemoRunning) {
     EXPECT_EQ(exit.code, 0) << "the demo did not survive the failed screenshot: " << exit.describe();
 }
 
+// Issue 15: S restarted at shadelab-001 each launch and replaced an earlier screenshot. With an earlier
+// shadelab-001 pair in the folder, S must save shadelab-002 and leave shadelab-001 as it was.
+TEST_F(DemoWindow, ScreenshotTakesTheNextFreeNumberAndNeverOverwrites) {
+    const fs::path dir = scratch() / "keep-demo-screenshots";
+    fs::create_directories(dir);
+    const std::string earlier = "an earlier launch's screenshot";
+    std::ofstream(dir / "shadelab-001.png") << earlier;
+    std::ofstream(dir / "shadelab-001.json") << earlier;
+    DemoProcess& demo = startDemo("keep-demo", {"--size", "320x240", "--hide-panel", "--gl-debug"});
+    demo.window().key("s");
+    const bool saved = pollUntil([&] { return fs::exists(dir / "shadelab-002.png"); });
+    EXPECT_TRUE(saved) << "S saved no shadelab-002.png beside the earlier shadelab-001:\n" << demo.err();
+    EXPECT_TRUE(fs::exists(dir / "shadelab-002.json"));
+    EXPECT_EQ(readText(dir / "shadelab-001.png"), earlier) << "S overwrote shadelab-001.png";
+    EXPECT_EQ(readText(dir / "shadelab-001.json"), earlier) << "S overwrote shadelab-001.json";
+    int files = 0;
+    for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++files;
+    EXPECT_EQ(files, 4) << "temporaries left in " << dir;
+    expectCleanQuit(demo);
+}
+
 } // namespace
 } // namespace shadelab::window_test
