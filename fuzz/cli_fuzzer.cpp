@@ -48,13 +48,18 @@ void checkParsed(const app::ParsedCommand& command) {
         return;
     case Kind::Render:
     case Kind::Reference:
-        // CLI11 enforces --out as required; an empty value is left to checkOutputPath.
+        // --out is required (CLI11 for reference, parseCommandLine for render); an empty value is left to
+        // checkOutputPath.
+        return;
+    case Kind::EglDevices:
+        if (command.eglDevice != "list") crash("a device listing not asked for", command.eglDevice);
         return;
     case Kind::Bench:
         if (command.bench.frames < 3 || command.bench.warmupFrames < 0)
             crash("bench frames outside their CLI11 range", std::to_string(command.bench.frames));
         return;
     case Kind::Demo:
+    case Kind::Report:
         return;
     }
     crash("an unknown kind", std::to_string(int(command.kind)));

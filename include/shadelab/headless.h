@@ -15,7 +15,9 @@ class Renderer;
 
 class HeadlessRenderer {
 public:
-    explicit HeadlessRenderer(Backend backend);
+    explicit HeadlessRenderer(const ContextRequest& request);
+    explicit HeadlessRenderer(Backend backend)
+        : HeadlessRenderer(ContextRequest{backend, Api::Gl, std::nullopt}) {}
     ~HeadlessRenderer();
     HeadlessRenderer(const HeadlessRenderer&) = delete;
     HeadlessRenderer& operator=(const HeadlessRenderer&) = delete;
@@ -23,6 +25,9 @@ public:
     Image render(const Scene& scene);       // scene.width × scene.height, rows top first
     ImageF renderFloat(const Scene& scene); // through an RGBA32F target: NaN and Inf stay visible
     Backend backend() const { return backend_; }
+    Api api() const { return api_; }
+    // "EGL device 0 (software rasterizer)", "EGL surfaceless platform", "OSMesa".
+    std::string origin() const { return context_->origin(); }
     // Scene-specialized programs (default) or the uber programs; see gl/program.h.
     void setSpecialize(bool specialize);
     // Flat shading through shared vertices and a geometry shader (see gl/renderer.h).
@@ -32,6 +37,7 @@ public:
 
 private:
     Backend backend_;
+    Api api_;
     std::unique_ptr<HeadlessContext> context_;
     std::unique_ptr<gl::Renderer> renderer_;
     std::string rendererString_;

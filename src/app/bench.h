@@ -11,7 +11,7 @@
 namespace shadelab::app {
 
 struct BenchOptions {
-    Backend backend = Backend::Egl;
+    ContextRequest context; // --backend, --api, --egl-device
     int width = 800, height = 600;
     int frames = 40;      // timed frames per configuration, after the warm-up
     int warmupFrames = 5; // drawn but not timed: program compile, mesh upload, caches

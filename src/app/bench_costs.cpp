@@ -171,9 +171,11 @@ std::vector<RatioSpec> registerGeneration() {
 
 // ---- frame time against the fill and raster limits (GPU) ----
 
-gl::Shader compileStage(GLenum stage, const char* source, const char* what) {
+// `body` follows the context's GLSL header (gl::glslHeader), as the renderer's shaders do.
+gl::Shader compileStage(GLenum stage, const char* body, const char* what) {
     gl::Shader shader(glCreateShader(stage));
-    glShaderSource(shader.get(), 1, &source, nullptr);
+    const char* sources[] = {gl::glslHeader(), body};
+    glShaderSource(shader.get(), 2, sources, nullptr);
     glCompileShader(shader.get());
     GLint ok = GL_FALSE;
     glGetShaderiv(shader.get(), GL_COMPILE_STATUS, &ok);
@@ -188,8 +190,7 @@ gl::Shader compileStage(GLenum stage, const char* source, const char* what) {
 // The limits' programs: one colour, no lighting. Inline sources: they are part of the measurement, not of
 // shadelab's shaders.
 gl::Program oneColourProgram(const char* vertexSource, const char* what) {
-    static constexpr const char* kFragment = "#version 330 core\n"
-                                             "out vec4 fragColor;\n"
+    static constexpr const char* kFragment = "out vec4 fragColor;\n"
                                              "void main() { fragColor = vec4(1.0); }\n";
     const gl::Shader vertex = compileStage(GL_VERTEX_SHADER, vertexSource, what);
     const gl::Shader fragment = compileStage(GL_FRAGMENT_SHADER, kFragment, what);
@@ -209,13 +210,11 @@ gl::Program oneColourProgram(const char* vertexSource, const char* what) {
 }
 
 // One triangle covering the viewport, from gl_VertexID alone.
-constexpr const char* kFullScreenVertex = "#version 330 core\n"
-                                          "void main() {\n"
+constexpr const char* kFullScreenVertex = "void main() {\n"
                                           "    vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);\n"
                                           "    gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);\n"
                                           "}\n";
 constexpr const char* kSphereVertex =
-    "#version 330 core\n"
     "in vec3 aPositionObject;\n"
     "uniform mat4 uClipFromObject;\n"
     "void main() { gl_Position = uClipFromObject * vec4(aPositionObject, 1.0); }\n";
@@ -224,28 +223,32 @@ constexpr const char* kSphereVertex =
 void beginFrame(int width, int height) {
     glViewport(0, 0, width, height);
     glClearColor(0, 0, 0, 0);
-    if (GLAD_GL_VERSION_4_5) glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
-    glClearDepth(0.0);
+    if (gl::capabilities().clipControl) gl::setClipDepthZeroToOne(false, "bench");
+    gl::clearDepth(0.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 }
 
 // After the timed frames: the pixels one frame covers (read-back alpha) and the fragments that passed the
 // depth test. Their quotient is the overdraw: the renderer culls no back faces, so those drawn before the
 // front ones are shaded too.
+// OpenGL ES has no sample-count query (only "any samples passed"): there the overdraw is left out.
 void countFragments(benchmark::State& state, Gpu& gpu, const std::function<void()>& draw) {
-    GLuint query = 0;
-    glGenQueries(1, &query);
-    glBeginQuery(GL_SAMPLES_PASSED, query);
-    draw();
-    glEndQuery(GL_SAMPLES_PASSED);
     GLuint samples = 0;
-    glGetQueryObjectuiv(query, GL_QUERY_RESULT, &samples);
-    glDeleteQueries(1, &query);
+    if (gl::capabilities().sampleCounts) {
+        GLuint query = 0;
+        glGenQueries(1, &query);
+        glBeginQuery(GL_SAMPLES_PASSED, query);
+        draw();
+        glEndQuery(GL_SAMPLES_PASSED);
+        glGetQueryObjectuiv(query, GL_QUERY_RESULT, &samples);
+        glDeleteQueries(1, &query);
+    }
     const Image image = gpu.target.readRgba8();
     double covered = 0;
     for (std::size_t i = 3; i < image.rgba.size(); i += 4) covered += image.rgba[i] != 0;
     state.counters["covered_px"] = covered;
-    state.counters["fragments_per_px"] = covered > 0 ? samples / covered : 0;
+    if (gl::capabilities().sampleCounts)
+        state.counters["fragments_per_px"] = covered > 0 ? samples / covered : 0;
 }
 
 void registerFrame(Gpu& gpu, const std::string& name, const std::function<void()>& draw) {
@@ -500,10 +503,11 @@ void registerProcess(const std::string& name,
 
 std::vector<RatioSpec> registerStartToPng(const BenchOptions& o) {
     const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
-    const std::string backend(toString(o.backend));
-    const auto render = [self, backend](const TempDir& dir) {
-        return std::vector<std::string>{self,        "render", "--size", "512x512",
-                                        "--backend", backend,  "--out",  (dir.path / "x.png").string()};
+    const std::string backend(toString(o.context.backend)), api(toString(o.context.api));
+    const auto render = [self, backend, api](const TempDir& dir) {
+        return std::vector<std::string>{
+            self,    "render", "--size", "512x512", "--backend",
+            backend, "--api",  api,      "--out",   (dir.path / "x.png").string()};
     };
     // runBench disables Mesa's shader cache for the whole run; a user's second start finds it warm.
     registerProcess("process/render-512/shader-cache-off", render);

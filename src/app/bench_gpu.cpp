@@ -17,7 +17,7 @@ void setSpread(benchmark::State& state, const std::vector<double>& ms) {
 }
 
 Gpu::Gpu(const BenchOptions& o)
-    : context(makeHeadlessContext(o.backend)), target(o.width, o.height), options(o) {}
+    : context(makeHeadlessContext(o.context)), target(o.width, o.height), options(o) {}
 
 void Gpu::timeFrames(benchmark::State& state, const std::function<void()>& draw) {
     target.bind();

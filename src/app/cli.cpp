@@ -37,6 +37,16 @@ void addSceneFlags(CLI::App& command, SceneOverrides& o) {
     command.add_option("--size", o.size, "Image size WxH, e.g. 512x512 (overrides the scene)");
 }
 
+// --api, and for the headless commands --egl-device (a number, or list).
+void addContextFlags(CLI::App& command, std::string& api, std::string* eglDevice) {
+    command.add_option("--api", api, "gl (desktop OpenGL 3.3 core) or gles (OpenGL ES 3.0)")
+        ->capture_default_str();
+    if (eglDevice)
+        command.add_option("--egl-device", *eglDevice,
+                           "EGL device number (see list), or list: print the devices and exit; default: the "
+                           "first device that gives a context, else the surfaceless platform");
+}
+
 std::string withoutTrailingNewlines(std::string text) {
     while (!text.empty() && text.back() == '\n') text.pop_back();
     return text;
@@ -62,6 +72,8 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
         ->check(CLI::ExistingDirectory);
     cli.add_flag("--hide-panel", demo.hidePanel, "Start with the control panel hidden (C shows it)");
     cli.add_flag("--gl-debug", demo.glDebug, "Ask for a KHR_debug context and print every GL message");
+    std::string demoApi = "gl";
+    addContextFlags(cli, demoApi, nullptr);
     cli.footer("Demo keys:\n" + keyHelpText());
 
     SceneOverrides renderFlags;
@@ -70,13 +82,18 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
     render->add_option("scene", renderScene, "Scene file (JSON); the defaults of DESIGN §4 if omitted");
     addSceneFlags(*render, renderFlags);
     render->add_option("--backend", backendName, "Headless context: egl or osmesa")->capture_default_str();
+    std::string renderApi = "gl", renderDevice;
+    addContextFlags(*render, renderApi, &renderDevice);
+    bool verbose = false;
+    render->add_flag("--verbose", verbose,
+                     "Say which context and renderer drew the picture (standard error)");
     bool specialize = true;
     render
         ->add_option("--specialize", specialize,
                      "on: programs specialized to the scene's lights and terms; off: the uber program")
         ->transform(CLI::IsMember({"on", "off", "true", "false", "1", "0"}, CLI::ignore_case))
         ->capture_default_str();
-    render->add_option("--out", renderOut, "Output PNG")->required();
+    render->add_option("--out", renderOut, "Output PNG, or - for standard output (required)");
 
     std::string referenceScene, referenceOut;
     SceneOverrides referenceFlags;
@@ -91,6 +108,8 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
         cli.add_subcommand("bench", "Benchmarks, reported as ratios measured in one run");
     benchCommand->add_option("--backend", benchBackend, "Headless context: egl or osmesa")
         ->capture_default_str();
+    std::string benchApi = "gl", benchDevice;
+    addContextFlags(*benchCommand, benchApi, &benchDevice);
     benchCommand->add_option("--size", benchSize, "Frame size WxH")->capture_default_str();
     benchCommand->add_option("--frames", bench.frames, "Timed frames per configuration")
         ->capture_default_str()
@@ -117,6 +136,8 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
                             "Write report.csv and report.json only (no gnuplot needed)");
     reportCommand->add_option("--backend", reportBackend, "Headless context: egl or osmesa")
         ->capture_default_str();
+    std::string reportApi = "gl", reportDevice;
+    addContextFlags(*reportCommand, reportApi, &reportDevice);
     reportCommand->add_option("--frames", command.reportFrames, "Timed frames per configuration")
         ->capture_default_str()
         ->check(CLI::Range(1, 100000));
@@ -151,17 +172,24 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
         command.overrides = renderFlags;
         command.out = renderOut;
         command.backend = backendName;
+        command.api = renderApi;
+        command.eglDevice = renderDevice;
+        command.verbose = verbose;
         command.specialize = specialize;
     } else if (*benchCommand) {
         command.kind = ParsedCommand::Kind::Bench;
         command.bench = bench;
         command.backend = benchBackend;
+        command.api = benchApi;
+        command.eglDevice = benchDevice;
         command.benchSize = benchSize;
         command.benchJson = benchJson;
     } else if (*reportCommand) {
         command.kind = ParsedCommand::Kind::Report;
         command.scene = reportScene;
         command.backend = reportBackend;
+        command.api = reportApi;
+        command.eglDevice = reportDevice;
     } else if (*reference) {
         command.kind = ParsedCommand::Kind::Reference;
         command.scene = referenceScene;
@@ -172,7 +200,15 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
         command.scene = demoScene;
         command.overrides = demoFlags;
         command.demo = demo;
+        command.api = demoApi;
     }
+    if (command.eglDevice == "list") {
+        command.kind = ParsedCommand::Kind::EglDevices;
+        return command;
+    }
+    if (command.kind == ParsedCommand::Kind::Render && renderOut.empty())
+        throw InputError("--out is required: the PNG to write, or - for standard output\nRun with --help for "
+                         "more information.");
     return command;
 }
 

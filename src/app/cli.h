@@ -12,7 +12,7 @@
 namespace shadelab::app {
 
 struct ParsedCommand {
-    enum class Kind { Exit, Demo, Render, Reference, Bench, Report };
+    enum class Kind { Exit, Demo, Render, Reference, Bench, Report, EglDevices };
     Kind kind = Kind::Demo;
 
     // Kind::Exit (--help, --help-all): print `text` to stdout and exit with `exitCode`.
@@ -22,7 +22,10 @@ struct ParsedCommand {
     std::string scene;           // Demo, Render, Reference, Report: the scene file; empty for the defaults
     SceneOverrides overrides;    // Demo, Render, Reference
     std::string out;             // Render, Reference: --out
-    std::string backend = "egl"; // Render, Bench, Report: --backend, checked by backendFromArgument
+    std::string backend = "egl"; // Render, Bench, Report: --backend, checked by contextFromArguments
+    std::string api = "gl";      // Demo, Render, Bench, Report: --api
+    std::string eglDevice;       // Render, Bench, Report: --egl-device N; "list" gives Kind::EglDevices
+    bool verbose = false;        // Render: --verbose
     bool specialize = true;      // Render: --specialize
     DemoOptions demo;            // Demo
     BenchOptions bench;          // Bench: frames, warm-up and filter; size, backend and JSON are below

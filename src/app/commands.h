@@ -30,20 +30,28 @@ void composeSize(Scene& scene, const std::string& text);
 // folder itself), before any work is done.
 void checkOutputPath(const std::filesystem::path& out, const char* argument = "--out");
 
-Backend backendFromArgument(const std::string& name);
+// --backend egl|osmesa, --api gl|gles and --egl-device N (empty: none given); InputError naming the option.
+ContextRequest contextFromArguments(const std::string& backend, const std::string& api,
+                                    const std::string& eglDevice);
+Api apiFromArgument(const std::string& name);
 
-int runRender(const Scene& scene, Backend backend, const std::filesystem::path& out, bool specialize = true);
+// `verbose`: where the context comes from and its renderer string, on standard error.
+int runRender(const Scene& scene, const ContextRequest& context, const std::filesystem::path& out,
+              bool specialize = true, bool verbose = false);
+// --egl-device list: one line per EGL device and what a context of `api` on it reports.
+int runListEglDevices(Api api);
 int runReference(const Scene& scene, const std::filesystem::path& out);
 struct DemoOptions {
     std::filesystem::path showcaseOut = "shadelab-showcase.png"; // where the showcase goes without a display
     std::filesystem::path screenshotDir = ".";                   // where S saves PNG + scene JSON
     bool hidePanel = false;                // start with the control panel hidden (C shows it)
     bool glDebug = false;                  // a KHR_debug context; every GL message is printed and counted
+    Api api = Api::Gl;                     // --api: desktop OpenGL 3.3 core or OpenGL ES 3.0
     int windowWidth = 0, windowHeight = 0; // --size; 0: a size fit for the screen, not the scene's image
 };
 
 // The window; without a display, the showcase rendered headless to options.showcaseOut.
 int runDemo(const Scene& scene, const DemoOptions& options);
-int runShowcase(const Scene& scene, Backend backend, const std::filesystem::path& out);
+int runShowcase(const Scene& scene, const ContextRequest& context, const std::filesystem::path& out);
 
 } // namespace shadelab::app

@@ -208,7 +208,7 @@ constexpr double kDisplayAnswerSeconds = 5;
 
 int showcaseInstead(const Scene& scene, const DemoOptions& options, const std::string& why) {
     std::fprintf(stderr, "shadelab: %s; rendering the showcase headless instead\n", why.c_str());
-    return runShowcase(scene, Backend::Egl, options.showcaseOut);
+    return runShowcase(scene, ContextRequest{Backend::Egl, options.api, std::nullopt}, options.showcaseOut);
 }
 
 } // namespace

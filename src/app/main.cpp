@@ -29,8 +29,9 @@ int run(int argc, char** argv) {
         app::checkOutputPath(command.out);
         refuseOverwritingInput(command.out, "--out", command.scene); // before anything is rendered
         const Scene scene = app::composeScene(command.scene, command.overrides);
-        const Backend backend = app::backendFromArgument(command.backend);
-        return app::runRender(scene, backend, command.out, command.specialize);
+        const ContextRequest context =
+            app::contextFromArguments(command.backend, command.api, command.eglDevice);
+        return app::runRender(scene, context, command.out, command.specialize, command.verbose);
     }
     case Kind::Bench: {
         app::BenchOptions bench = command.bench;
@@ -38,7 +39,7 @@ int run(int argc, char** argv) {
         app::composeSize(sized, command.benchSize);
         bench.width = sized.width;
         bench.height = sized.height;
-        bench.backend = app::backendFromArgument(command.backend);
+        bench.context = app::contextFromArguments(command.backend, command.api, command.eglDevice);
         if (!command.benchJson.empty()) {
             app::checkOutputPath(command.benchJson, "--json");
             if (command.benchJson == "-")
@@ -61,11 +62,13 @@ int run(int argc, char** argv) {
         app::parseLevels(command.reportLevels, report);
         report.includeAuto = !command.reportNoAuto;
         report.plot = !command.reportNoPlot;
-        report.backend = app::backendFromArgument(command.backend);
+        report.context = app::contextFromArguments(command.backend, command.api, command.eglDevice);
         report.frames = command.reportFrames;
         report.warmup = command.reportWarmup;
         return app::runReport(report);
     }
+    case Kind::EglDevices:
+        return app::runListEglDevices(app::apiFromArgument(command.api));
     case Kind::Demo:
         break;
     }
@@ -73,6 +76,7 @@ int run(int argc, char** argv) {
     refuseOverwritingInput(command.demo.showcaseOut, "--showcase-out", command.scene);
     const Scene scene = app::composeScene(command.scene, command.overrides);
     app::DemoOptions demo = command.demo;
+    demo.api = app::apiFromArgument(command.api);
     if (command.overrides.size) { // the window takes --size when given, never the scene's image size
         demo.windowWidth = scene.width;
         demo.windowHeight = scene.height;

@@ -478,6 +478,7 @@ std::string reportJson(const std::vector<ReportRow>& rows, const ReportInfo& inf
     const nlohmann::ordered_json root = {{"scene", info.sceneName},
                                          {"renderer", info.renderer},
                                          {"backend", std::string(toString(info.backend))},
+                                         {"api", std::string(toString(info.api))},
                                          {"width", info.width},
                                          {"height", info.height},
                                          {"frames", info.frames},
@@ -839,9 +840,10 @@ int runReport(const ReportOptions& options) {
     if (options.plot) requireGnuplot(); // before minutes of measuring, not after
     prepareOutDir(options.outDir, options.scene);
 
-    const std::unique_ptr<HeadlessContext> context = makeHeadlessContext(options.backend);
+    const std::unique_ptr<HeadlessContext> context = makeHeadlessContext(options.context);
     info.renderer = gl::rendererString();
-    info.backend = options.backend;
+    info.backend = options.context.backend;
+    info.api = options.context.api;
     info.width = scene.width;
     info.height = scene.height;
     info.frames = options.frames;

@@ -24,9 +24,9 @@ struct ReportOptions {
     int minLevel = 0, maxLevel = 8;
     bool includeAuto = true; // one more row per mode: "subdivisions": "auto" at the scene's tolerance_px
     bool plot = true;        // false (--no-plot): report.csv and report.json only, gnuplot not needed
-    Backend backend = Backend::Egl;
-    int frames = 20; // timed frames per configuration, >= 1
-    int warmup = 3;  // untimed frames first, >= 1 (the first frame builds the mesh and the program)
+    ContextRequest context;  // --backend, --api, --egl-device
+    int frames = 20;         // timed frames per configuration, >= 1
+    int warmup = 3;          // untimed frames first, >= 1 (the first frame builds the mesh and the program)
 };
 
 // "--levels": "N" or "A..B" with 0 <= A <= B <= kMaxSubdivisions. InputError naming --levels otherwise.
@@ -100,6 +100,7 @@ struct ReportInfo {
     std::string sceneName; // the scene file, or "scenes/report.json (bundled)"
     std::string renderer;  // gl::rendererString()
     Backend backend = Backend::Egl;
+    Api api = Api::Gl;
     int width = 0, height = 0;
     int frames = 0, warmup = 0;
     LightingModel labelledLighting = LightingModel::Phong; // the plot labels this model's points

@@ -55,6 +55,7 @@ public:
     ~OsmesaContext() override { OSMesaDestroyContext(context_); }
 
     Backend backend() const override { return Backend::Osmesa; }
+    std::string origin() const override { return "OSMesa"; }
 
 private:
     OSMesaContext context_ = nullptr;

@@ -8,6 +8,7 @@
 
 #include "gl/shader_sources.h"
 #include "shadelab/errors.h"
+#include "shadelab/gl/loader.h"
 
 namespace shadelab::gl {
 namespace {
@@ -35,7 +36,7 @@ std::string infoLog(GLuint object, bool isProgram) {
 }
 
 Shader compileStage(GLenum stage, const char* file, const ProgramVariant& variant) {
-    const std::string source = "#version 330 core\n" + variant.defines() + "#line 1 " +
+    const std::string source = glslHeader() + variant.defines() + "#line 1 " +
                                std::to_string(kLightingSourceNumber) + "\n" +
                                std::string(shaderText(kLightingFile)) + "#line 1 " +
                                std::to_string(kStageSourceNumber) + "\n" + std::string(shaderText(file));
@@ -115,6 +116,10 @@ std::string ProgramVariant::defines() const {
 }
 
 Program buildProgram(const ProgramVariant& variant) {
+    if (variant.flatGeometryShader && !capabilities().geometryShaders)
+        throw RuntimeError("flat shading through a geometry shader (program " + variant.name() +
+                           ") needs desktop OpenGL: " + std::string(displayName(capabilities().api)) +
+                           " has no geometry stage; use the default flat layout");
     const Shader vertex = compileStage(GL_VERTEX_SHADER, "surface.vert.glsl", variant);
     const Shader fragment = compileStage(GL_FRAGMENT_SHADER, "surface.frag.glsl", variant);
     Shader geometry;

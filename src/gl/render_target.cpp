@@ -67,6 +67,9 @@ DepthFormat depthFormatFor(DepthMode mode) {
 RenderTarget::RenderTarget(int width, int height, ColorFormat format, DepthFormat depth)
     : width_(width), height_(height), format_(format) {
     checkSize(width, height);
+    if (format == ColorFormat::Rgba32F && !capabilities().floatColorTargets)
+        throw RuntimeError("a float (RGBA32F) render target needs EXT_color_buffer_float, which this " +
+                           std::string(displayName(capabilities().api)) + " context lacks");
     Id fbo = 0;
     glGenFramebuffers(1, &fbo);
     fbo_ = Framebuffer(fbo);

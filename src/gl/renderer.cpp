@@ -126,15 +126,8 @@ void cullBackFaces(const SceneObject& object, const glm::dmat4& viewFromObject, 
 }
 
 void setClipRange(DepthMode mode) {
-    const bool zeroToOne = mode != DepthMode::Standard;
-    if (!GLAD_GL_VERSION_4_5) {
-        if (zeroToOne)
-            throw RuntimeError(
-                "depth " + std::string(toString(mode)) +
-                ": needs glClipControl (OpenGL 4.5), which this context lacks; use depth standard");
-        return; // the default range is the standard one
-    }
-    glClipControl(GL_LOWER_LEFT, zeroToOne ? GL_ZERO_TO_ONE : GL_NEGATIVE_ONE_TO_ONE);
+    const std::string what = "depth " + std::string(toString(mode));
+    setClipDepthZeroToOne(mode != DepthMode::Standard, what.c_str());
 }
 
 } // namespace
@@ -174,7 +167,7 @@ void Renderer::render(const Scene& scene, int width, int height, int x) {
     // DESIGN §2: near maps to NDC z = +1 (standard) or clip depth 1 (reversed), so in both modes the nearer
     // surface has the greater depth. Reversed-Z also needs the [0, 1] clip range.
     setClipRange(view.depth);
-    glClearDepth(0.0);
+    clearDepth(0.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_GREATER);

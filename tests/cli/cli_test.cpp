@@ -139,6 +139,44 @@ TEST_F(CliTest, RenderWithOsmesaBackend) {
     EXPECT_EQ(size->height, 64u);
 }
 
+// --api gles (DESIGN §7): the same picture as desktop OpenGL, from an OpenGL ES context that says so.
+TEST_F(CliTest, RenderWithOpenGlEsGivesTheDesktopPicture) {
+    writeFile(dir_ / "scene.json", smallScene("phong", "blinn-phong", 4, 96, 80));
+    const std::string gl = renderBytes({"render", "scene.json", "--api", "gl"}, "gl.png");
+    const Outcome run = shadelab({"render", "scene.json", "--api", "gles", "--verbose", "--out", "gles.png"});
+    ASSERT_EQ(run.exitCode, 0) << describe(run);
+    EXPECT_TRUE(std::regex_search(run.err, std::regex("OpenGL ES 3\\.0 context: .+, OpenGL ES 3\\.[0-9]")))
+        << "the context asked for and the version the driver gives\n"
+        << describe(run);
+    EXPECT_EQ(readFile(dir_ / "gles.png"), gl) << "OpenGL ES and OpenGL drew different pixels";
+}
+
+TEST_F(CliTest, VerboseNamesTheContextAndRenderer) {
+    const Outcome run = shadelab({"render", "--size", "16x16", "--verbose", "--out", "out.png"});
+    ASSERT_EQ(run.exitCode, 0) << describe(run);
+    EXPECT_TRUE(std::regex_search(run.err, std::regex("^shadelab: EGL (device [0-9]+ \\(.+\\)|surfaceless "
+                                                      "platform), OpenGL 3\\.3 core context: .+, OpenGL")))
+        << describe(run);
+}
+
+// EGL_EXT_platform_device: Mesa lists its software device, so the listing and --egl-device 0 work here.
+TEST_F(CliTest, EglDevicesAreListedAndChosen) {
+    const Outcome list = shadelab({"render", "--egl-device", "list"});
+    ASSERT_EQ(list.exitCode, 0) << describe(list);
+    ASSERT_TRUE(std::regex_search(list.out, std::regex("^0: .+: .+OpenGL"))) << describe(list);
+    const Outcome gles = shadelab({"render", "--egl-device", "list", "--api", "gles"});
+    ASSERT_EQ(gles.exitCode, 0) << describe(gles);
+    EXPECT_NE(gles.out.find("OpenGL ES"), std::string::npos) << describe(gles);
+    EXPECT_EQ(listing(dir_), std::set<std::string>{}) << "listing wrote a file";
+
+    const std::string chosen = renderBytes({"render", "--size", "48x48", "--egl-device", "0"}, "d0.png");
+    const std::string automatic = renderBytes({"render", "--size", "48x48"}, "auto.png");
+    EXPECT_EQ(chosen, automatic);
+    const Outcome verbose =
+        shadelab({"render", "--size", "8x8", "--egl-device", "0", "--verbose", "--out", "v.png"});
+    EXPECT_NE(verbose.err.find("EGL device 0 ("), std::string::npos) << describe(verbose);
+}
+
 TEST_F(CliTest, ReferenceWithoutSceneWritesOnlyThePng) {
     const Outcome run = shadelab({"reference", "--size", "64x64", "--out", "ref.png"});
     ASSERT_EQ(run.exitCode, 0) << describe(run);
@@ -377,6 +415,19 @@ const BadInput kBadInputs[] = {
      .prepare = Prepare::SceneFile,
      .scene = R"({ "shading": 3 })"},
     // The demo validates its arguments before it looks for a display or renders the showcase.
+    {.name = "api_bogus",
+     .args = {"render", "--api", "vulkan", "--size", "8x8", "--out", "out.png"},
+     .mentions = {"--api", "vulkan", "gl", "gles"}},
+    {.name = "api_gles_with_osmesa",
+     .args = {"render", "--api", "gles", "--backend", "osmesa", "--size", "8x8", "--out", "out.png"},
+     .mentions = {"--api gles", "OSMesa", "--backend egl"}},
+    {.name = "egl_device_not_a_number",
+     .args = {"render", "--egl-device", "gpu0", "--size", "8x8", "--out", "out.png"},
+     .mentions = {"--egl-device", "gpu0", "list"}},
+    {.name = "egl_device_out_of_range",
+     .args = {"render", "--egl-device", "99", "--size", "8x8", "--out", "out.png"},
+     .mentions = {"--egl-device 99", "EGL device", "--egl-device list"}},
+    {.name = "render_without_out", .args = {"render", "--size", "8x8"}, .mentions = {"--out is required"}},
     {.name = "demo_scene_missing",
      .args = {"no-such-scene.json", "--showcase-out", "s.png"},
      .mentions = {"no-such-scene.json"},

@@ -6,12 +6,13 @@
 
 namespace shadelab::test {
 
-Backend backendUnderTest() {
+ContextRequest contextUnderTest() {
     const char* name = std::getenv("SHADELAB_TEST_BACKEND");
-    if (!name) return Backend::Egl;
+    if (!name) return {};
+    if (std::string_view(name) == "gles") return {Backend::Egl, Api::Gles, std::nullopt};
     const auto backend = parseBackend(name);
     if (!backend) throw InputError(std::string("SHADELAB_TEST_BACKEND: unknown backend ") + name);
-    return *backend;
+    return {*backend, Api::Gl, std::nullopt};
 }
 
 HeadlessRenderer* glRenderer(std::string& why) {
@@ -19,7 +20,7 @@ HeadlessRenderer* glRenderer(std::string& why) {
     static std::string failure;
     if (!renderer && failure.empty()) {
         try {
-            renderer = std::make_unique<HeadlessRenderer>(backendUnderTest());
+            renderer = std::make_unique<HeadlessRenderer>(contextUnderTest());
         } catch (const std::exception& e) {
             failure = e.what();
         }

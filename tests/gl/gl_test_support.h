@@ -12,7 +12,8 @@
 
 namespace shadelab::test {
 
-Backend backendUnderTest();
+// SHADELAB_TEST_BACKEND: egl (desktop OpenGL), osmesa, or gles (EGL, OpenGL ES 3.0).
+ContextRequest contextUnderTest();
 
 // The process's renderer, or nullptr with the reason in `why` when no context can be made.
 HeadlessRenderer* glRenderer(std::string& why);

@@ -53,7 +53,7 @@ HeadlessContext* reportContext(std::string& why) {
     static std::string failure;
     if (!context && failure.empty()) {
         try {
-            context = makeHeadlessContext(backendUnderTest());
+            context = makeHeadlessContext(contextUnderTest());
         } catch (const std::exception& e) {
             failure = e.what();
         }
@@ -82,7 +82,7 @@ ReportOptions smallOptions() {
     o.maxLevel = 5;
     o.frames = 3;
     o.warmup = 1;
-    o.backend = backendUnderTest();
+    o.context = contextUnderTest();
     return o;
 }
 
