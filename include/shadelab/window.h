@@ -8,6 +8,7 @@
 #include <string>
 
 #include "shadelab/errors.h"
+#include "shadelab/gl/api.h"
 
 namespace shadelab {
 
@@ -37,8 +38,8 @@ public:
     // Throws RuntimeError naming the GLFW error when the display cannot give a window or a GL context.
     // `debugContext` asks for a KHR_debug context (see gl::enableDebugOutput). A width or height of 0 asks
     // for the default size: kDefaultWidth × kDefaultHeight, each at most 90 % of the primary monitor's
-    // work area.
-    Window(int width, int height, const std::string& title, bool debugContext = false);
+    // work area. `api` picks a desktop OpenGL 3.3 core or an OpenGL ES 3.0 context.
+    Window(int width, int height, const std::string& title, bool debugContext = false, Api api = Api::Gl);
     static constexpr int kDefaultWidth = 1280, kDefaultHeight = 800;
     ~Window();
     Window(const Window&) = delete;
@@ -56,12 +57,14 @@ public:
     void onDrag(std::function<void(double dx, double dy)> handler);
     // Wheel steps: positive away from the user.
     void onScroll(std::function<void(double steps)> handler);
+    Api api() const { return api_; }
     // The GLFWwindow*, for Dear ImGui's GLFW backend.
     void* nativeHandle() const;
 
 private:
     struct State;
     std::unique_ptr<State> state_;
+    Api api_;
 };
 
 } // namespace shadelab

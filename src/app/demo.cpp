@@ -66,7 +66,7 @@ class Demo {
 public:
     Demo(const Scene& scene, const DemoOptions& options)
         : options_(options), state_(scene),
-          window_(options.windowWidth, options.windowHeight, title(state_, 0), options.glDebug),
+          window_(options.windowWidth, options.windowHeight, title(state_, 0), options.glDebug, options.api),
           panel_(window_) {
         state_.showPanel = !options.hidePanel;
         if (options.glDebug && !gl::enableDebugOutput(&debugSink_))

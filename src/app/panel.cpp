@@ -7,6 +7,7 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include "shadelab/gl/loader.h"
 #include "shadelab/window.h"
 
 namespace shadelab::app {
@@ -75,13 +76,13 @@ void lightControls(Light& light, int index) {
 
 } // namespace
 
-Panel::Panel(Window& window) {
+Panel::Panel(Window& window) : api_(window.api()) {
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr; // no imgui.ini left in the user's folder
     ImGui::StyleColorsDark();
     ImGui_ImplGlfw_InitForOpenGL(static_cast<GLFWwindow*>(window.nativeHandle()), true);
-    ImGui_ImplOpenGL3_Init("#version 330 core");
+    ImGui_ImplOpenGL3_Init(window.api() == Api::Gl ? "#version 330 core" : "#version 300 es");
 }
 
 Panel::~Panel() {
@@ -141,6 +142,11 @@ void Panel::draw(DemoState& state, const std::string& status, int columnWidth) {
     }
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    // Debian builds Dear ImGui's OpenGL 3 backend for desktop GL only (no IMGUI_IMPL_OPENGL_ES3): on an
+    // OpenGL ES context its state save and restore asks for GL_POLYGON_MODE and GL_PRIMITIVE_RESTART and
+    // calls glPolygonMode, which ES lacks. Each is a no-op that sets GL_INVALID_ENUM/OPERATION (seen with
+    // --gl-debug); those flags are cleared here so the renderer's own error checks stay meaningful.
+    if (api_ == Api::Gles) gl::discardErrors();
 }
 
 } // namespace shadelab::app

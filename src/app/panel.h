@@ -4,6 +4,7 @@
 #include <string>
 
 #include "app/demo_state.h"
+#include "shadelab/gl/api.h"
 
 namespace shadelab {
 class Window;
@@ -26,6 +27,9 @@ public:
     // Builds and draws this frame's panel and help over the bound framebuffer. Every edited value is
     // clamped to its valid range here, so nothing invalid reaches the scene or the shader.
     void draw(DemoState& state, const std::string& status, int columnWidth);
+
+private:
+    Api api_;
 };
 
 } // namespace shadelab::app

@@ -75,13 +75,19 @@ std::optional<std::string> Window::unresponsiveDisplay(double seconds) {
     return std::string(text);
 }
 
-Window::Window(int width, int height, const std::string& title, bool debugContext)
-    : state_(std::make_unique<State>()) {
+Window::Window(int width, int height, const std::string& title, bool debugContext, Api api)
+    : state_(std::make_unique<State>()), api_(api) {
     if (!glfwInit()) throw DisplayUnavailable("window: cannot open the display: " + lastGlfwError());
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
-    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    if (api == Api::Gles) {
+        glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API);
+        glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+        glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 0);
+    } else {
+        glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+        glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+        glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+        glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    }
     glfwWindowHint(GLFW_DEPTH_BITS, 24);
     glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, debugContext ? GLFW_TRUE : GLFW_FALSE);
     if (width <= 0 || height <= 0) {
@@ -99,11 +105,12 @@ Window::Window(int width, int height, const std::string& title, bool debugContex
     if (!state_->window) {
         const std::string error = lastGlfwError();
         glfwTerminate();
-        throw RuntimeError("window: the display cannot give an OpenGL 3.3 core context: " + error);
+        throw RuntimeError("window: the display cannot give an " + std::string(displayName(api)) +
+                           " context: " + error);
     }
     glfwMakeContextCurrent(state_->window);
     glfwSwapInterval(1);
-    gl::loadGl(glfwGetProcAddress, "glfw");
+    gl::loadGl(glfwGetProcAddress, "glfw", api);
     glfwSetWindowUserPointer(state_->window, state_.get());
     glfwSetKeyCallback(state_->window, [](GLFWwindow* w, int key, int, int action, int) {
         auto* state = static_cast<State*>(glfwGetWindowUserPointer(w));

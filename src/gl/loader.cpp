@@ -117,8 +117,7 @@ std::string rendererString() {
 void checkGlError(const char* stage) {
     const GLenum error = glGetError();
     if (error == GL_NO_ERROR) return;
-    while (glGetError() != GL_NO_ERROR) {
-    }
+    discardErrors();
     char code[16];
     std::snprintf(code, sizeof code, "0x%04X", error);
     const char* name = error == GL_OUT_OF_MEMORY       ? " (GL_OUT_OF_MEMORY: the driver could not allocate "
@@ -130,6 +129,11 @@ void checkGlError(const char* stage) {
                        : error == GL_INVALID_FRAMEBUFFER_OPERATION ? " (GL_INVALID_FRAMEBUFFER_OPERATION)"
                                                                    : "";
     throw RuntimeError(std::string("GL error ") + code + " in " + stage + name);
+}
+
+void discardErrors() {
+    while (glGetError() != GL_NO_ERROR) {
+    }
 }
 
 void finish() {

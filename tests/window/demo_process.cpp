@@ -45,8 +45,10 @@ ExitStatus DemoProcess::quit() {
     throw std::runtime_error("the demo did not exit within " + kWaitText + " of Escape\n" + child_->logs());
 }
 
-Image renderWithCli(const fs::path& scene, const fs::path& png, const fs::path& scratch) {
-    const std::vector<std::string> argv = {SHADELAB_EXE, "render", scene.string(), "--out", png.string()};
+Image renderWithCli(const fs::path& scene, const fs::path& png, const fs::path& scratch,
+                    const std::string& api) {
+    const std::vector<std::string> argv = {SHADELAB_EXE, "render", scene.string(), "--api",
+                                           api,          "--out",  png.string()};
     const ToolRun run = runTool(argv, childEnvironment(""), scratch, kWaitLimit);
     if (!run.ok()) throw std::runtime_error(run.describe(argv));
     return readPng(png);

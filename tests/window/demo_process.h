@@ -37,6 +37,8 @@ private:
 };
 
 // `shadelab render <scene> --out <png>` headless, read back; throws with the command's output if it fails.
-Image renderWithCli(const fs::path& scene, const fs::path& png, const fs::path& scratch);
+// `api`: gl or gles (render --api).
+Image renderWithCli(const fs::path& scene, const fs::path& png, const fs::path& scratch,
+                    const std::string& api = "gl");
 
 } // namespace shadelab::window_test

@@ -43,6 +43,9 @@ std::string rendererString();
 // Throws RuntimeError naming `stage` if glGetError reports an error.
 void checkGlError(const char* stage);
 
+// Clears every pending glGetError flag (for errors a third-party library is known to leave; see panel.cpp).
+void discardErrors();
+
 // Waits until the GPU has finished every command issued so far (for timing).
 void finish();
 
