@@ -92,6 +92,12 @@ public:
             window_.waitEvents(0.001);
             std::this_thread::sleep_until(start + kFramePeriod);
         }
+        if (options_.glDebug && panelMessages_ > 0)
+            std::fprintf(
+                stderr,
+                "shadelab: %d GL debug message(s) from Dear ImGui's desktop-only GL backend on OpenGL "
+                "ES not shown (see src/app/panel.cpp)\n",
+                panelMessages_);
         if (options_.glDebug) std::fprintf(stderr, "shadelab: %d GL debug message(s)\n", debugMessages_);
         return kExitOk;
     }
@@ -107,7 +113,9 @@ private:
         renderer_.render(sized(width - column, height), width - column, height, column);
         gl::finish();
         timer_.add(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+        insidePanel_ = true;
         panel_.draw(state_, status(state_), column);
+        insidePanel_ = false;
     }
 
     Scene sized(int width, int height) const { return state_.current(width, height); }
@@ -192,7 +200,15 @@ private:
     DemoOptions options_;
     // Before the window: the context may report messages until it is destroyed.
     int debugMessages_ = 0;
+    // On OpenGL ES, Debian's Dear ImGui backend makes desktop-only calls every frame (panel.cpp): counted
+    // apart, so --gl-debug still shows every message of shadelab's own.
+    bool insidePanel_ = false;
+    int panelMessages_ = 0;
     std::function<void(const std::string&)> debugSink_ = [this](const std::string& message) {
+        if (insidePanel_ && options_.api == Api::Gles) {
+            ++panelMessages_;
+            return;
+        }
         ++debugMessages_;
         std::fprintf(stderr, "shadelab: GL debug: %s\n", message.c_str());
     };
