@@ -12,8 +12,8 @@ function(shadelab_embed out_var name pattern header function)
   add_custom_command(
     OUTPUT ${output}
     COMMAND ${CMAKE_COMMAND} -DOUTPUT=${output} "-DINPUTS=${files}" -DHEADER=${header}
-            -DNAMESPACE=${namespace} -DFUNCTION=${function_name} -P ${CMAKE_SOURCE_DIR}/cmake/embed_files_run.cmake
-    DEPENDS ${files} ${CMAKE_SOURCE_DIR}/cmake/embed_files_run.cmake
+            -DNAMESPACE=${namespace} -DFUNCTION=${function_name} -P ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/embed_files_run.cmake
+    DEPENDS ${files} ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/embed_files_run.cmake
     COMMENT "Embedding ${name}"
     VERBATIM)
   set(${out_var} ${output} PARENT_SCOPE)

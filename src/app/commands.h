@@ -6,25 +6,11 @@
 #include <optional>
 #include <string>
 
+#include "app/scene_flags.h"
 #include "shadelab/context.h"
 #include "shadelab/scene.h"
 
 namespace shadelab::app {
-
-// Flags that override the scene file. Unset flags leave the scene's values.
-struct SceneOverrides {
-    std::optional<std::string> shading, lighting, size;
-    std::optional<std::string> subdivisions; // a level or "auto"
-    std::optional<std::string> tolerancePx;  // a decimal number, parsed by composeScene
-    std::optional<std::string> depth;        // standard | reversed | reversed-infinite
-};
-
-// The scene file (or the DESIGN §4 defaults when `path` is empty) with the overrides applied and the
-// result validated. Errors name the argument (e.g. "--size") or the JSON path.
-Scene composeScene(const std::string& path, const SceneOverrides& overrides);
-
-// Applies "--size WxH" to the scene; InputError naming --size for anything else.
-void composeSize(Scene& scene, const std::string& text);
 
 // Throws InputError naming `argument` if `out` cannot be a PNG output path (its folder missing, or it is a
 // folder itself), before any work is done.

@@ -31,27 +31,6 @@ using Clock = std::chrono::steady_clock;
 // Caps the frame rate where nothing else does (Xvfb has no vsync), so a test machine is not saturated.
 constexpr auto kFramePeriod = std::chrono::microseconds(1'000'000 / 60);
 
-std::string modes(const Scene& scene) {
-    return std::string(toString(scene.shading)) + " shading, " + std::string(toString(scene.lighting)) +
-           " lighting";
-}
-
-std::string title(const DemoState& state, double frameMs) {
-    char timing[32];
-    std::snprintf(timing, sizeof timing, "%.2f ms", frameMs);
-    return "shadelab — " + modes(state.current()) + " | level " + std::to_string(state.level()) +
-           (state.autoLevel() ? " (auto)" : "") + " | " + std::to_string(state.triangleCount()) +
-           " triangles | " + timing + " | H: keys";
-}
-
-std::string status(const DemoState& state) {
-    const Scene scene = state.current();
-    return modes(scene) + "\nlevel " + std::to_string(state.level()) + ", " +
-           (state.orthographic() ? "orthographic" : "perspective") + ", " +
-           (scene.vertexNormals == VertexNormals::Averaged ? "averaged" : "exact") +
-           " normals\nmaterial: " + state.materialName() + ", lights: " + state.lightsName();
-}
-
 // Exponential moving average of the GPU-synchronized draw time.
 class FrameTimer {
 public:
@@ -65,8 +44,8 @@ private:
 class Demo {
 public:
     Demo(const Scene& scene, const DemoOptions& options)
-        : options_(options), state_(scene),
-          window_(options.windowWidth, options.windowHeight, title(state_, 0), options.glDebug, options.api),
+        : options_(options), state_(scene), window_(options.windowWidth, options.windowHeight,
+                                                    windowTitle(state_, 0), options.glDebug, options.api),
           panel_(window_) {
         state_.showPanel = !options.hidePanel;
         if (options.glDebug && !gl::enableDebugOutput(&debugSink_))
@@ -86,7 +65,7 @@ public:
         while (!window_.shouldClose()) {
             const auto start = Clock::now();
             drawFrame();
-            const std::string now = title(state_, timer_.ms());
+            const std::string now = windowTitle(state_, timer_.ms());
             if (now != shownTitle) window_.setTitle(shownTitle = now);
             window_.swapBuffers();
             window_.waitEvents(0.001);
@@ -114,7 +93,7 @@ private:
         gl::finish();
         timer_.add(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
         insidePanel_ = true;
-        panel_.draw(state_, status(state_), column);
+        panel_.draw(state_, statusText(state_), column);
         insidePanel_ = false;
     }
 

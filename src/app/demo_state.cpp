@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "shadelab/subdivision.h"
@@ -327,6 +328,31 @@ std::size_t DemoState::triangleCount() const {
     std::size_t total = 0;
     for (const SceneObject& o : scene.objects) total += sphereTriangleCount(subdivisionLevel(scene, o));
     return total;
+}
+
+namespace {
+
+std::string modes(const Scene& scene) {
+    return std::string(toString(scene.shading)) + " shading, " + std::string(toString(scene.lighting)) +
+           " lighting";
+}
+
+} // namespace
+
+std::string windowTitle(const DemoState& state, double frameMs) {
+    char timing[32];
+    std::snprintf(timing, sizeof timing, "%.2f ms", frameMs);
+    return "shadelab — " + modes(state.current()) + " | level " + std::to_string(state.level()) +
+           (state.autoLevel() ? " (auto)" : "") + " | " + std::to_string(state.triangleCount()) +
+           " triangles | " + timing + " | H: keys";
+}
+
+std::string statusText(const DemoState& state) {
+    const Scene scene = state.current();
+    return modes(scene) + "\nlevel " + std::to_string(state.level()) + ", " +
+           (state.orthographic() ? "orthographic" : "perspective") + ", " +
+           (scene.vertexNormals == VertexNormals::Averaged ? "averaged" : "exact") +
+           " normals\nmaterial: " + state.materialName() + ", lights: " + state.lightsName();
 }
 
 } // namespace shadelab::app

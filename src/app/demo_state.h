@@ -122,4 +122,10 @@ private:
     int lights_ = 0;   // 0: the scene's own, i: lightPresets()[i − 1]
 };
 
+// "shadelab — phong shading, blinn-phong lighting | level 5 | 8192 triangles | 1.23 ms | H: keys": the
+// window's title (the page's too), which the window tests wait for.
+std::string windowTitle(const DemoState& state, double frameMs);
+// The control panel's first lines: modes, level, projection, normals, material and lights.
+std::string statusText(const DemoState& state);
+
 } // namespace shadelab::app

@@ -1,0 +1,30 @@
+// The flags that override a scene (--shading, --lighting, --subdivisions, --tolerance-px, --depth, --size):
+// one parser for the command line, the demo and the browser page, so a flag means the same everywhere.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "shadelab/scene.h"
+
+namespace shadelab::app {
+
+// Flags that override the scene file. Unset flags leave the scene's values.
+struct SceneOverrides {
+    std::optional<std::string> shading, lighting, size;
+    std::optional<std::string> subdivisions; // a level or "auto"
+    std::optional<std::string> tolerancePx;  // a decimal number, parsed by composeScene
+    std::optional<std::string> depth;        // standard | reversed | reversed-infinite
+};
+
+// The scene file (or the DESIGN §4 defaults when `path` is empty) with the overrides applied and the
+// result validated. Errors name the argument (e.g. "--size") or the JSON path.
+Scene composeScene(const std::string& path, const SceneOverrides& overrides);
+// The overrides applied to `scene` and the result validated; a validation error is prefixed with `path`
+// (the file the values came from) unless it is empty or "-".
+Scene applyOverrides(Scene scene, const SceneOverrides& overrides, const std::string& path);
+
+// Applies "--size WxH" to the scene; InputError naming --size for anything else.
+void composeSize(Scene& scene, const std::string& text);
+
+} // namespace shadelab::app
