@@ -8,8 +8,10 @@
 #include <array>
 #include <cctype>
 #include <cerrno>
-#include <charconv>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <limits>
 #include <set>
@@ -57,10 +59,23 @@ constexpr IntRange kToonBandRange{kMinToonBands, kMaxToonBands};
 
 // ---- message pieces ----
 
+// What std::to_chars(value) gives: the fewest significant digits that read back as `value`, in fixed or
+// scientific notation, whichever is shorter (fixed on a tie). Written out because the browser build's
+// libc++ has no floating-point to_chars, and the page must word a message exactly as the command line does.
 std::string formatNumber(double value) {
-    std::array<char, 32> buffer{};
-    auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-    return ec == std::errc{} ? std::string(buffer.data(), end) : std::string("?");
+    if (!std::isfinite(value)) return std::isnan(value) ? "nan" : value > 0 ? "inf" : "-inf";
+    std::array<char, 40> scientific{};
+    int digits = 1;
+    for (; digits < 17; ++digits) {
+        std::snprintf(scientific.data(), scientific.size(), "%.*e", digits - 1, value);
+        if (std::strtod(scientific.data(), nullptr) == value) break;
+    }
+    std::snprintf(scientific.data(), scientific.size(), "%.*e", digits - 1, value);
+    const int exponent = std::atoi(std::strchr(scientific.data(), 'e') + 1);
+    std::array<char, 400> fixed{}; // up to 309 integer digits
+    std::snprintf(fixed.data(), fixed.size(), "%.*f", std::max(0, digits - 1 - exponent), value);
+    const std::string a(fixed.data()), b(scientific.data());
+    return a.size() <= b.size() ? a : b;
 }
 
 std::string formatVec(const glm::dvec3& v) {

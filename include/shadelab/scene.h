@@ -3,7 +3,7 @@
 #pragma once
 
 #include <cstddef>
-
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -52,7 +52,7 @@ inline constexpr int kMaxImageSize = 16384;
 // spheres (16.4 M triangles) render in 1.1 s and their reference (262 M ray tests) takes 2.2 s.
 inline constexpr std::size_t kMaxObjects = 10000;
 inline constexpr std::size_t kMaxTrianglesPerFrame = std::size_t(1) << 26;
-inline constexpr std::size_t kMaxReferenceRayTests = std::size_t(1) << 32;
+inline constexpr std::uint64_t kMaxReferenceRayTests = std::uint64_t(1) << 32; // 64-bit also in wasm32
 // Projection planes (near, far, an orthographic window and its widths) must lie in this magnitude range:
 // the projection matrix is 32-bit float on the GPU.
 inline constexpr double kMinProjectionExtent = 1e-30, kMaxProjectionExtent = 1e30;

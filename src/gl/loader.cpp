@@ -38,11 +38,13 @@ Capabilities capabilitiesOfLoaded(Api api) {
         c.debugOutput = GLAD_GL_KHR_debug || GLAD_GL_VERSION_4_3;
         return c;
     }
-    c.clipControl = GLAD_GL_EXT_clip_control;
+    // An extension counts only with its entry point: a browser may list EXT_clip_control that the
+    // Emscripten runtime cannot hand out (emscripten 3.1.6 resolves no glClipControlEXT).
+    c.clipControl = GLAD_GL_EXT_clip_control && glClipControlEXT != nullptr;
     c.floatColorTargets = GLAD_GL_EXT_color_buffer_float;
     c.geometryShaders = false;
     c.sampleCounts = false;
-    c.debugOutput = GLAD_GL_KHR_debug;
+    c.debugOutput = GLAD_GL_KHR_debug && glDebugMessageCallbackKHR != nullptr;
     return c;
 }
 

@@ -65,7 +65,7 @@ DepthFormat depthFormatFor(DepthMode mode) {
 }
 
 RenderTarget::RenderTarget(int width, int height, ColorFormat format, DepthFormat depth)
-    : width_(width), height_(height), format_(format) {
+    : width_(width), height_(height) {
     checkSize(width, height);
     if (format == ColorFormat::Rgba32F && !capabilities().floatColorTargets)
         throw RuntimeError("a float (RGBA32F) render target needs EXT_color_buffer_float, which this " +

@@ -29,7 +29,6 @@ private:
     template <typename Pixels> Pixels read(unsigned type, const char* stage) const;
 
     int width_, height_;
-    ColorFormat format_;
     Framebuffer fbo_;
     Renderbuffer color_, depth_;
 };

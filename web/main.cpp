@@ -1,0 +1,255 @@
+// The browser's shadelab: the native demo's state, keys and renderer behind a WebGL 2 canvas. Emscripten's
+// GLFW makes the context (an OpenGL ES 3.0 context to the renderer, DESIGN §7); the page (page.js) owns the
+// canvas size, the keyboard, the mouse and the HTML control panel, and talks to this file only through the
+// shadelab_* functions below. Every function that takes input returns "" or the error message, exactly as
+// the command line words it, so the page never shows a blank canvas for a bad scene.
+#include <cstdint>
+#include <cstdio>
+#include <exception>
+#include <memory>
+#include <string>
+
+#define GLFW_INCLUDE_NONE // GL comes from the one loader (gl/loader.h), never from the system headers
+#include <GLFW/glfw3.h>
+#include <emscripten/emscripten.h>
+#include <emscripten/html5.h>
+#include <nlohmann/json.hpp>
+
+#include "app/demo_state.h"
+#include "app/scene_flags.h"
+#include "shadelab/errors.h"
+#include "shadelab/gl/loader.h"
+#include "shadelab/gl/render_target.h"
+#include "shadelab/gl/renderer.h"
+#include "shadelab/image.h"
+#include "shadelab/scene.h"
+
+namespace {
+
+using namespace shadelab;
+using app::DemoState;
+
+struct Page {
+    GLFWwindow* window = nullptr;
+    std::unique_ptr<gl::Renderer> renderer;
+    std::unique_ptr<DemoState> state;
+    std::string rendererString;
+    std::string sceneName = "defaults";
+    bool dirty = true;     // draw on the next animation frame
+    double frameMs = 0;    // the last draw, glFinish-synchronized
+    std::string drawError; // why the last draw failed, shown on the page
+    Image capture;         // shadelab_capture's pixels, alive until the next capture
+    std::string text;      // the returned string of the last shadelab_* call
+};
+
+Page& page() {
+    static Page p;
+    return p;
+}
+
+const char* give(std::string text) {
+    page().text = std::move(text);
+    return page().text.c_str();
+}
+
+// Runs `f`; "" on success, else the message (InputError and RuntimeError alike: the page shows it).
+template <typename F> const char* guarded(F&& f) {
+    try {
+        f();
+        return give("");
+    } catch (const std::exception& e) {
+        return give(e.what());
+    }
+}
+
+void canvasSize(int& width, int& height) {
+    width = height = 0;
+    emscripten_get_canvas_element_size("#canvas", &width, &height);
+}
+
+void frame() {
+    Page& p = page();
+    int width = 0, height = 0;
+    canvasSize(width, height);
+    if (!p.dirty || width <= 0 || height <= 0) return; // an unchanged picture stays on the canvas
+    p.dirty = false;
+    try {
+        const double start = emscripten_get_now();
+        gl::bindDefaultFramebuffer();
+        p.renderer->render(p.state->current(width, height), width, height);
+        gl::finish();
+        p.frameMs = emscripten_get_now() - start;
+        p.drawError.clear();
+    } catch (const std::exception& e) {
+        p.drawError = e.what();
+    }
+}
+
+} // namespace
+
+extern "C" {
+
+// Replaces the shown scene with `json` (named `name` in messages, as the command line names the file).
+EMSCRIPTEN_KEEPALIVE const char* shadelab_load_scene(const char* json, const char* name) {
+    return guarded([&] {
+        Scene scene = parseScene(json, name);
+        validateScene(scene);
+        page().state = std::make_unique<DemoState>(scene);
+        page().sceneName = name;
+        page().dirty = true;
+    });
+}
+
+// The command-line flags applied to the shown scene through the same parser (app/scene_flags.h):
+// `flags` is a JSON object such as {"shading": "flat", "size": "256x256"}.
+EMSCRIPTEN_KEEPALIVE const char* shadelab_apply_flags(const char* flags) {
+    return guarded([&] {
+        const nlohmann::json parsed = nlohmann::json::parse(flags);
+        app::SceneOverrides o;
+        auto take = [&](const char* key, std::optional<std::string>& into) {
+            if (parsed.contains(key)) into = parsed.at(key).get<std::string>();
+        };
+        take("shading", o.shading);
+        take("lighting", o.lighting);
+        take("size", o.size);
+        take("subdivisions", o.subdivisions);
+        take("tolerance-px", o.tolerancePx);
+        take("depth", o.depth);
+        const Scene scene = app::applyOverrides(page().state->scene(), o, page().sceneName);
+        page().state = std::make_unique<DemoState>(scene);
+        page().dirty = true;
+    });
+}
+
+// Panel edits: the edited scene JSON replaces the scene's values; the view (orbit, presets) stays.
+EMSCRIPTEN_KEEPALIVE const char* shadelab_edit_scene(const char* json) {
+    return guarded([&] {
+        Scene scene = parseScene(json, "panel");
+        validateScene(scene);
+        page().state->scene() = scene;
+        page().dirty = true;
+    });
+}
+
+// A key by its GLFW code (printable keys: their upper-case ASCII). 0: no binding; 1: applied; 2: the page
+// saves a screenshot (S); 3: quit (Esc), which a page cannot do.
+EMSCRIPTEN_KEEPALIVE int shadelab_key(int key) {
+    const auto command = app::commandForKey(key);
+    if (!command) return 0;
+    if (page().state->apply(*command)) {
+        page().dirty = true;
+        return 1;
+    }
+    return *command == app::Command::Screenshot ? 2 : 3;
+}
+
+EMSCRIPTEN_KEEPALIVE void shadelab_drag(double dx, double dy) {
+    page().state->drag(dx, dy);
+    page().dirty = true;
+}
+
+EMSCRIPTEN_KEEPALIVE void shadelab_zoom(double steps) {
+    page().state->zoom(steps);
+    page().dirty = true;
+}
+
+EMSCRIPTEN_KEEPALIVE void shadelab_set_match_highlight(int on) {
+    page().state->matchHighlight = on != 0;
+}
+
+// The canvas was resized (or must be redrawn for another reason).
+EMSCRIPTEN_KEEPALIVE void shadelab_redraw() {
+    page().dirty = true;
+}
+
+// Everything the page shows besides the canvas, as JSON: title, status, the scene (for the panel and for S),
+// the help text, flags, the renderer string and the last draw's error.
+EMSCRIPTEN_KEEPALIVE const char* shadelab_ui() {
+    const Page& p = page();
+    const DemoState& s = *p.state;
+    int width = 0, height = 0;
+    canvasSize(width, height);
+    const nlohmann::json ui = {
+        {"title", app::windowTitle(s, p.frameMs)},
+        {"status", app::statusText(s)},
+        {"help", app::keyHelpText()},
+        {"showHelp", s.showHelp},
+        {"showPanel", s.showPanel},
+        {"matchHighlight", s.matchHighlight},
+        {"level", s.level()},
+        {"autoLevel", s.autoLevel()},
+        {"orthographic", s.orthographic()},
+        {"material", s.materialName()},
+        {"lights", s.lightsName()},
+        {"scene", nlohmann::json::parse(sceneToJson(p.state->scene()))},
+        {"current", nlohmann::json::parse(sceneToJson(s.current(width, height)))},
+        {"sceneName", p.sceneName},
+        {"renderer", p.rendererString},
+        {"error", p.drawError},
+    };
+    return give(ui.dump());
+}
+
+// Draws what the canvas shows, at width × height (the scene's image size for 0 × 0), into a framebuffer of
+// the program's own and returns its RGBA rows, top first (the same read-back as `shadelab render`). Null on
+// failure, with the message in shadelab_capture_error.
+EMSCRIPTEN_KEEPALIVE const std::uint8_t* shadelab_capture(int width, int height) {
+    Page& p = page();
+    try {
+        Scene scene = p.state->current(width, height);
+        const gl::RenderTarget target(scene.width, scene.height, gl::ColorFormat::Rgba8,
+                                      gl::depthFormatFor(scene.depth));
+        target.bind();
+        p.renderer->render(scene, scene.width, scene.height);
+        p.capture = target.readRgba8();
+        gl::bindDefaultFramebuffer();
+        p.dirty = true;
+        p.drawError.clear();
+        return p.capture.rgba.data();
+    } catch (const std::exception& e) {
+        gl::bindDefaultFramebuffer();
+        p.drawError = e.what();
+        return nullptr;
+    }
+}
+
+EMSCRIPTEN_KEEPALIVE int shadelab_capture_width() {
+    return page().capture.width;
+}
+EMSCRIPTEN_KEEPALIVE int shadelab_capture_height() {
+    return page().capture.height;
+}
+
+} // extern "C"
+
+int main() {
+    Page& p = page();
+    if (!glfwInit()) {
+        std::fprintf(stderr, "shadelab: glfwInit failed\n");
+        return 1;
+    }
+    glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 0);
+    int width = 0, height = 0;
+    canvasSize(width, height);
+    p.window =
+        glfwCreateWindow(width > 0 ? width : 640, height > 0 ? height : 480, "shadelab", nullptr, nullptr);
+    if (!p.window) { // page.js checked for WebGL 2 before starting this; say so anyway
+        EM_ASM(shadelabFatal("WebGL 2 is not available in this browser: shadelab needs it to draw."));
+        return 1;
+    }
+    glfwMakeContextCurrent(p.window);
+    try {
+        gl::loadGl(glfwGetProcAddress, "webgl", Api::Gles);
+        p.rendererString = gl::rendererString();
+        p.renderer = std::make_unique<gl::Renderer>();
+        p.state = std::make_unique<DemoState>(Scene{});
+    } catch (const std::exception& e) {
+        EM_ASM({ shadelabFatal(UTF8ToString($0)); }, e.what());
+        return 1;
+    }
+    EM_ASM(shadelabStarted());
+    emscripten_set_main_loop(frame, 0, false);
+    return 0;
+}

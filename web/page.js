@@ -1,0 +1,366 @@
+// The page around shadelab.wasm: the canvas size, the keys and the mouse, the control panel as the
+// browser's own controls, scene loading (bundled, file picker, drag and drop, ?scene=URL), S as a download,
+// and the messages. All state lives in the C++ DemoState (web/main.cpp); the panel shows what shadelab_ui()
+// returns and changes it through the same commands as the keys, or by an edited scene JSON.
+'use strict';
+
+const $ = (id) => document.getElementById(id);
+const params = new URLSearchParams(location.search);
+let api = null; // the shadelab_* functions, once the module has started
+let saved = 0;
+
+function showMessage(text) {
+  const box = $('message');
+  box.textContent = text;
+  box.hidden = !text;
+}
+
+// Called by main.cpp (and below) when the page cannot draw at all.
+function shadelabFatal(text) {
+  showMessage(text);
+  window.shadelab.failed = text;
+}
+
+// ---- WebGL 2 first: without it the module is not even loaded ----
+function hasWebGl2() {
+  try {
+    return !!document.createElement('canvas').getContext('webgl2');
+  } catch (e) {
+    return false;
+  }
+}
+
+window.shadelab = {ready: false, failed: '', consoleErrors: []};
+
+var Module = {
+  canvas: $('canvas'),
+  print: (text) => console.log(text),
+  printErr: (text) => console.warn(text),
+  onAbort: (what) => shadelabFatal('shadelab stopped: ' + what),
+};
+
+if (!hasWebGl2()) {
+  shadelabFatal('This browser offers no WebGL 2, which shadelab needs to draw. Try a current Chrome, ' +
+                'Firefox or Safari, and check that hardware acceleration (or WebGL) is not switched off.');
+} else {
+  const script = document.createElement('script');
+  script.src = 'shadelab.js';
+  script.onerror = () => shadelabFatal('shadelab.js could not be loaded: serve this folder over HTTP ' +
+                                       '(scripts/web.sh serve); wasm cannot be fetched from file://');
+  document.body.appendChild(script);
+}
+
+// ---- calls into C++ ----
+function bind() {
+  const c = (name, ret, args) => Module.cwrap(name, ret, args);
+  return {
+    loadScene: c('shadelab_load_scene', 'string', ['string', 'string']),
+    applyFlags: c('shadelab_apply_flags', 'string', ['string']),
+    editScene: c('shadelab_edit_scene', 'string', ['string']),
+    key: c('shadelab_key', 'number', ['number']),
+    drag: c('shadelab_drag', null, ['number', 'number']),
+    zoom: c('shadelab_zoom', null, ['number']),
+    setMatch: c('shadelab_set_match_highlight', null, ['number']),
+    redraw: c('shadelab_redraw', null, []),
+    ui: () => JSON.parse(Module.ccall('shadelab_ui', 'string', [], [])),
+    capture: c('shadelab_capture', 'number', ['number', 'number']),
+    captureWidth: c('shadelab_capture_width', 'number', []),
+    captureHeight: c('shadelab_capture_height', 'number', []),
+  };
+}
+
+// Called by main.cpp once the WebGL 2 context and the renderer exist.
+async function shadelabStarted() {
+  api = bind();
+  fitCanvas();
+  new ResizeObserver(fitCanvas).observe($('view'));
+  wireControls();
+  const names = await fetch('scenes/index.json').then((r) => r.json()).catch(() => []);
+  for (const name of names) $('bundled').add(new Option(name, name));
+  const url = params.get('scene');
+  let message = '';
+  if (url) {
+    message = await loadUrl(url);
+  } else {
+    $('bundled').value = 'showcase.json';
+    message = await loadUrl('scenes/showcase.json', 'showcase.json');
+  }
+  if (!message) message = applyUrlFlags();
+  showMessage(message);
+  refresh();
+  window.shadelab.ready = true;
+  setInterval(refresh, 500); // the title's frame time
+}
+
+// The command-line flags, given as ?shading=flat&size=256x256…, through the CLI's own parser.
+function applyUrlFlags() {
+  const flags = {};
+  for (const name of ['shading', 'lighting', 'subdivisions', 'size', 'depth', 'tolerance-px'])
+    if (params.has(name)) flags[name] = params.get(name);
+  return Object.keys(flags).length ? api.applyFlags(JSON.stringify(flags)) : '';
+}
+
+async function loadUrl(url, name) {
+  let text;
+  try {
+    const response = await fetch(url);
+    if (!response.ok) return url + ': cannot fetch the scene (HTTP ' + response.status + ')';
+    text = await response.text();
+  } catch (e) {
+    return url + ': cannot fetch the scene (' + e.message + ')';
+  }
+  return loadText(text, name || decodeURIComponent(url.split('/').pop() || url));
+}
+
+// "" or the message, which stays on the page; the previous scene stays drawn behind it.
+function loadText(text, name) {
+  const message = api.loadScene(text, name);
+  showMessage(message);
+  refresh();
+  return message;
+}
+
+// ---- the canvas: its drawing buffer follows its CSS size and the device pixel ratio ----
+function fitCanvas() {
+  const canvas = $('canvas');
+  const ratio = window.devicePixelRatio || 1;
+  const width = Math.max(1, Math.round(canvas.clientWidth * ratio));
+  const height = Math.max(1, Math.round(canvas.clientHeight * ratio));
+  if (canvas.width !== width || canvas.height !== height) {
+    canvas.width = width;
+    canvas.height = height;
+  }
+  if (api) api.redraw();
+}
+
+// ---- keys: the window's bindings (GLFW codes: printable keys are their upper-case ASCII) ----
+function glfwKey(event) {
+  if (event.code === 'NumpadAdd') return 334;
+  if (event.code === 'NumpadSubtract') return 333;
+  if (event.key === 'Escape') return 256;
+  if (event.key === 'F1') return 290;
+  if (event.key === '+' || event.key === '=') return 61;
+  if (event.key === '-' || event.key === '_') return 45;
+  if (event.key.length === 1) {
+    const code = event.key.toUpperCase().charCodeAt(0);
+    if (code > 32 && code < 127) return code;
+  }
+  return 0;
+}
+
+function press(code) {
+  const result = api.key(code);
+  if (result === 2) save();
+  if (result === 3) showMessage('Esc closes the window version; in a browser, close the tab.');
+  refresh();
+  return result;
+}
+
+document.addEventListener('keydown', (event) => {
+  if (!api || event.ctrlKey || event.metaKey || event.altKey) return;
+  if (event.target.closest && event.target.closest('input, select, textarea')) return;
+  const code = glfwKey(event);
+  if (!code) return;
+  if (press(code)) event.preventDefault();
+});
+
+// ---- mouse: drag orbits, the wheel zooms ----
+function wireMouse() {
+  const canvas = $('canvas');
+  let last = null;
+  canvas.addEventListener('pointerdown', (e) => {
+    if (e.button !== 0) return;
+    last = {x: e.clientX, y: e.clientY};
+    canvas.setPointerCapture(e.pointerId);
+    canvas.focus();
+  });
+  canvas.addEventListener('pointermove', (e) => {
+    if (!last) return;
+    api.drag(e.clientX - last.x, e.clientY - last.y);
+    last = {x: e.clientX, y: e.clientY};
+    refresh();
+  });
+  const end = () => { last = null; };
+  canvas.addEventListener('pointerup', end);
+  canvas.addEventListener('pointercancel', end);
+  canvas.addEventListener('wheel', (e) => {
+    e.preventDefault();
+    api.zoom(e.deltaY < 0 ? 1 : -1);
+    refresh();
+  }, {passive: false});
+}
+
+// ---- colours: the scene's linear values shown as #rrggbb (clamped to [0, 1]; no sRGB conversion) ----
+const toHex = (c) => '#' + c.map((v) => Math.round(Math.min(Math.max(v, 0), 1) * 255)
+                                           .toString(16).padStart(2, '0')).join('');
+const fromHex = (hex) => [1, 3, 5].map((i) => parseInt(hex.substr(i, 2), 16) / 255);
+
+let ui = null;
+
+// The panel shows the state; a control changes it by a key's command or by an edited scene.
+function refresh() {
+  if (!api) return;
+  ui = api.ui();
+  document.title = ui.title;
+  $('status').textContent = ui.status;
+  $('renderer').textContent = 'WebGL 2 (OpenGL ES 3.0 to the renderer): ' + ui.renderer;
+  $('panel').hidden = !ui.showPanel;
+  $('help').hidden = !ui.showHelp;
+  $('help-text').textContent = ui.help;
+  if (ui.error) showMessage(ui.error);
+  const scene = ui.current;
+  setIfIdle('shading', scene.shading);
+  setIfIdle('lighting', scene.lighting);
+  $('match').checked = ui.matchHighlight;
+  setIfIdle('level', ui.level);
+  $('level-out').textContent = ui.level + (ui.autoLevel ? ' (auto)' : '');
+  $('auto').checked = ui.autoLevel;
+  setIfIdle('projection', ui.orthographic ? 'orthographic' : 'perspective');
+  setIfIdle('normals', scene.vertex_normals || 'averaged');
+  const object = ui.scene.objects[0];
+  $('material').hidden = !object;
+  if (object) {
+    setIfIdle('ka', toHex(object.material.ambient));
+    setIfIdle('kd', toHex(object.material.diffuse));
+    setIfIdle('ks', toHex(object.material.specular));
+    setIfIdle('shininess', Math.log10(object.material.shininess));
+    $('shininess-out').textContent = object.material.shininess.toFixed(1);
+  }
+  setIfIdle('bands', ui.scene.toon_bands);
+  $('bands-out').textContent = ui.scene.toon_bands;
+  showLights(ui.scene.lights);
+}
+
+function setIfIdle(id, value) {
+  const element = $(id);
+  if (document.activeElement !== element) element.value = value;
+}
+
+function showLights(lights) {
+  const box = $('lights');
+  const signature = JSON.stringify(lights);
+  if (box.dataset.signature === signature) return;
+  box.dataset.signature = signature;
+  box.replaceChildren();
+  lights.forEach((light, i) => {
+    const row = document.createElement('div');
+    row.className = 'light';
+    row.append(i + 1 + ': ' + light.type + ' ');
+    for (const term of ['diffuse', 'specular']) {
+      if (!light[term]) continue;
+      const input = document.createElement('input');
+      input.type = 'color';
+      input.title = term;
+      input.value = toHex(light[term]);
+      input.addEventListener('input', () => edit((s) => { s.lights[i][term] = fromHex(input.value); }));
+      row.append(input, ' ' + term + ' ');
+    }
+    box.append(row);
+  });
+}
+
+// Edits the scene (not the view) and hands it back; a refused edit shows its message.
+function edit(change) {
+  const scene = api.ui().scene;
+  change(scene);
+  showMessage(api.editScene(JSON.stringify(scene)));
+  refresh();
+}
+
+function pressUntil(code, done, limit = 12) {
+  for (let i = 0; i < limit && !done(api.ui()); ++i) press(code);
+  refresh();
+}
+
+function wireControls() {
+  wireMouse();
+  const keyOf = {flat: 49, gouraud: 50, phong: 51, toon: 52};
+  $('shading').addEventListener('change', (e) => press(keyOf[e.target.value]));
+  $('lighting').addEventListener('change', (e) => pressUntil(66, (u) => u.current.lighting === e.target.value, 1));
+  $('match').addEventListener('change', (e) => { api.setMatch(e.target.checked ? 1 : 0); refresh(); });
+  $('level').addEventListener('input', (e) => {
+    const target = Number(e.target.value);
+    pressUntil(ui.level < target ? 61 : 45, (u) => u.level === target);
+  });
+  $('auto').addEventListener('change', (e) => pressUntil(65, (u) => u.autoLevel === e.target.checked, 1));
+  $('projection').addEventListener('change',
+      (e) => pressUntil(79, (u) => u.orthographic === (e.target.value === 'orthographic'), 1));
+  $('normals').addEventListener('change',
+      (e) => pressUntil(78, (u) => (u.current.vertex_normals || 'averaged') === e.target.value, 1));
+  for (const term of ['ka', 'kd', 'ks']) {
+    const field = {ka: 'ambient', kd: 'diffuse', ks: 'specular'}[term];
+    $(term).addEventListener('input', (e) => edit((s) => {
+      for (const object of s.objects) object.material[field] = fromHex(e.target.value);
+    }));
+  }
+  $('shininess').addEventListener('input', (e) => edit((s) => {
+    for (const object of s.objects) object.material.shininess = Math.round(10 ** Number(e.target.value) * 10) / 10;
+  }));
+  $('bands').addEventListener('input', (e) => edit((s) => { s.toon_bands = Number(e.target.value); }));
+  $('next-material').addEventListener('click', () => press(77));
+  $('next-lights').addEventListener('click', () => press(76));
+  $('reset').addEventListener('click', () => press(82));
+  $('save').addEventListener('click', save);
+  $('help-button').addEventListener('click', () => press(72));
+  $('bundled').addEventListener('change', (e) => loadUrl('scenes/' + e.target.value, e.target.value));
+  $('file').addEventListener('change', async (e) => {
+    const file = e.target.files[0];
+    if (file) loadText(await file.text(), file.name);
+  });
+  document.addEventListener('dragover', (e) => e.preventDefault());
+  document.addEventListener('drop', async (e) => {
+    e.preventDefault();
+    const file = e.dataTransfer.files[0];
+    if (file) loadText(await file.text(), file.name);
+  });
+}
+
+// ---- pixels: what the canvas shows, drawn again into the program's own framebuffer ----
+// width × height (0 × 0: the scene's image size) → {width, height, rgba} with rows top first.
+function capture(width, height) {
+  const pointer = api.capture(width, height);
+  if (!pointer) throw new Error(api.ui().error || 'capture failed');
+  const w = api.captureWidth(), h = api.captureHeight();
+  return {width: w, height: h, rgba: Module.HEAPU8.slice(pointer, pointer + w * h * 4)};
+}
+
+function download(blob, name) {
+  const link = document.createElement('a');
+  link.href = URL.createObjectURL(blob);
+  link.download = name;
+  document.body.append(link);
+  link.click();
+  link.remove();
+  setTimeout(() => URL.revokeObjectURL(link.href), 1000);
+}
+
+// S: the picture as an opaque PNG (as `shadelab render` writes it) and the scene that draws it.
+function save() {
+  const canvas = $('canvas');
+  const shot = capture(canvas.width, canvas.height);
+  for (let i = 3; i < shot.rgba.length; i += 4) shot.rgba[i] = 255;
+  const out = document.createElement('canvas');
+  out.width = shot.width;
+  out.height = shot.height;
+  out.getContext('2d').putImageData(new ImageData(new Uint8ClampedArray(shot.rgba.buffer), shot.width, shot.height), 0, 0);
+  const stem = 'shadelab-' + String(++saved).padStart(3, '0');
+  const scene = api.ui().current;
+  download(new Blob([JSON.stringify(scene, null, 2) + '\n'], {type: 'application/json'}), stem + '.json');
+  out.toBlob((blob) => download(blob, stem + '.png'), 'image/png');
+}
+
+// For scripts/web.sh render and the browser tests (tests/web/): the same calls the panel makes.
+Object.assign(window.shadelab, {
+  loadText: (text, name) => loadText(text, name),
+  applyFlags: (flags) => { const m = api.applyFlags(JSON.stringify(flags)); showMessage(m); refresh(); return m; },
+  press: (code) => press(code),
+  ui: () => api.ui(),
+  message: () => ($('message').hidden ? '' : $('message').textContent),
+  captureBase64: (width, height) => {
+    const shot = capture(width, height);
+    let binary = '';
+    for (let i = 0; i < shot.rgba.length; i += 0x8000)
+      binary += String.fromCharCode.apply(null, shot.rgba.subarray(i, i + 0x8000));
+    return {width: shot.width, height: shot.height, rgba: btoa(binary)};
+  },
+});
