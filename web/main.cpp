@@ -39,6 +39,7 @@ struct Page {
     double frameMs = 0;    // the last draw, glFinish-synchronized
     std::string drawError; // why the last draw failed, shown on the page
     Image capture;         // shadelab_capture's pixels, alive until the next capture
+    ImageF captureFloat;   // shadelab_capture_float's
     std::string text;      // the returned string of the last shadelab_* call
 };
 
@@ -82,6 +83,28 @@ void frame() {
         p.drawError.clear();
     } catch (const std::exception& e) {
         p.drawError = e.what();
+    }
+}
+
+// Draws what the canvas shows, at width × height (the scene's image size for 0 × 0), into a framebuffer of
+// the program's own and reads it back, rows top first (the same read-back as `shadelab render`). Returns
+// false with the message in the ui's "error" on failure.
+template <typename Read> bool captureInto(int width, int height, gl::ColorFormat format, Read read) {
+    Page& p = page();
+    try {
+        const Scene scene = p.state->current(width, height);
+        const gl::RenderTarget target(scene.width, scene.height, format, gl::depthFormatFor(scene.depth));
+        target.bind();
+        p.renderer->render(scene, scene.width, scene.height);
+        read(target);
+        gl::bindDefaultFramebuffer();
+        p.dirty = true;
+        p.drawError.clear();
+        return true;
+    } catch (const std::exception& e) {
+        gl::bindDefaultFramebuffer();
+        p.drawError = e.what();
+        return false;
     }
 }
 
@@ -190,27 +213,23 @@ EMSCRIPTEN_KEEPALIVE const char* shadelab_ui() {
     return give(ui.dump());
 }
 
-// Draws what the canvas shows, at width × height (the scene's image size for 0 × 0), into a framebuffer of
-// the program's own and returns its RGBA rows, top first (the same read-back as `shadelab render`). Null on
-// failure, with the message in shadelab_capture_error.
+// 8-bit RGBA, alpha = coverage; null on failure.
 EMSCRIPTEN_KEEPALIVE const std::uint8_t* shadelab_capture(int width, int height) {
     Page& p = page();
-    try {
-        Scene scene = p.state->current(width, height);
-        const gl::RenderTarget target(scene.width, scene.height, gl::ColorFormat::Rgba8,
-                                      gl::depthFormatFor(scene.depth));
-        target.bind();
-        p.renderer->render(scene, scene.width, scene.height);
-        p.capture = target.readRgba8();
-        gl::bindDefaultFramebuffer();
-        p.dirty = true;
-        p.drawError.clear();
-        return p.capture.rgba.data();
-    } catch (const std::exception& e) {
-        gl::bindDefaultFramebuffer();
-        p.drawError = e.what();
-        return nullptr;
-    }
+    const bool ok = captureInto(width, height, gl::ColorFormat::Rgba8,
+                                [&](const gl::RenderTarget& target) { p.capture = target.readRgba8(); });
+    return ok ? p.capture.rgba.data() : nullptr;
+}
+
+// Float RGBA through an RGBA32F target (EXT_color_buffer_float), unrounded; null on failure.
+EMSCRIPTEN_KEEPALIVE const float* shadelab_capture_float(int width, int height) {
+    Page& p = page();
+    const bool ok = captureInto(width, height, gl::ColorFormat::Rgba32F, [&](const gl::RenderTarget& target) {
+        p.captureFloat = target.readFloat();
+        p.capture.width = p.captureFloat.width;
+        p.capture.height = p.captureFloat.height;
+    });
+    return ok ? p.captureFloat.rgba.data() : nullptr;
 }
 
 EMSCRIPTEN_KEEPALIVE int shadelab_capture_width() {

@@ -64,6 +64,7 @@ function bind() {
     redraw: c('shadelab_redraw', null, []),
     ui: () => JSON.parse(Module.ccall('shadelab_ui', 'string', [], [])),
     capture: c('shadelab_capture', 'number', ['number', 'number']),
+    captureFloat: c('shadelab_capture_float', 'number', ['number', 'number']),
     captureWidth: c('shadelab_capture_width', 'number', []),
     captureHeight: c('shadelab_capture_height', 'number', []),
   };
@@ -316,12 +317,15 @@ function wireControls() {
 }
 
 // ---- pixels: what the canvas shows, drawn again into the program's own framebuffer ----
-// width × height (0 × 0: the scene's image size) → {width, height, rgba} with rows top first.
-function capture(width, height) {
-  const pointer = api.capture(width, height);
+// width × height (0 × 0: the scene's image size) → {width, height, rgba} with rows top first: bytes, or
+// for kind 'float' the bytes of 32-bit floats (little-endian, as wasm memory holds them).
+function capture(width, height, kind) {
+  const float = kind === 'float';
+  const pointer = float ? api.captureFloat(width, height) : api.capture(width, height);
   if (!pointer) throw new Error(api.ui().error || 'capture failed');
   const w = api.captureWidth(), h = api.captureHeight();
-  return {width: w, height: h, rgba: Module.HEAPU8.slice(pointer, pointer + w * h * 4)};
+  const bytes = w * h * 4 * (float ? 4 : 1);
+  return {width: w, height: h, rgba: Module.HEAPU8.slice(pointer, pointer + bytes)};
 }
 
 function download(blob, name) {
@@ -356,8 +360,8 @@ Object.assign(window.shadelab, {
   press: (code) => press(code),
   ui: () => api.ui(),
   message: () => ($('message').hidden ? '' : $('message').textContent),
-  captureBase64: (width, height) => {
-    const shot = capture(width, height);
+  captureBase64: (width, height, kind) => {
+    const shot = capture(width, height, kind);
     let binary = '';
     for (let i = 0; i < shot.rgba.length; i += 0x8000)
       binary += String.fromCharCode.apply(null, shot.rgba.subarray(i, i + 0x8000));

@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# The browser build of shadelab (WebGL 2, Debian's emscripten):
+#   scripts/web.sh build                 installs what is missing, builds into build-web/
+#   scripts/web.sh serve [PORT]          serves build-web/ on 127.0.0.1 (default port 8000), prints the URL
+#   scripts/web.sh render [SCENE.json] [--shading S] [--lighting L] [--subdivisions N] [--size WxH]
+#                         [--depth D] [--tolerance-px T] --out FILE.png
+#                                        draws the scene in headless Chromium through the WebGL 2 build and
+#                                        writes the canvas's pixels: the browser's `shadelab render`
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+
+install_missing() {
+  local packages=(emscripten chromium chromium-driver python3-selenium python3-glad libglm-dev
+    nlohmann-json3-dev cmake make)
+  local missing=()
+  for p in "${packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  ((${#missing[@]})) || return 0
+  echo "shadelab: installing ${missing[*]}"
+  local sudo=()
+  [ "$(id -u)" -eq 0 ] || sudo=(sudo)
+  "${sudo[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+}
+
+case "${1:-}" in
+build)
+  install_missing
+  # Emscripten's JS optimizer loads Debian's node modules; a node from elsewhere on PATH needs the path.
+  export NODE_PATH=/usr/share/nodejs
+  # Debian's emscripten ships its system libraries prebuilt; a user who cannot write that cache gets a
+  # copy of their own instead of a failed build.
+  if [ ! -w /usr/share/emscripten/cache ] && [ -z "${EM_CACHE:-}" ]; then
+    export EM_CACHE="${XDG_CACHE_HOME:-$HOME/.cache}/shadelab-emscripten"
+    [ -d "$EM_CACHE" ] || cp -r /usr/share/emscripten/cache "$EM_CACHE"
+  fi
+  emcmake cmake -S "$root/web" -B "$root/build-web" -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build "$root/build-web" -j"$(nproc)"
+  echo "shadelab: built $root/build-web (scripts/web.sh serve to open it)"
+  ;;
+serve)
+  port="${2:-8000}"
+  [[ "$port" =~ ^[0-9]{1,5}$ ]] || { echo "shadelab: serve: PORT must be a number, got '$port'" >&2; exit 2; }
+  [ -f "$root/build-web/shadelab.wasm" ] || { echo "shadelab: no browser build: run scripts/web.sh build" >&2; exit 1; }
+  echo "shadelab: open http://127.0.0.1:$port/ (Ctrl-C stops the server)"
+  exec /usr/bin/python3 -m http.server "$port" --bind 127.0.0.1 --directory "$root/build-web"
+  ;;
+render)
+  shift
+  # Debian's python3 (with python3-selenium), not whichever python3 comes first on PATH.
+  exec /usr/bin/python3 "$root/web/driver.py" render "$@"
+  ;;
+*)
+  echo "usage: scripts/web.sh build | serve [PORT] | render [SCENE.json] [flags] --out FILE.png" >&2
+  exit 2
+  ;;
+esac

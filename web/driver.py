@@ -1,0 +1,259 @@
+#!/usr/bin/env python3
+"""Drives the browser build in Debian's headless Chromium (chromium-driver + python3-selenium).
+
+  driver.py render [SCENE.json] [--shading S] [--lighting L] [--subdivisions N] [--size WxH]
+                   [--depth D] [--tolerance-px T] --out FILE.png
+      draws the scene through the WebGL 2 build and writes the canvas's pixels (read back from the GL
+      framebuffer, not a screenshot of the page) as an opaque PNG, as `shadelab render` does;
+  driver.py session
+      reads one JSON request per line on standard input and answers one JSON line each (tests/web/).
+
+The page is served from build-web/ on 127.0.0.1 (an ephemeral port) for the run: wasm cannot be fetched
+from file://. Exit codes as shadelab's: 0 success, 2 bad input (the page's message), 1 anything else.
+Input is data: scene text and names reach the page only as JavaScript arguments, never as code.
+"""
+import base64
+import functools
+import http.server
+import json
+import os
+import struct
+import sys
+import tempfile
+import threading
+import time
+import zlib
+
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'build-web')
+FLAGS = ['shading', 'lighting', 'subdivisions', 'size', 'depth', 'tolerance-px']
+CHROME_ARGS = ['--headless=new', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--no-sandbox',
+               '--disable-dev-shm-usage', '--window-size=1280,800', '--force-device-scale-factor=1']
+
+
+class Quiet(http.server.SimpleHTTPRequestHandler):
+    def log_message(self, *args):
+        pass
+
+    def end_headers(self):
+        self.send_header('Cache-Control', 'no-store')
+        super().end_headers()
+
+
+class Page:
+    """One Chromium with the page loaded and ready (window.shadelab.ready)."""
+
+    def __init__(self, root=ROOT, query='', extra_args=()):
+        from selenium import webdriver
+        from selenium.webdriver.chrome.service import Service
+        if not os.path.exists(os.path.join(root, 'shadelab.wasm')):
+            raise RuntimeError(root + ' holds no browser build: run scripts/web.sh build')
+        handler = functools.partial(Quiet, directory=root)
+        self.server = http.server.ThreadingHTTPServer(('127.0.0.1', 0), handler)
+        threading.Thread(target=self.server.serve_forever, daemon=True).start()
+        options = webdriver.ChromeOptions()
+        options.binary_location = '/usr/bin/chromium'
+        for arg in CHROME_ARGS + list(extra_args):
+            options.add_argument(arg)
+        options.set_capability('goog:loggingPrefs', {'browser': 'ALL'})
+        self.browser = webdriver.Chrome(service=Service('/usr/bin/chromedriver'), options=options)
+        self.console = []
+        self.url = 'http://127.0.0.1:%d/index.html%s' % (self.server.server_address[1], query)
+        self.browser.get(self.url)
+        deadline = time.time() + 60
+        while time.time() < deadline:
+            state = self.js('return [window.shadelab.ready, window.shadelab.failed]')
+            if state[0] or state[1]:
+                break
+            time.sleep(0.05)
+        self.failed = self.js('return window.shadelab.failed || ""')
+        if not self.failed and not self.js('return window.shadelab.ready'):
+            raise RuntimeError('the page did not start within 60 s')
+
+    def js(self, script, *args):
+        return self.browser.execute_script(script, *args)
+
+    def logs(self):
+        self.console += [{'level': e['level'], 'message': e['message']} for e in self.browser.get_log('browser')]
+        return self.console
+
+    def close(self):
+        try:
+            self.browser.quit()
+        finally:
+            self.server.shutdown()
+
+    def load(self, text, name):
+        return self.js('return window.shadelab.loadText(arguments[0], arguments[1])', text, name)
+
+    def flags(self, flags):
+        return self.js('return window.shadelab.applyFlags(arguments[0])', flags) if flags else ''
+
+    def capture(self, width=0, height=0, kind='rgba8'):
+        shot = self.js('return window.shadelab.captureBase64(arguments[0], arguments[1], arguments[2])',
+                       width, height, kind)
+        return shot['width'], shot['height'], base64.b64decode(shot['rgba'])
+
+
+def png_bytes(width, height, rgba):
+    """An opaque 8-bit RGB PNG (alpha dropped, as shadelab writes them)."""
+    rows = bytearray()
+    for y in range(height):
+        row = rgba[y * width * 4:(y + 1) * width * 4]
+        rows.append(0)
+        rows += bytes(b for i, b in enumerate(row) if i % 4 != 3)
+
+    def chunk(kind, data):
+        return struct.pack('>I', len(data)) + kind + data + struct.pack('>I', zlib.crc32(kind + data))
+
+    header = struct.pack('>IIBBBBB', width, height, 8, 2, 0, 0, 0)
+    return (b'\x89PNG\r\n\x1a\n' + chunk(b'IHDR', header) + chunk(b'IDAT', zlib.compress(bytes(rows), 6)) +
+            chunk(b'IEND', b''))
+
+
+def write_output(path, data):
+    """--out: '-' is standard output; a folder is refused; else a temporary file renamed over the path
+    (through a symlink to its target), so a failed run never leaves half a file."""
+    if path == '-':
+        sys.stdout.buffer.write(data)
+        sys.stdout.flush()
+        return
+    target = os.path.realpath(path)
+    if os.path.isdir(target):
+        raise ValueError('--out: %s is a folder; name a PNG file' % path)
+    folder = os.path.dirname(target) or '.'
+    fd, temp = tempfile.mkstemp(prefix='.shadelab-', dir=folder)
+    try:
+        with os.fdopen(fd, 'wb') as out:
+            out.write(data)
+            out.flush()
+            os.fsync(out.fileno())
+        os.replace(temp, target)
+    except BaseException:
+        if os.path.exists(temp):
+            os.unlink(temp)
+        raise
+
+
+def render(argv):
+    scene_path, flags, out = None, {}, None
+    i = 0
+    while i < len(argv):
+        arg = argv[i]
+        name = arg[2:].split('=', 1)[0] if arg.startswith('--') else None
+        if name in FLAGS + ['out']:
+            if '=' in arg:
+                value = arg.split('=', 1)[1]
+            elif i + 1 < len(argv):
+                i += 1
+                value = argv[i]
+            else:
+                return fail(2, '--%s needs a value' % name)
+            if name == 'out':
+                out = value
+            else:
+                flags[name] = value
+        elif arg.startswith('-') and arg != '-':
+            return fail(2, 'unknown option %r; render takes SCENE.json, --%s and --out'
+                        % (arg, ', --'.join(FLAGS)))
+        elif scene_path is None:
+            scene_path = arg
+        else:
+            return fail(2, 'one scene file only, got %r and %r' % (scene_path, arg))
+        i += 1
+    if not out:
+        return fail(2, '--out is required: the PNG to write, or - for standard output')
+    if out != '-' and os.path.isdir(os.path.realpath(out)):
+        return fail(2, '--out: %s is a folder; name a PNG file' % out)
+    text, name = '{}', 'defaults'
+    if scene_path is not None:
+        try:
+            with open(scene_path, 'rb') as f:
+                text = f.read().decode('utf-8', errors='replace')
+        except OSError as e:
+            return fail(2, '%s: cannot read the scene: %s' % (scene_path, e.strerror))
+        name = scene_path
+        if out != '-' and os.path.exists(out) and os.path.samefile(out, scene_path):
+            return fail(2, '--out: %s is the scene file; choose another output' % out)
+    page = Page()
+    try:
+        if page.failed:
+            return fail(1, page.failed)
+        message = page.load(text, name) or page.flags(flags)
+        if message:
+            return fail(2, message)
+        width, height, rgba = page.capture()
+        write_output(out, png_bytes(width, height, rgba))
+        return 0
+    finally:
+        page.close()
+
+
+def session():
+    """Requests: {"op": "open", "query": "?…", "args": [...]} first, then load, flags, key, ui, capture,
+    message, resize, screenshot, console, quit."""
+    page = None
+    for line in sys.stdin:
+        request = json.loads(line)
+        op = request['op']
+        try:
+            if op == 'open':
+                if page:
+                    page.close()
+                page = Page(query=request.get('query', ''), extra_args=request.get('args', []))
+                answer = {'failed': page.failed}
+            elif op == 'load':
+                answer = {'message': page.load(request['text'], request['name'])}
+            elif op == 'flags':
+                answer = {'message': page.flags(request['flags'])}
+            elif op == 'key':
+                answer = {'result': page.js('return window.shadelab.press(arguments[0])', request['code'])}
+            elif op == 'ui':
+                answer = {'ui': page.js('return window.shadelab.ui()')}
+            elif op == 'message':
+                answer = {'message': page.js('return window.shadelab.message()')}
+            elif op == 'capture':
+                width, height, data = page.capture(request.get('width', 0), request.get('height', 0),
+                                                   request.get('kind', 'rgba8'))
+                answer = {'width': width, 'height': height, 'data': base64.b64encode(data).decode()}
+            elif op == 'resize':
+                page.browser.set_window_size(request['width'], request['height'])
+                time.sleep(0.3)
+                answer = {'canvas': page.js('const c = document.getElementById("canvas");'
+                                            'return [c.width, c.height, c.clientWidth, c.clientHeight]')}
+            elif op == 'screenshot':
+                page.browser.save_screenshot(request['path'])
+                answer = {}
+            elif op == 'console':
+                answer = {'console': page.logs()}
+            elif op == 'quit':
+                break
+            else:
+                raise ValueError('unknown op ' + op)
+            answer['ok'] = True
+        except Exception as e:  # the test reads the reason
+            answer = {'ok': False, 'error': '%s: %s' % (type(e).__name__, e)}
+        sys.stdout.write(json.dumps(answer) + '\n')
+        sys.stdout.flush()
+    if page:
+        page.close()
+    return 0
+
+
+def fail(code, message):
+    sys.stderr.write('shadelab: %s\n' % message)
+    return code
+
+
+def main():
+    if len(sys.argv) >= 2 and sys.argv[1] == 'render':
+        try:
+            return render(sys.argv[2:])
+        except Exception as e:
+            return fail(1, '%s' % e)
+    if len(sys.argv) == 2 and sys.argv[1] == 'session':
+        return session()
+    return fail(2, 'usage: driver.py render [SCENE.json] [flags] --out FILE.png | driver.py session')
+
+
+if __name__ == '__main__':
+    sys.exit(main())
