@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Sets up and builds shadelab, then runs everything CI runs, in this order:
 #   1. formatting (.clang-format) of src/, include/ and tests/
-#   2. the release build (warnings are errors) and the whole test suite: CPU tests, GL tests on both
-#      headless backends (EGL and OSMesa), the command line end to end, the demo window under Xvfb
+#   2. the browser build (scripts/web.sh build), the release build (warnings are errors) and the whole
+#      test suite: CPU tests, GL tests on every headless backend (EGL with OpenGL and with OpenGL ES,
+#      OSMesa), the command line end to end, the demo window under Xvfb, the page in headless Chromium
 #   3. clang-tidy (.clang-tidy) on src/
 #   4. a Debug build with AddressSanitizer + UndefinedBehaviorSanitizer running the whole suite again
 #      (LeakSanitizer on; only Mesa's and the system GL stack's own allocations are suppressed)
@@ -13,6 +14,9 @@ cd "$(dirname "$0")/.."
 jobs=$(nproc)
 SHADELAB_CMAKE_ARGS="-DSHADELAB_WERROR=ON" scripts/setup.sh
 stage() { printf '\n=== %s\n' "$*"; }
+
+stage "browser build (WebGL 2, emscripten)"
+scripts/web.sh build
 
 stage "format check (clang-format)"
 git ls-files 'src/*.cpp' 'src/*.h' 'include/*.h' 'tests/*.cpp' 'tests/*.h' | xargs clang-format --dry-run --Werror

@@ -206,6 +206,7 @@ EMSCRIPTEN_KEEPALIVE const char* shadelab_ui() {
         {"lights", s.lightsName()},
         {"scene", nlohmann::json::parse(sceneToJson(p.state->scene()))},
         {"current", nlohmann::json::parse(sceneToJson(s.current(width, height)))},
+        {"atImageSize", nlohmann::json::parse(sceneToJson(s.current()))}, // what a capture at 0 × 0 draws
         {"sceneName", p.sceneName},
         {"renderer", p.rendererString},
         {"error", p.drawError},

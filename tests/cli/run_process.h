@@ -90,13 +90,14 @@ struct RunOptions {
     int signal = 0;
     std::chrono::seconds timeout{kTimeoutSeconds}; // then it is killed and the test fails
     rlim_t addressSpace = RLIM_INFINITY;           // RLIMIT_AS for the child, as `ulimit -v` sets it
+    std::optional<std::string> program;            // run this instead of shadelab (args follow it)
 };
 
 // Runs shadelab with `args` in the folder `cwd` through fork/execve (never a shell); stdout and stderr are
 // read as they come, so neither pipe can fill and block it.
 inline Outcome runWith(const std::vector<std::string>& args, const std::filesystem::path& cwd,
                        const RunOptions& options = {}) {
-    std::vector<std::string> argStrings{SHADELAB_EXE};
+    std::vector<std::string> argStrings{options.program ? *options.program : std::string(SHADELAB_EXE)};
     argStrings.insert(argStrings.end(), args.begin(), args.end());
     std::vector<std::string> envStrings =
         options.environment.empty() ? childEnvironment(Display::Inherit) : options.environment;
@@ -167,7 +168,7 @@ inline Outcome runWith(const std::vector<std::string>& args, const std::filesyst
     }
     if (open > 0) {
         ::kill(pid, SIGKILL);
-        ADD_FAILURE() << "shadelab did not finish within " << options.timeout.count() << " s; killed";
+        ADD_FAILURE() << argStrings[0] << " did not finish within " << options.timeout.count() << " s; killed";
     }
     for (pollfd& fd : fds)
         if (fd.fd >= 0) ::close(fd.fd);
@@ -181,7 +182,7 @@ inline Outcome runWith(const std::vector<std::string>& args, const std::filesyst
     }
     if (options.signalWhen && !signalled) ADD_FAILURE() << "the condition for sending the signal never came";
     if (run.exitCode == 127 && run.out.empty() && run.err.empty())
-        ADD_FAILURE() << "could not execute " << SHADELAB_EXE;
+        ADD_FAILURE() << "could not execute " << argStrings[0];
     return run;
 }
 

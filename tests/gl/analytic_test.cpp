@@ -10,50 +10,6 @@
 namespace shadelab::test {
 namespace {
 
-struct AnalyticCase {
-    const char* name;
-    std::function<Scene()> scene;
-};
-
-Scene withObjects(Scene scene, std::vector<SceneObject> objects) {
-    scene.objects = std::move(objects);
-    return scene;
-}
-
-const AnalyticCase kCases[] = {
-    {"perspective_point", [] { return litSphereScene(256, LightType::Point); }},
-    {"directional", [] { return litSphereScene(256, LightType::Directional); }},
-    {"spot", [] { return litSphereScene(256, LightType::Spot); }},
-    {"ambient_only", [] { return litSphereScene(256, LightType::Ambient); }},
-    {"off_centre_frustum",
-     [] {
-         Scene s = litSphereScene(256, LightType::Point);
-         s.projection = {ProjectionType::Frustum, 40, -0.05, 0.2, -0.15, 0.1, 0.5, 20};
-         return s;
-     }},
-    {"orthographic",
-     [] {
-         Scene s = litSphereScene(256, LightType::Point);
-         s.projection = {ProjectionType::Orthographic, 40, -1.4, 1.4, -1.4, 1.4, 0.5, 20};
-         return s;
-     }},
-    {"ellipsoid",
-     [] {
-         SceneObject o;
-         o.scale = {1.3, 0.7, 0.9};
-         return withObjects(litSphereScene(256, LightType::Point), {o});
-     }},
-    {"two_overlapping_spheres",
-     [] {
-         SceneObject a, b;
-         a.center = {-0.45, 0, 0.5};
-         a.radius = 0.7;
-         b.center = {0.45, 0.1, -0.4};
-         b.material.diffuse = {0.2, 0.3, 0.8};
-         return withObjects(litSphereScene(256, LightType::Point), {a, b});
-     }},
-};
-
 class PhongAgainstReference : public testing::TestWithParam<AnalyticCase> {};
 
 // DESIGN §6: at high subdivision Phong shading is the exact per-point lighting up to the mesh's tiny
@@ -75,7 +31,7 @@ TEST_P(PhongAgainstReference, InteriorErrorIsBelowHalfALevel) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, PhongAgainstReference, testing::ValuesIn(kCases),
+INSTANTIATE_TEST_SUITE_P(Scenes, PhongAgainstReference, testing::ValuesIn(analyticCases()),
                          [](const auto& info) { return std::string(info.param.name); });
 
 // Per-pixel error on the interior: the largest |Δ| over the colour channels, in 1/255 units, for each pixel
@@ -141,7 +97,7 @@ TEST_P(ToonAgainstReference, MatchesExceptAtBandEdges) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, ToonAgainstReference, testing::ValuesIn(kCases),
+INSTANTIATE_TEST_SUITE_P(Scenes, ToonAgainstReference, testing::ValuesIn(analyticCases()),
                          [](const auto& info) { return std::string(info.param.name); });
 
 // Mean interior error per level n = 3..6 at 512×512 with the sphere's radius ≈ 250 px (DESIGN §6).

@@ -83,4 +83,46 @@ Scene litSphereScene(int size, LightType type) {
     return scene;
 }
 
+static Scene withObjects(Scene scene, std::vector<SceneObject> objects) {
+    scene.objects = std::move(objects);
+    return scene;
+}
+
+const std::vector<AnalyticCase>& analyticCases() {
+    static const std::vector<AnalyticCase> cases = {
+        {"perspective_point", [] { return litSphereScene(256, LightType::Point); }},
+        {"directional", [] { return litSphereScene(256, LightType::Directional); }},
+        {"spot", [] { return litSphereScene(256, LightType::Spot); }},
+        {"ambient_only", [] { return litSphereScene(256, LightType::Ambient); }},
+        {"off_centre_frustum",
+         [] {
+             Scene s = litSphereScene(256, LightType::Point);
+             s.projection = {ProjectionType::Frustum, 40, -0.05, 0.2, -0.15, 0.1, 0.5, 20};
+             return s;
+         }},
+        {"orthographic",
+         [] {
+             Scene s = litSphereScene(256, LightType::Point);
+             s.projection = {ProjectionType::Orthographic, 40, -1.4, 1.4, -1.4, 1.4, 0.5, 20};
+             return s;
+         }},
+        {"ellipsoid",
+         [] {
+             SceneObject o;
+             o.scale = {1.3, 0.7, 0.9};
+             return withObjects(litSphereScene(256, LightType::Point), {o});
+         }},
+        {"two_overlapping_spheres",
+         [] {
+             SceneObject a, b;
+             a.center = {-0.45, 0, 0.5};
+             a.radius = 0.7;
+             b.center = {0.45, 0.1, -0.4};
+             b.material.diffuse = {0.2, 0.3, 0.8};
+             return withObjects(litSphereScene(256, LightType::Point), {a, b});
+         }},
+    };
+    return cases;
+}
+
 } // namespace shadelab::test

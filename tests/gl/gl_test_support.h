@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdlib>
+#include <functional>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -30,6 +31,14 @@ std::vector<bool> sharedInterior(const ImageF& rendered, const ReferenceImage& r
 
 // A sphere scene of size×size with one light of the given type, lit from the upper right front.
 Scene litSphereScene(int size, LightType light);
+
+// The scenes every API is held to against the analytic reference (tests/gl/analytic_test.cpp, and the
+// browser test): each light type, off-centre frustum, orthographic, an ellipsoid, two overlapping spheres.
+struct AnalyticCase {
+    const char* name;
+    std::function<Scene()> scene;
+};
+const std::vector<AnalyticCase>& analyticCases();
 
 } // namespace shadelab::test
 
