@@ -42,7 +42,7 @@ class Quiet(http.server.SimpleHTTPRequestHandler):
 class Page:
     """One Chromium with the page loaded and ready (window.shadelab.ready)."""
 
-    def __init__(self, root=ROOT, query='', extra_args=()):
+    def __init__(self, root=ROOT, query='', extra_args=(), downloads=None):
         from selenium import webdriver
         from selenium.webdriver.chrome.service import Service
         if not os.path.exists(os.path.join(root, 'shadelab.wasm')):
@@ -55,7 +55,13 @@ class Page:
         for arg in CHROME_ARGS + list(extra_args):
             options.add_argument(arg)
         options.set_capability('goog:loggingPrefs', {'browser': 'ALL'})
+        if downloads:
+            options.add_experimental_option('prefs', {'download.default_directory': downloads,
+                                                      'download.prompt_for_download': False})
         self.browser = webdriver.Chrome(service=Service('/usr/bin/chromedriver'), options=options)
+        if downloads:
+            self.browser.execute_cdp_cmd('Browser.setDownloadBehavior',
+                                         {'behavior': 'allow', 'downloadPath': downloads})
         self.console = []
         self.url = 'http://127.0.0.1:%d/index.html%s' % (self.server.server_address[1], query)
         self.browser.get(self.url)
@@ -199,7 +205,8 @@ def session():
             if op == 'open':
                 if page:
                     page.close()
-                page = Page(query=request.get('query', ''), extra_args=request.get('args', []))
+                page = Page(query=request.get('query', ''), extra_args=request.get('args', []),
+                            downloads=request.get('downloads'))
                 answer = {'failed': page.failed}
             elif op == 'load':
                 answer = {'message': page.load(request['text'], request['name'])}
@@ -220,6 +227,12 @@ def session():
                 time.sleep(0.3)
                 answer = {'canvas': page.js('const c = document.getElementById("canvas");'
                                             'return [c.width, c.height, c.clientWidth, c.clientHeight]')}
+            elif op == 'wait-files':  # downloads land asynchronously
+                deadline = time.time() + request.get('seconds', 20)
+                paths = request['paths']
+                while time.time() < deadline and not all(os.path.exists(p) for p in paths):
+                    time.sleep(0.1)
+                answer = {'present': [os.path.exists(p) for p in paths]}
             elif op == 'screenshot':
                 page.browser.save_screenshot(request['path'])
                 answer = {}

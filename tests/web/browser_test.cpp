@@ -56,8 +56,16 @@ std::vector<std::uint8_t> base64Decode(const std::string& text) {
 class Session {
 public:
     // Each returns the index of its answer.
-    std::size_t open(const std::string& query = "", const std::vector<std::string>& args = {}) {
-        return add({{"op", "open"}, {"query", query}, {"args", args}});
+    std::size_t open(const std::string& query = "", const std::vector<std::string>& args = {},
+                     const fs::path& downloads = {}) {
+        json request = {{"op", "open"}, {"query", query}, {"args", args}};
+        if (!downloads.empty()) request["downloads"] = downloads.string();
+        return add(request);
+    }
+    std::size_t waitFiles(const std::vector<fs::path>& paths) {
+        json list = json::array();
+        for (const fs::path& p : paths) list.push_back(p.string());
+        return add({{"op", "wait-files"}, {"paths", list}});
     }
     std::size_t load(const Scene& scene, const std::string& name = "scene.json") {
         return add({{"op", "load"}, {"text", sceneToJson(scene)}, {"name", name}});
@@ -424,6 +432,32 @@ TEST_F(Browser, CanvasFollowsTheWindow) {
     const json w = session.answer(wide).at("canvas"), t = session.answer(tall).at("canvas");
     EXPECT_GT(w[0].get<int>(), w[1].get<int>()) << "a wide window gives a wide canvas";
     EXPECT_LT(t[0].get<int>(), t[1].get<int>()) << "a tall window gives a tall canvas";
+}
+
+// S saves what the window's S saves: the picture as an opaque PNG and the scene JSON that draws it, here as
+// two downloads. The PNG is the canvas's picture (native render of the saved JSON agrees), the JSON the
+// state. Also the picture of the page for the README (build/web-page.png, copied to docs/ by hand).
+TEST_F(Browser, SDownloadsThePictureAndItsScene) {
+    Session session;
+    session.open("", {}, dir_);
+    session.resize(1280, 800);
+    const std::size_t shot = session.screenshot(fs::path(SHADELAB_BUILD_DIR) / "web-page.png");
+    session.key('M'); // a material preset, so the JSON is not the file the page started with
+    const std::size_t press = session.key('S');
+    const std::size_t files = session.waitFiles({dir_ / "shadelab-001.png", dir_ / "shadelab-001.json"});
+    const std::size_t console = session.console();
+    if (!session.run(dir_)) return;
+    (void)shot;
+    EXPECT_EQ(session.answer(press).at("result"), 2);
+    ASSERT_EQ(session.answer(files).at("present"), json::array({true, true}));
+    const Image png = readPng(dir_ / "shadelab-001.png");
+    const Scene saved = loadScene(dir_ / "shadelab-001.json");
+    EXPECT_EQ(png.width, saved.width);
+    EXPECT_EQ(png.height, saved.height);
+    EXPECT_NE(saved.objects.at(0).material.shininess, 24.0) << "the material preset is not in the JSON";
+    const Comparison c = compareImages(png, nativeGles().render(saved), swiftShaderTolerance(png));
+    EXPECT_TRUE(c.passed) << c.summary();
+    expectCleanConsole(session.answer(console).at("console"));
 }
 
 // Where WebGL 2 is missing the page says so, never a blank canvas.
