@@ -192,6 +192,12 @@ Tolerance swiftShaderTolerance(const Image& image) {
     return Tolerance{2, 0.6, int(0.015 * image.width * image.height)};
 }
 
+ImageF asFloat(const Image& image) {
+    ImageF out(image.width, image.height);
+    for (std::size_t i = 0; i < image.rgba.size(); ++i) out.rgba[i] = float(image.rgba[i]) / 255.0f;
+    return out;
+}
+
 // Native OpenGL ES renders, the browser's counterpart (tests link the headless renderer).
 HeadlessRenderer& nativeGles() {
     static HeadlessRenderer renderer(ContextRequest{Backend::Egl, Api::Gles, std::nullopt});
@@ -303,7 +309,8 @@ TEST_F(Browser, MatchesTheNativeOpenGlEsRender) {
     for (const auto& [scene, index] : shots) {
         const Image browser = session.image(index);
         const Image native = nativeGles().render(scene);
-        const std::vector<bool> interior = interiorMask(renderReference(scene).objectId, 192, 192, 2);
+        const ReferenceImage reference = renderReference(scene);
+        const std::vector<bool> interior = interiorMask(reference.objectId, 192, 192, 2);
         int interiorMax = 0;
         std::size_t differing = 0, interiorDiffering = 0, overTwo = 0;
         double interiorSum = 0;
@@ -327,7 +334,14 @@ TEST_F(Browser, MatchesTheNativeOpenGlEsRender) {
             "%zu px differ in all, %zu by more than 2/255\n",
             label.c_str(), interiorMax, interiorSum / double(interiorPixels), interiorDiffering,
             interiorPixels, differing, overTwo);
+        // Each against the exact answer, both read back in 8 bits: the error the shading mode makes.
+        const InteriorError browserError = interiorError(asFloat(browser), reference);
+        const InteriorError nativeError = interiorError(asFloat(native), reference);
+        std::printf("  %s against the analytic reference (8-bit, interior mean / max): webgl2 %.3f / %.1f, "
+                    "native gles %.3f / %.1f\n",
+                    label.c_str(), browserError.mean, browserError.max, nativeError.mean, nativeError.max);
         SCOPED_TRACE(label);
+        EXPECT_NEAR(browserError.mean, nativeError.mean, 0.1) << "the browser's error is not the shading's";
         EXPECT_LT(interiorSum / double(interiorPixels), 0.1);
         EXPECT_LE(double(overTwo), 0.015 * 192 * 192);
     }
