@@ -11,22 +11,6 @@
 namespace shadelab::test {
 namespace {
 
-// Every shading mode × lighting model, under a spot and a point light.
-std::vector<Scene> modeScenes() {
-    std::vector<Scene> scenes;
-    for (ShadingMode mode : kShadingModes) {
-        for (LightingModel model : kLightingModels) {
-            Scene scene = litSphereScene(96, LightType::Spot);
-            scene.lights.push_back(litSphereScene(96, LightType::Point).lights[0]);
-            scene.objects[0].subdivisions = 4;
-            scene.shading = mode;
-            scene.lighting = model;
-            scenes.push_back(scene);
-        }
-    }
-    return scenes;
-}
-
 std::string describe(const Scene& scene) {
     return std::string(toString(scene.shading)) + "/" + std::string(toString(scene.lighting)) + "/" +
            std::string(toString(scene.depth)) + "/" + std::string(toString(scene.projection.type));
@@ -47,7 +31,7 @@ TEST(Backends, EglAndOsmesaRenderTheSamePixels) {
     if (std::getenv("CI")) FAIL() << "built without OSMesa: nothing to compare EGL with";
     GTEST_SKIP() << "built without OSMesa";
 #endif
-    const std::vector<Scene> scenes = modeScenes();
+    const std::vector<Scene> scenes = modeScenes(96, 4);
     std::vector<Image> egl, osmesa;
     for (Backend backend : {Backend::Egl, Backend::Osmesa}) {
         std::unique_ptr<HeadlessRenderer> renderer;
@@ -67,7 +51,7 @@ TEST(Backends, EglAndOsmesaRenderTheSamePixels) {
 // every mode, lighting model, depth mode and projection gives the same pixels on both (llvmpipe compiles
 // GLSL 3.30 and GLSL ES 3.00 with highp alike), and the first OpenGL picture is unchanged after the ES one.
 TEST(Backends, OpenGlAndOpenGlEsRenderTheSamePixels) {
-    std::vector<Scene> scenes = modeScenes();
+    std::vector<Scene> scenes = modeScenes(96, 4);
     for (DepthMode depth : {DepthMode::Reversed, DepthMode::ReversedInfinite})
         for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Phong}) {
             Scene scene = litSphereScene(96, LightType::Directional);

@@ -125,4 +125,18 @@ const std::vector<AnalyticCase>& analyticCases() {
     return cases;
 }
 
+std::vector<Scene> modeScenes(int size, int level) {
+    std::vector<Scene> scenes;
+    for (ShadingMode mode : kShadingModes)
+        for (LightingModel model : kLightingModels) {
+            Scene scene = litSphereScene(size, LightType::Spot);
+            scene.lights.push_back(litSphereScene(size, LightType::Point).lights[0]);
+            scene.objects[0].subdivisions = level;
+            scene.shading = mode;
+            scene.lighting = model;
+            scenes.push_back(scene);
+        }
+    return scenes;
+}
+
 } // namespace shadelab::test

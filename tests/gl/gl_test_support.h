@@ -32,6 +32,10 @@ std::vector<bool> sharedInterior(const ImageF& rendered, const ReferenceImage& r
 // A sphere scene of size×size with one light of the given type, lit from the upper right front.
 Scene litSphereScene(int size, LightType light);
 
+// Every shading mode × lighting model of a size×size sphere at `level`, under a spot and a point light: the
+// scenes two renderers are compared on pixel for pixel (backends, and the browser against native).
+std::vector<Scene> modeScenes(int size, int level);
+
 // The scenes every API is held to against the analytic reference (tests/gl/analytic_test.cpp, and the
 // browser test): each light type, off-centre frustum, orthographic, an ellipsoid, two overlapping spheres.
 struct AnalyticCase {

@@ -295,16 +295,10 @@ TEST_F(Browser, MatchesTheNativeOpenGlEsRender) {
     Session session;
     session.open();
     std::vector<std::pair<Scene, std::size_t>> shots;
-    for (ShadingMode mode : kShadingModes)
-        for (LightingModel model : kLightingModels) {
-            Scene scene = litSphereScene(192, LightType::Spot);
-            scene.lights.push_back(litSphereScene(192, LightType::Point).lights[0]);
-            scene.objects[0].subdivisions = 5;
-            scene.shading = mode;
-            scene.lighting = model;
-            session.load(scene);
-            shots.emplace_back(scene, session.capture());
-        }
+    for (const Scene& scene : modeScenes(192, 5)) {
+        session.load(scene);
+        shots.emplace_back(scene, session.capture());
+    }
     if (!session.run(dir_)) return;
     for (const auto& [scene, index] : shots) {
         const Image browser = session.image(index);
