@@ -19,7 +19,7 @@ stage "browser build (WebGL 2, emscripten)"
 scripts/web.sh build
 
 stage "format check (clang-format)"
-git ls-files 'src/*.cpp' 'src/*.h' 'include/*.h' 'tests/*.cpp' 'tests/*.h' | xargs clang-format --dry-run --Werror
+git ls-files 'src/*.cpp' 'src/*.h' 'include/*.h' 'tests/*.cpp' 'tests/*.h' 'web/*.cpp' | xargs clang-format --dry-run --Werror
 
 stage "tests (release build)"
 ctest --test-dir build --output-on-failure -j"$jobs" "$@"

@@ -168,7 +168,8 @@ inline Outcome runWith(const std::vector<std::string>& args, const std::filesyst
     }
     if (open > 0) {
         ::kill(pid, SIGKILL);
-        ADD_FAILURE() << argStrings[0] << " did not finish within " << options.timeout.count() << " s; killed";
+        ADD_FAILURE() << argStrings[0] << " did not finish within " << options.timeout.count()
+                      << " s; killed";
     }
     for (pollfd& fd : fds)
         if (fd.fd >= 0) ::close(fd.fd);
