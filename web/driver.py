@@ -214,6 +214,11 @@ def session():
                 answer = {'message': page.flags(request['flags'])}
             elif op == 'key':
                 answer = {'result': page.js('return window.shadelab.press(arguments[0])', request['code'])}
+            elif op == 'panel':  # a control of the panel set as a user would: value, then its event
+                answer = {'found': page.js(
+                    'const e = document.querySelector(arguments[0]); if (!e) return false;'
+                    'e.value = arguments[1]; e.dispatchEvent(new Event(arguments[2])); return true;',
+                    request['selector'], request['value'], request.get('event', 'change'))}
             elif op == 'ui':
                 answer = {'ui': page.js('return window.shadelab.ui()')}
             elif op == 'message':

@@ -237,26 +237,52 @@ function setIfIdle(id, value) {
   if (document.activeElement !== element) element.value = value;
 }
 
+// The window's light controls (src/app/panel.cpp): position, direction, I_a, I_d, I_s, attenuation a b c,
+// and a spot's cutoff and exponent. Rebuilt only when the lights change from outside the panel (L, a scene).
 function showLights(lights) {
   const box = $('lights');
   const signature = JSON.stringify(lights);
   if (box.dataset.signature === signature) return;
   box.dataset.signature = signature;
   box.replaceChildren();
+  const positional = (l) => l.type === 'point' || l.type === 'spot';
+  const directed = (l) => l.type === 'directional' || l.type === 'spot';
   lights.forEach((light, i) => {
-    const row = document.createElement('div');
-    row.className = 'light';
-    row.append(i + 1 + ': ' + light.type + ' ');
-    for (const term of ['diffuse', 'specular']) {
-      if (!light[term]) continue;
-      const input = document.createElement('input');
-      input.type = 'color';
-      input.title = term;
-      input.value = toHex(light[term]);
-      input.addEventListener('input', () => edit((s) => { s.lights[i][term] = fromHex(input.value); }));
-      row.append(input, ' ' + term + ' ');
+    const group = document.createElement('div');
+    group.className = 'light';
+    group.append(Object.assign(document.createElement('div'), {textContent: 'light ' + (i + 1) + ': ' + light.type}));
+    const field = (label, input, change) => {
+      input.addEventListener('change', () => edit((s) => change(s.lights[i], input)));
+      const row = document.createElement('label');
+      row.append(input, ' ' + label);
+      group.append(row);
+    };
+    const vector = (label, key, step) => {
+      const row = document.createElement('label');
+      const inputs = [0, 1, 2].map((k) => Object.assign(document.createElement('input'),
+          {type: 'number', step, value: light[key][k], className: 'component'}));
+      for (const input of inputs)
+        input.addEventListener('change', () => edit((s) => { s.lights[i][key] = inputs.map((x) => Number(x.value)); }));
+      row.append(...inputs, ' ' + label);
+      group.append(row);
+    };
+    if (positional(light)) vector('position', 'position', 0.05);
+    if (directed(light)) vector('direction', 'direction', 0.02);
+    for (const [term, label] of [['ambient', 'I_a ambient'], ['diffuse', 'I_d diffuse'], ['specular', 'I_s specular']]) {
+      if (!light[term] || (light.type === 'ambient' && term !== 'ambient')) continue;
+      field(label, Object.assign(document.createElement('input'), {type: 'color', value: toHex(light[term])}),
+            (l, input) => { l[term] = fromHex(input.value); });
     }
-    box.append(row);
+    if (positional(light)) vector('attenuation a b c', 'attenuation', 0.01);
+    if (light.type === 'spot') {
+      field('cutoff (deg)', Object.assign(document.createElement('input'),
+                {type: 'range', min: 0, max: 90, step: 0.5, value: light.cutoff_deg}),
+            (l, input) => { l.cutoff_deg = Number(input.value); });
+      field('exponent', Object.assign(document.createElement('input'),
+                {type: 'range', min: 0, max: 128, step: 1, value: light.exponent || 0}),
+            (l, input) => { l.exponent = Number(input.value); });
+    }
+    box.append(group);
   });
 }
 

@@ -75,6 +75,10 @@ public:
     }
     std::size_t key(int code) { return add({{"op", "key"}, {"code", code}}); }
     std::size_t ui() { return add({{"op", "ui"}}); }
+    std::size_t panel(const std::string& selector, const std::string& value,
+                      const std::string& event = "change") {
+        return add({{"op", "panel"}, {"selector", selector}, {"value", value}, {"event", event}});
+    }
     std::size_t message() { return add({{"op", "message"}}); }
     std::size_t capture(const std::string& kind = "rgba8") {
         return add({{"op", "capture"}, {"kind", kind}});
@@ -387,6 +391,40 @@ TEST_F(Browser, KeysChangeThePictureAsInTheWindow) {
     const json ui = session.answer(steps.back().ui).at("ui");
     EXPECT_TRUE(ui.at("orthographic").get<bool>());
     EXPECT_EQ(ui.at("current").at("lighting"), "phong") << "B from Blinn-Phong";
+    expectCleanConsole(session.answer(console).at("console"));
+}
+
+// The control panel edits the scene through the same parser as a file: a spot's cutoff from its slider
+// reaches the scene and the picture; an attenuation of 0, 0, 0 is refused with the scene's own message.
+TEST_F(Browser, PanelEditsGoThroughTheSceneParser) {
+    Scene scene = litSphereScene(128, LightType::Spot);
+    Session session;
+    session.open();
+    session.load(scene);
+    const std::size_t before = session.capture();
+    const std::size_t cutoff = session.panel("#lights input[type=range]", "30");
+    const std::size_t widened = session.ui();
+    const std::size_t after = session.capture();
+    const std::string attenuation =
+        "#lights label:nth-of-type(6) input:nth-of-type"; // a, b, c: (1), (2), (3)
+    session.panel(attenuation + "(2)", "0");
+    session.panel(attenuation + "(3)", "0");
+    const std::size_t zero = session.panel(attenuation + "(1)", "0");
+    const std::size_t message = session.message();
+    const std::size_t console = session.console();
+    if (!session.run(dir_)) return;
+    EXPECT_TRUE(session.answer(cutoff).at("found").get<bool>());
+    EXPECT_EQ(session.answer(widened).at("ui").at("scene").at("lights")[0].at("cutoff_deg"), 30);
+    EXPECT_FALSE(compareImages(session.image(after), session.image(before), Tolerance{1, 0, 0}).passed)
+        << "a wider cone lights more of the sphere";
+    Scene wide = scene;
+    wide.lights[0].cutoffDeg = 30;
+    const Comparison c = compareImages(session.image(after), nativeGles().render(wide),
+                                       swiftShaderTolerance(session.image(after)));
+    EXPECT_TRUE(c.passed) << c.summary();
+    EXPECT_TRUE(session.answer(zero).at("found").get<bool>());
+    const std::string shown = session.answer(message).at("message");
+    EXPECT_NE(shown.find("attenuation"), std::string::npos) << shown;
     expectCleanConsole(session.answer(console).at("console"));
 }
 
