@@ -77,7 +77,8 @@ void frame() {
     try {
         const double start = emscripten_get_now();
         gl::bindDefaultFramebuffer();
-        p.renderer->render(p.state->current(width, height), width, height);
+        p.state->setViewport(width, height);
+        p.renderer->render(p.state->drawn(), width, height);
         gl::finish();
         p.frameMs = emscripten_get_now() - start;
         p.drawError.clear();

@@ -89,7 +89,8 @@ private:
         // The panel is a column on the left; the picture takes the rest, framed as the scene defines it.
         const int column = panelColumnWidth(width, state_.showPanel);
         const auto start = Clock::now();
-        renderer_.render(sized(width - column, height), width - column, height, column);
+        state_.setViewport(width - column, height);
+        renderer_.render(state_.drawn(), width - column, height, column);
         gl::finish();
         timer_.add(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
         insidePanel_ = true;

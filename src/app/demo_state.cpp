@@ -232,9 +232,12 @@ bool DemoState::apply(Command command) {
     case Command::LevelDown:
         changeLevels(-1);
         break;
-    case Command::AutoLevel:
-        for (SceneObject& o : scene_.objects) o.subdivisions = kAutoSubdivisions;
+    case Command::AutoLevel: { // A again leaves auto at the level it shows
+        const Scene shown = drawn();
+        for (SceneObject& o : scene_.objects)
+            o.subdivisions = autoLevel() ? subdivisionLevel(shown, o) : kAutoSubdivisions;
         break;
+    }
     case Command::ToggleProjection:
         orthographic_ = !orthographic_;
         break;
@@ -280,7 +283,7 @@ bool DemoState::apply(Command command) {
 
 // Each object one level up or down from the level it is drawn at ("auto" resolved first).
 void DemoState::changeLevels(int delta) {
-    const Scene scene = current();
+    const Scene scene = drawn();
     for (SceneObject& o : scene_.objects)
         o.subdivisions = std::clamp(subdivisionLevel(scene, o) + delta, 0, kMaxSubdivisions);
 }
@@ -308,7 +311,7 @@ double DemoState::presetExponent(double alpha) const {
 }
 
 int DemoState::level() const {
-    return scene_.objects.empty() ? 0 : subdivisionLevel(current(), scene_.objects[0]);
+    return scene_.objects.empty() ? 0 : subdivisionLevel(drawn(), scene_.objects[0]);
 }
 
 bool DemoState::autoLevel() const {
@@ -324,7 +327,7 @@ std::string DemoState::lightsName() const {
 }
 
 std::size_t DemoState::triangleCount() const {
-    const Scene scene = current();
+    const Scene scene = drawn();
     std::size_t total = 0;
     for (const SceneObject& o : scene.objects) total += sphereTriangleCount(subdivisionLevel(scene, o));
     return total;
@@ -342,13 +345,13 @@ std::string modes(const Scene& scene) {
 std::string windowTitle(const DemoState& state, double frameMs) {
     char timing[32];
     std::snprintf(timing, sizeof timing, "%.2f ms", frameMs);
-    return "shadelab — " + modes(state.current()) + " | level " + std::to_string(state.level()) +
+    return "shadelab — " + modes(state.drawn()) + " | level " + std::to_string(state.level()) +
            (state.autoLevel() ? " (auto)" : "") + " | " + std::to_string(state.triangleCount()) +
            " triangles | " + timing + " | H: keys";
 }
 
 std::string statusText(const DemoState& state) {
-    const Scene scene = state.current();
+    const Scene scene = state.drawn();
     return modes(scene) + "\nlevel " + std::to_string(state.level()) + ", " +
            (state.orthographic() ? "orthographic" : "perspective") + ", " +
            (scene.vertexNormals == VertexNormals::Averaged ? "averaged" : "exact") +

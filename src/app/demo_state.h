@@ -84,6 +84,13 @@ public:
     // framebuffer of width × height (0: the scene's own image size). Until the user orbits or zooms, the
     // camera is the scene's own, exactly as `shadelab render` sees it.
     Scene current(int width = 0, int height = 0) const;
+    // The size the window (or the page) last drew at, which "auto" levels and the title are computed for
+    // (0 × 0 until set: the scene's own image size); drawn() is current() at that size.
+    void setViewport(int width, int height) {
+        viewportWidth_ = width;
+        viewportHeight_ = height;
+    }
+    Scene drawn() const { return current(viewportWidth_, viewportHeight_); }
     Scene& scene() { return scene_; } // for the control panel's live edits
     const OrbitCamera& camera() const { return camera_; }
 
@@ -97,7 +104,7 @@ public:
     bool matchHighlight = true; // B keeps the highlight size: β = 4α going to Blinn-Phong, α = β/4 back
     bool showHelp = false;
     bool showPanel = true;
-    // The level drawn (of the first object): its own, or what "auto" chose for the current view.
+    // The level drawn (of the first object): its own, or what "auto" chose for the drawn view.
     int level() const;
     bool autoLevel() const;
     std::string materialName() const;
@@ -118,6 +125,7 @@ private:
     // a β below 4 exactly (β/4 < 1 would otherwise be lost to the clamp).
     std::vector<double> exponents_;
     bool orthographic_ = false;
+    int viewportWidth_ = 0, viewportHeight_ = 0;
     int material_ = 0; // 0: the scene's own, i: materialPresets()[i − 1]
     int lights_ = 0;   // 0: the scene's own, i: lightPresets()[i − 1]
 };

@@ -21,6 +21,7 @@
 #include "shadelab/errors.h"
 #include "shadelab/scene.h"
 #include "shadelab/sphere.h"
+#include "shadelab/subdivision.h"
 #include "shadelab/window.h"
 
 namespace shadelab::app {
@@ -409,6 +410,35 @@ TEST(DemoLevel, PlusNeverLowersAnObjectsLevel) {
     for (std::size_t i = 0; i < s.objects.size(); ++i)
         EXPECT_EQ(s.objects[i].subdivisions, scene.objects[i].subdivisions + 1)
             << "object " << i << " was at level " << scene.objects[i].subdivisions;
+}
+
+// Issue 15: the title's level is the drawn one. "auto" chooses by the projected size, so after the window
+// grows from the scene's 256×256 to 1000×800 the drawn level is higher; the title, the triangle count and
+// "+" follow the drawn size, not the scene's image size. A again leaves auto at the level shown.
+TEST(DemoLevel, AutoLevelAndTitleFollowTheDrawnSize) {
+    Scene scene; // the DESIGN §4 defaults: one unit sphere
+    scene.width = scene.height = 256;
+    DemoState state(scene);
+    state.apply(Command::AutoLevel);
+    const int atImageSize = subdivisionLevel(state.current(256, 256), state.current().objects[0]);
+    state.setViewport(1000, 800);
+    const int drawnLevel = subdivisionLevel(state.current(1000, 800), state.current().objects[0]);
+    ASSERT_GT(drawnLevel, atImageSize) << "the test needs a size at which auto chooses another level";
+    EXPECT_EQ(state.level(), drawnLevel);
+    EXPECT_EQ(state.triangleCount(), sphereTriangleCount(drawnLevel));
+    EXPECT_NE(windowTitle(state, 0).find("level " + std::to_string(drawnLevel) + " (auto)"),
+              std::string::npos)
+        << windowTitle(state, 0);
+    EXPECT_NE(statusText(state).find("level " + std::to_string(drawnLevel)), std::string::npos);
+
+    state.apply(Command::AutoLevel); // leaves auto where it was
+    EXPECT_FALSE(state.autoLevel());
+    EXPECT_EQ(state.level(), drawnLevel);
+    EXPECT_EQ(state.current().objects[0].subdivisions, drawnLevel);
+    state.apply(Command::AutoLevel);
+    EXPECT_TRUE(state.autoLevel()) << "A toggles";
+    state.apply(Command::LevelUp);
+    EXPECT_EQ(state.level(), drawnLevel + 1) << "+ from auto is one above the level shown";
 }
 
 TEST(DemoLevel, TriangleCountIsFourToTheLevelPlusOnePerObject) {

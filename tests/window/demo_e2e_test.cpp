@@ -26,6 +26,7 @@
 #include <gtest/gtest.h>
 
 #include "shadelab/scene.h"
+#include "shadelab/subdivision.h"
 #include "window/demo_process.h"
 
 namespace shadelab::window_test {
@@ -320,6 +321,37 @@ TEST_F(DemoWindow, EveryModeKeyShowsWhatRenderGives) {
 // The same window on an OpenGL ES 3.0 context (GLFW_OPENGL_ES_API), held to `render --api gles`.
 TEST_F(DemoWindow, OpenGlEsWindowShowsWhatRenderGives) {
     everyModeKeyShowsWhatRenderGives("gles");
+}
+
+// Issue 15: after the window is resized, the title shows the level that is drawn. The scene is 256×256;
+// the window grows to 960×720 (inside Xvfb's 1024×768 screen) and A picks the level for that size: the
+// title's level is the one the saved JSON (at the window's size) gives, and the picture is what `render`
+// draws for that JSON.
+TEST_F(DemoWindow, AfterAResizeTheTitleShowsTheDrawnLevel) {
+    const fs::path scene = writeScene("scene.json", sceneJson(256, 256, 3, "phong", "phong"));
+    DemoProcess& demo =
+        startDemo("demo", {scene.string(), "--size", "256x256", "--hide-panel", "--gl-debug"});
+    demo.window().waitForTitle("shadelab — phong shading, phong lighting | level 3 | ");
+    demo.window().resize(960, 720);
+    demo.window().key("a");
+    std::string title;
+    ASSERT_TRUE(pollUntil([&] {
+        return (title = demo.window().title()).find("(auto)") != std::string::npos;
+    })) << "A did not turn auto on: "
+        << title;
+    const std::size_t at = title.find("| level ") + 8;
+    const int titleLevel = std::stoi(title.substr(at));
+    const fs::path stem = demo.screenshot();
+    const Scene saved = loadScene(stem.string() + ".json");
+    EXPECT_EQ(saved.width, 960);
+    EXPECT_EQ(saved.height, 720);
+    EXPECT_EQ(titleLevel, subdivisionLevel(saved, saved.objects.at(0))) << title;
+    EXPECT_GT(titleLevel, subdivisionLevel(loadScene(scene), loadScene(scene).objects.at(0)))
+        << "at 960×720 auto should choose a finer level than at 256×256";
+    const Image rendered =
+        renderWithCli(stem.string() + ".json", scratch() / "resized.render.png", scratch());
+    EXPECT_TRUE(matches(settledCapture(demo.window(), rendered), rendered, kWindowTolerance, "resized"));
+    expectCleanQuit(demo);
 }
 
 // H shows the help overlay over the picture and H again takes it away. The demo runs on its built-in

@@ -127,6 +127,11 @@ void XWindow::key(const std::string& key) const {
     run({tools_.xdotool.string(), "key", "--window", id_, key});
 }
 
+void XWindow::resize(int width, int height) const {
+    run({tools_.xdotool.string(), "windowsize", "--sync", id_, std::to_string(width),
+         std::to_string(height)});
+}
+
 std::string XWindow::title() const {
     return firstLine(run({tools_.xdotool.string(), "getwindowname", id_}));
 }

@@ -48,8 +48,9 @@ public:
                         const std::string& nameRegex, const std::function<std::string()>& diedBecause);
 
     const std::string& id() const { return id_; }
-    void focus() const;                     // xdotool windowfocus --sync (no window manager needed)
-    void key(const std::string& key) const; // xdotool key --window W <key>
+    void focus() const;                       // xdotool windowfocus --sync (no window manager needed)
+    void key(const std::string& key) const;   // xdotool key --window W <key>
+    void resize(int width, int height) const; // xdotool windowsize --sync
     std::string title() const;
     // Polls the title until it starts with `prefix`; throws with the last title after kWaitLimit.
     std::string waitForTitle(const std::string& prefix) const;
