@@ -469,6 +469,11 @@ public:
         }
         std::string message(withoutExceptionId(e.what()));
         if (message.size() > 200) message = message.substr(0, 200) + "…";
+        // A comment is the likeliest reason for a '/' where a value or a key should be.
+        const std::size_t slash = text_.find('/', byte >= 2 ? byte - 2 : 0);
+        if (slash != std::string_view::npos && slash <= byte &&
+            (text_.substr(slash).starts_with("//") || text_.substr(slash).starts_with("/*")))
+            message += " (JSON has no comments: remove the // or /* */ text)";
         fail("", "invalid JSON at byte " + std::to_string(byte) + ": " + message);
     }
 
@@ -1030,6 +1035,30 @@ SceneView sceneView(const Scene& scene) {
 
 glm::dmat4 worldFromObject(const SceneObject& object) {
     return glm::scale(glm::translate(glm::dmat4(1), object.center), object.radius * object.scale);
+}
+
+std::vector<std::string> sceneWarnings(const Scene& scene) {
+    std::vector<std::string> warnings;
+    auto check = [&](const glm::dvec3& colour, const std::string& path) {
+        if (std::max({colour.x, colour.y, colour.z}) > kSuspectColour)
+            warnings.push_back(path + ": " + formatVec(colour) +
+                               " has a component above 10; colours are linear 0..1 (0..255 values would need "
+                               "dividing by 255)");
+    };
+    check(scene.background, "image.background");
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const std::string path = "objects[" + std::to_string(i) + "].material.";
+        check(scene.objects[i].material.ambient, path + "ambient");
+        check(scene.objects[i].material.diffuse, path + "diffuse");
+        check(scene.objects[i].material.specular, path + "specular");
+    }
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+        const std::string path = "lights[" + std::to_string(i) + "].";
+        check(scene.lights[i].ambient, path + "ambient");
+        check(scene.lights[i].diffuse, path + "diffuse");
+        check(scene.lights[i].specular, path + "specular");
+    }
+    return warnings;
 }
 
 } // namespace shadelab

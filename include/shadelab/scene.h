@@ -87,6 +87,11 @@ Scene loadScene(const std::filesystem::path& path);
 // The whole scene as JSON that parseScene reads back to the same scene (every field written, doubles in
 // shortest round-trip form). The demo saves it beside each screenshot.
 std::string sceneToJson(const Scene& scene);
+
+// Valid but probably not meant: a colour component above kSuspectColour (colours are linear 0..1, and
+// [200, 30, 30] reads as 0..255 and draws a white blob). One message per colour, naming its JSON path.
+inline constexpr double kSuspectColour = 10;
+std::vector<std::string> sceneWarnings(const Scene& scene);
 // sceneToJson written atomically to `path`; throws RuntimeError naming the path.
 void saveScene(const Scene& scene, const std::filesystem::path& path);
 

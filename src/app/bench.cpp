@@ -13,6 +13,8 @@
 
 #include <cstdlib>
 
+#include <unistd.h>
+
 #include <benchmark/benchmark.h>
 #include <nlohmann/json.hpp>
 
@@ -162,6 +164,7 @@ namespace {
 // Collects every run while printing the usual console table.
 class Collector : public benchmark::ConsoleReporter {
 public:
+    explicit Collector(OutputOptions options) : ConsoleReporter(options) {}
     void ReportRuns(const std::vector<Run>& runs) override {
         ConsoleReporter::ReportRuns(runs);
         for (const Run& run : runs) {
@@ -245,9 +248,19 @@ int runBench(const BenchOptions& options) {
     char* argv[] = {program.data(), filterFlag.data(), nullptr};
     int argc = 2;
     benchmark::Initialize(&argc, argv);
-    Collector collector;
-    benchmark::RunSpecifiedBenchmarks(&collector);
+    std::printf("(Debian's libbenchmark is built without NDEBUG, so Google Benchmark may warn that the "
+                "\"Library was built as DEBUG\": that is the library's harness, not the code it times, which "
+                "is shadelab's optimized build.)\n");
+    std::fflush(stdout);
+    // Colour only for a terminal: escape codes in a file or a pipe are noise.
+    Collector collector(::isatty(STDOUT_FILENO) ? benchmark::ConsoleReporter::OO_Defaults
+                                                : benchmark::ConsoleReporter::OO_Tabular);
+    const std::size_t ran = benchmark::RunSpecifiedBenchmarks(&collector);
     benchmark::ClearRegisteredBenchmarks();
+    if (ran == 0)
+        throw InputError("--filter: \"" + options.filter +
+                         "\" matches no benchmark; names look like frame/one-light/specialized/level8 or "
+                         "sphere/build/level8 (run without --filter to list them all)");
 
     const std::vector<Ratio> rs = measuredRatios(collector, specs);
     std::printf("\nratios of medians, measured in this run:\n");

@@ -2,13 +2,16 @@
 // rendering (fuzz/cli_fuzzer.cpp). Output that CLI11 would print goes into the result or the InputError.
 #include "app/cli.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <sstream>
 #include <string_view>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
 #include "app/demo_state.h"
+#include "shadelab/text.h"
 
 namespace shadelab::app {
 namespace {
@@ -47,6 +50,49 @@ void addContextFlags(CLI::App& command, std::string& api, std::string* eglDevice
                            "first device that gives a context, else the surfaceless platform");
 }
 
+std::size_t editDistance(std::string_view a, std::string_view b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diagonal = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t above = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            diagonal = above;
+        }
+    }
+    return row[b.size()];
+}
+
+// "\n--shadding: did you mean --shading?" for each --option on the command line that no command has and
+// that is at most two edits from one that some command has; "" otherwise.
+std::string didYouMean(CLI::App& cli, int argc, char** argv) {
+    std::vector<std::string> known;
+    auto collect = [&](CLI::App* app) {
+        for (const CLI::Option* option : app->get_options())
+            for (const std::string& name : option->get_lnames()) known.push_back("--" + name);
+    };
+    collect(&cli);
+    for (CLI::App* sub : cli.get_subcommands({})) collect(sub);
+    std::string hints;
+    for (int i = 1; i < argc; ++i) {
+        const std::string_view argument(argv[i]);
+        if (!argument.starts_with("--") || argument.size() > 64) continue;
+        const std::string name(argument.substr(0, argument.find('=')));
+        if (std::find(known.begin(), known.end(), name) != known.end()) continue;
+        std::string best;
+        std::size_t bestDistance = 3;
+        for (const std::string& candidate : known)
+            if (const std::size_t d = editDistance(name, candidate); d < bestDistance) {
+                best = candidate;
+                bestDistance = d;
+            }
+        if (!best.empty()) hints += "\n" + printable(name) + ": did you mean " + best + "?";
+    }
+    return hints;
+}
+
 std::string withoutTrailingNewlines(std::string text) {
     while (!text.empty() && text.back() == '\n') text.pop_back();
     return text;
@@ -68,13 +114,11 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
     cli.add_option("--showcase-out", demo.showcaseOut, "Where the showcase goes when there is no display")
         ->capture_default_str();
     cli.add_option("--screenshot-dir", demo.screenshotDir, "Where S saves shadelab-NNN.png and .json")
-        ->capture_default_str()
-        ->check(CLI::ExistingDirectory);
+        ->capture_default_str(); // checked in main.cpp, with a message as helpful as --out's
     cli.add_flag("--hide-panel", demo.hidePanel, "Start with the control panel hidden (C shows it)");
     cli.add_flag("--gl-debug", demo.glDebug, "Ask for a KHR_debug context and print every GL message");
     std::string demoApi = "gl";
     addContextFlags(cli, demoApi, nullptr);
-    cli.footer("Demo keys:\n" + keyHelpText());
 
     SceneOverrides renderFlags;
     std::string renderScene, renderOut, backendName = "egl";
@@ -100,7 +144,15 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
     CLI::App* reference = cli.add_subcommand("reference", "Ray-cast the exact spheres on the CPU to a PNG");
     reference->add_option("scene", referenceScene, "Scene file (JSON)");
     addSceneFlags(*reference, referenceFlags);
-    reference->add_option("--out", referenceOut, "Output PNG")->required();
+    reference->add_option("--out", referenceOut, "Output PNG, or - for standard output")->required();
+    // render's context flags, so one command line switches between the two: checked, then unused (the
+    // reference is computed on the CPU).
+    std::string referenceBackend = "egl", referenceApi = "gl";
+    bool referenceSpecialize = true;
+    reference->add_option("--backend", referenceBackend, "Accepted as render takes it; no effect (CPU)");
+    reference->add_option("--api", referenceApi, "Accepted as render takes it; no effect (CPU)");
+    reference->add_option("--specialize", referenceSpecialize, "Accepted as render takes it; no effect (CPU)")
+        ->transform(CLI::IsMember({"on", "off", "true", "false", "1", "0"}, CLI::ignore_case));
 
     BenchOptions bench;
     std::string benchBackend = "egl", benchSize = "800x600", benchJson;
@@ -145,6 +197,8 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
         ->capture_default_str()
         ->check(CLI::Range(1, 1000));
 
+    // Set last: subcommands made before it would inherit it, and their --help is not about the demo's keys.
+    cli.footer("Demo keys:\n" + keyHelpText());
     try {
         cli.parse(argc, argv);
     } catch (const CLI::Success& e) {
@@ -156,14 +210,15 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
         // A mistyped subcommand lands in the demo's scene argument; name it rather than the flags after it.
         // The error_code overload: a name too long to stat is not a scene file either, not a run-time error.
+        const std::string hints = didYouMean(cli, argc, argv);
         std::error_code ec;
-        if (!demoScene.empty() && !std::filesystem::exists(demoScene, ec))
+        if (hints.empty() && !demoScene.empty() && !std::filesystem::exists(demoScene, ec))
             throw InputError(
                 "\"" + demoScene +
                 "\" is neither a subcommand (render, reference, bench, report) nor a scene file");
         std::ostringstream out, err;
         cli.exit(e, out, err); // CLI11's message naming the argument, and its "Run with --help" hint
-        throw InputError(withoutTrailingNewlines(err.str()));
+        throw InputError(withoutTrailingNewlines(err.str()) + hints);
     }
 
     if (*render) {
@@ -192,6 +247,8 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
         command.eglDevice = reportDevice;
     } else if (*reference) {
         command.kind = ParsedCommand::Kind::Reference;
+        command.backend = referenceBackend;
+        command.api = referenceApi;
         command.scene = referenceScene;
         command.overrides = referenceFlags;
         command.out = referenceOut;

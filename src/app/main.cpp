@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <filesystem>
 
 #include "app/bench.h"
 #include "app/cli.h"
@@ -17,6 +18,13 @@ namespace {
 
 using namespace shadelab;
 
+// Valid values that are probably a mistake (scene.h sceneWarnings), on standard error; the run goes on.
+void warnAbout(const Scene& scene, const std::string& file) {
+    for (const std::string& warning : sceneWarnings(scene))
+        std::fprintf(stderr, "shadelab: warning: %s%s\n", file.empty() ? "" : printable(file + ": ").c_str(),
+                     printable(warning).c_str());
+}
+
 // Runs what the command line asks for (its parsing lives in app/cli.cpp, where the fuzzer reaches it).
 int run(int argc, char** argv) {
     const app::ParsedCommand command = app::parseCommandLine(argc, argv);
@@ -29,6 +37,7 @@ int run(int argc, char** argv) {
         app::checkOutputPath(command.out);
         refuseOverwritingInput(command.out, "--out", command.scene); // before anything is rendered
         const Scene scene = app::composeScene(command.scene, command.overrides);
+        warnAbout(scene, command.scene);
         const ContextRequest context =
             app::contextFromArguments(command.backend, command.api, command.eglDevice);
         return app::runRender(scene, context, command.out, command.specialize, command.verbose);
@@ -50,9 +59,11 @@ int run(int argc, char** argv) {
         return app::runBench(bench);
     }
     case Kind::Reference: {
+        (void)app::contextFromArguments(command.backend, command.api, ""); // validated, as render would
         app::checkOutputPath(command.out);
         refuseOverwritingInput(command.out, "--out", command.scene);
         const Scene scene = app::composeScene(command.scene, command.overrides);
+        warnAbout(scene, command.scene);
         return app::runReference(scene, command.out);
     }
     case Kind::Report: {
@@ -73,8 +84,14 @@ int run(int argc, char** argv) {
         break;
     }
     app::checkOutputPath(command.demo.showcaseOut, "--showcase-out");
+    if (std::error_code error; !std::filesystem::is_directory(command.demo.screenshotDir, error))
+        throw InputError("--screenshot-dir: " + printable(command.demo.screenshotDir.string()) +
+                         (std::filesystem::exists(command.demo.screenshotDir, error)
+                              ? " is not a folder; name the folder S saves its screenshots in"
+                              : " does not exist; create it (mkdir -p) or name an existing folder"));
     refuseOverwritingInput(command.demo.showcaseOut, "--showcase-out", command.scene);
     const Scene scene = app::composeScene(command.scene, command.overrides);
+    warnAbout(scene, command.scene);
     app::DemoOptions demo = command.demo;
     demo.api = app::apiFromArgument(command.api);
     if (command.overrides.size) { // the window takes --size when given, never the scene's image size

@@ -177,6 +177,52 @@ TEST_F(CliTest, EglDevicesAreListedAndChosen) {
     EXPECT_NE(verbose.err.find("EGL device 0 ("), std::string::npos) << describe(verbose);
 }
 
+// Issue 15: reference takes render's context flags (checked, no effect), so one command line switches.
+TEST_F(CliTest, ReferenceAcceptsRendersContextFlags) {
+    for (const std::vector<std::string>& flags :
+         {std::vector<std::string>{"--backend", "osmesa", "--specialize", "off"},
+          std::vector<std::string>{"--backend", "egl", "--api", "gles"}}) {
+        std::vector<std::string> args = {"reference", "--size", "32x32", "--out", "r.png"};
+        args.insert(args.end(), flags.begin(), flags.end());
+        const Outcome run = shadelab(args);
+        ASSERT_EQ(run.exitCode, 0) << describe(run);
+        EXPECT_TRUE(pngSize(readFile(dir_ / "r.png")));
+    }
+}
+
+// Issue 15: colours are linear 0..1; [200, 30, 30] is valid but is a warning naming the field.
+TEST_F(CliTest, ColourAboveTenIsAWarningNamingTheField) {
+    writeFile(dir_ / "scene.json", R"({ "objects": [ { "material": { "diffuse": [200, 30, 30] } } ] })");
+    const Outcome run = shadelab({"render", "scene.json", "--size", "16x16", "--out", "out.png"});
+    ASSERT_EQ(run.exitCode, 0) << describe(run);
+    EXPECT_NE(run.err.find("warning: scene.json: objects[0].material.diffuse: [200, 30, 30]"),
+              std::string::npos)
+        << describe(run);
+    EXPECT_NE(run.err.find("linear 0..1"), std::string::npos) << describe(run);
+    const Outcome plain = shadelab({"render", "--size", "16x16", "--out", "plain.png"});
+    EXPECT_EQ(plain.err.find("warning"), std::string::npos) << describe(plain);
+}
+
+// Issue 15: a subcommand's --help is about that subcommand, without the demo's key table.
+TEST_F(CliTest, SubcommandHelpLeavesOutTheDemoKeys) {
+    for (const char* command : {"render", "reference", "report", "bench"}) {
+        const Outcome run = shadelab({command, "--help"});
+        EXPECT_EQ(run.exitCode, 0) << describe(run);
+        EXPECT_EQ(run.out.find("Demo keys"), std::string::npos) << command << "\n" << run.out;
+    }
+    const Outcome top = shadelab({"--help"});
+    EXPECT_NE(top.out.find("Demo keys"), std::string::npos) << top.out;
+}
+
+// Issue 15: bench's table carries no colour escapes when it is not written to a terminal.
+TEST_F(CliTest, BenchWritesNoColourEscapesIntoAPipe) {
+    const Outcome run =
+        shadelab({"bench", "--filter", "sphere/build/level0/", "--frames", "3", "--warmup", "0"});
+    ASSERT_EQ(run.exitCode, 0) << describe(run);
+    EXPECT_NE(run.out.find("sphere/build/level0"), std::string::npos) << run.out;
+    EXPECT_EQ(run.out.find('\x1b'), std::string::npos) << "an ANSI escape in piped output";
+}
+
 TEST_F(CliTest, ReferenceWithoutSceneWritesOnlyThePng) {
     const Outcome run = shadelab({"reference", "--size", "64x64", "--out", "ref.png"});
     ASSERT_EQ(run.exitCode, 0) << describe(run);
@@ -415,6 +461,21 @@ const BadInput kBadInputs[] = {
      .prepare = Prepare::SceneFile,
      .scene = R"({ "shading": 3 })"},
     // The demo validates its arguments before it looks for a display or renders the showcase.
+    // Issue 15: messages that say what to do.
+    {.name = "json_comment",
+     .args = {"render", "scene.json", "--out", "out.png"},
+     .mentions = {"scene.json", "JSON has no comments"},
+     .prepare = Prepare::SceneFile,
+     .scene = "{\n  // flat, for the handout\n  \"shading\": \"flat\"\n}\n"},
+    {.name = "option_misspelt",
+     .args = {"render", "--shadding", "flat", "--out", "out.png"},
+     .mentions = {"--shadding", "did you mean --shading?"}},
+    {.name = "reference_backend_bogus",
+     .args = {"reference", "--backend", "bogus", "--size", "8x8", "--out", "out.png"},
+     .mentions = {"--backend", "bogus"}},
+    {.name = "bench_filter_matches_nothing",
+     .args = {"bench", "--filter", "no-such-benchmark", "--frames", "3", "--warmup", "0"},
+     .mentions = {"--filter", "no-such-benchmark", "matches no benchmark"}},
     {.name = "api_bogus",
      .args = {"render", "--api", "vulkan", "--size", "8x8", "--out", "out.png"},
      .mentions = {"--api", "vulkan", "gl", "gles"}},
