@@ -95,7 +95,7 @@ ViewVolume viewVolumeFromFovy(double fovyDeg, double aspect, double near, double
 glm::dmat4 orthographicClipFromView(const ViewVolume& vv) {
     validateViewVolume(vv);
     const double l = vv.left, r = vv.right, b = vv.bottom, t = vv.top;
-    const double n = -vv.near, f = -vv.far; // the seed's z-coordinates
+    const double n = -vv.near, f = -vv.far; // DESIGN §2's z-coordinates
     glm::dmat4 m(1.0);
     m[0][0] = 2 / (r - l);
     m[1][1] = 2 / (t - b);
@@ -107,7 +107,7 @@ glm::dmat4 orthographicClipFromView(const ViewVolume& vv) {
 glm::dmat4 perspectiveClipFromView(const ViewVolume& vv) {
     validateViewVolume(vv);
     const double l = vv.left, r = vv.right, b = vv.bottom, t = vv.top;
-    const double n = -vv.near, f = -vv.far; // the seed's z-coordinates
+    const double n = -vv.near, f = -vv.far; // DESIGN §2's z-coordinates
     glm::dmat4 m(0.0);                      // DESIGN §2, written row by row: m[column][row]
     m[0][0] = -2 * n / (r - l);
     m[2][0] = (r + l) / (r - l);

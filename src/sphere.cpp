@@ -185,7 +185,7 @@ SphereMesh buildSphereUnchecked(int level, VertexNormals normals) {
     if (normals == VertexNormals::Exact) {
         mesh.vertexNormals = mesh.positions; // the unit sphere's normal is its position
     } else {
-        // The seed's definition: the normalized average of the unit normals of the incident faces.
+        // DESIGN §1's definition: the normalized average of the unit normals of the incident faces.
         mesh.vertexNormals.assign(mesh.positions.size(), glm::dvec3(0));
         for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
             for (int k = 0; k < 3; ++k) mesh.vertexNormals[mesh.triangles[i][k]] += mesh.faceNormals[i];

@@ -1,5 +1,5 @@
 // Camera frame and projection matrices (DESIGN §2), computed with GLM in double.
-// Interface: near and far are positive distances. Internally the seed's formulas use the z-coordinates
+// Interface: near and far are positive distances. Internally DESIGN §2's formulas use the z-coordinates
 // n = −near and f = −far. Near maps to NDC z = +1 and far to −1, so visibility needs GL_GREATER with a
 // depth clear of 0 (see gl/renderer.cpp).
 #pragma once
