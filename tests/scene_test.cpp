@@ -276,6 +276,11 @@ struct ErrorCase {
     std::vector<std::string> expected;
 };
 
+// Test names and failure messages show the case by its name, not as bytes.
+inline void PrintTo(const ErrorCase& c, std::ostream* os) {
+    *os << c.name;
+}
+
 std::string light(const std::string& body) {
     return R"({"lights": [)" + body + "]}";
 }

@@ -278,7 +278,42 @@ bool DemoState::apply(Command command) {
     case Command::Quit:
         return false;
     }
+    lastChange_ = describeChange(command);
     return true;
+}
+
+// What a key changed, in words: on a sphere orthographic and perspective, or exact and averaged normals,
+// look alike, so the title says it (issue 15).
+std::string DemoState::describeChange(Command command) const {
+    const Scene scene = drawn();
+    switch (command) {
+    case Command::Flat:
+    case Command::Gouraud:
+    case Command::Phong:
+    case Command::Toon:
+        return std::string(toString(scene.shading)) + " shading";
+    case Command::ToggleLighting:
+        return std::string(toString(scene.lighting)) + " lighting";
+    case Command::LevelUp:
+    case Command::LevelDown:
+        return "level " + std::to_string(level());
+    case Command::AutoLevel:
+        return (autoLevel() ? "automatic level on: level " : "automatic level off: level ") +
+               std::to_string(level());
+    case Command::ToggleProjection:
+        return orthographic_ ? "orthographic projection" : "perspective projection";
+    case Command::ToggleNormals:
+        return scene.vertexNormals == VertexNormals::Exact ? "exact vertex normals"
+                                                           : "averaged vertex normals";
+    case Command::NextMaterial:
+        return "material: " + materialName();
+    case Command::NextLights:
+        return "lights: " + lightsName();
+    case Command::ResetView:
+        return "view reset";
+    default: // the panel and the help show themselves
+        return lastChange_;
+    }
 }
 
 // Each object one level up or down from the level it is drawn at ("auto" resolved first).
@@ -347,7 +382,8 @@ std::string windowTitle(const DemoState& state, double frameMs) {
     std::snprintf(timing, sizeof timing, "%.2f ms", frameMs);
     return "shadelab — " + modes(state.drawn()) + " | level " + std::to_string(state.level()) +
            (state.autoLevel() ? " (auto)" : "") + " | " + std::to_string(state.triangleCount()) +
-           " triangles | " + timing + " | H: keys";
+           " triangles | " + timing + " | H: keys" +
+           (state.lastChange().empty() ? "" : " | " + state.lastChange());
 }
 
 std::string statusText(const DemoState& state) {

@@ -108,6 +108,8 @@ public:
     int level() const;
     bool autoLevel() const;
     std::string materialName() const;
+    // What the last key changed, in words ("orthographic projection", "material: metal"); "" at first.
+    const std::string& lastChange() const { return lastChange_; }
     std::string lightsName() const;
     std::size_t triangleCount() const;
     bool orthographic() const { return orthographic_; }
@@ -117,6 +119,7 @@ private:
     void toggleLighting();
     void setShininess(std::size_t object, double exponent);
     double presetExponent(double alpha) const;
+    std::string describeChange(Command command) const;
 
     Scene initial_, scene_;
     OrbitCamera initialCamera_, camera_;
@@ -126,6 +129,7 @@ private:
     std::vector<double> exponents_;
     bool orthographic_ = false;
     int viewportWidth_ = 0, viewportHeight_ = 0;
+    std::string lastChange_;
     int material_ = 0; // 0: the scene's own, i: materialPresets()[i − 1]
     int lights_ = 0;   // 0: the scene's own, i: lightPresets()[i − 1]
 };

@@ -441,6 +441,25 @@ TEST(DemoLevel, AutoLevelAndTitleFollowTheDrawnSize) {
     EXPECT_EQ(state.level(), drawnLevel + 1) << "+ from auto is one above the level shown";
 }
 
+// Issue 15: with the panel hidden, what O, N, M, L (and the other keys) changed is in the title's end.
+TEST(DemoTitle, SaysWhatTheLastKeyChanged) {
+    DemoState state{Scene{}};
+    EXPECT_EQ(windowTitle(state, 0).find("| H: keys |"), std::string::npos) << "nothing changed yet";
+    const std::pair<Command, const char*> steps[] = {{Command::ToggleProjection, "orthographic projection"},
+                                                     {Command::ToggleProjection, "perspective projection"},
+                                                     {Command::ToggleNormals, "exact vertex normals"},
+                                                     {Command::ToggleNormals, "averaged vertex normals"},
+                                                     {Command::NextMaterial, "material: matte"},
+                                                     {Command::NextLights, "lights: point"},
+                                                     {Command::Flat, "flat shading"},
+                                                     {Command::ResetView, "view reset"}};
+    for (const auto& [command, words] : steps) {
+        state.apply(command);
+        const std::string title = windowTitle(state, 0);
+        EXPECT_TRUE(title.ends_with(std::string("| H: keys | ") + words)) << title;
+    }
+}
+
 TEST(DemoLevel, TriangleCountIsFourToTheLevelPlusOnePerObject) {
     auto expected = [](const Scene& s) {
         std::size_t total = 0;

@@ -67,6 +67,9 @@ constexpr std::string_view kScene = R"({"image": {"width": 32, "height": 32}})";
 constexpr std::string_view kPrecious = "the bytes of an earlier file, which must survive\n";
 
 enum class User { Root, Nobody };
+inline void PrintTo(User user, std::ostream* os) {
+    *os << (user == User::Root ? "root" : "nobody");
+}
 
 // Each test in a fresh folder owned by the user it runs as (mode 0700 for nobody: root can still enter).
 class OutputSafety : public ::testing::TestWithParam<User> {

@@ -35,6 +35,11 @@ struct AutoCase {
     bool perspective;
 };
 
+// Test names and failure messages show the case by its name, not as bytes.
+inline void PrintTo(const AutoCase& c, std::ostream* os) {
+    *os << c.name;
+}
+
 class AutoSubdivision : public testing::TestWithParam<AutoCase> {};
 
 TEST_P(AutoSubdivision, ChosenLevelIsTheSmallestWithinTolerance) {

@@ -42,6 +42,11 @@ struct AnalyticCase {
     const char* name;
     std::function<Scene()> scene;
 };
+
+// Test names and failure messages show the case by its name, not as bytes.
+inline void PrintTo(const AnalyticCase& c, std::ostream* os) {
+    *os << c.name;
+}
 const std::vector<AnalyticCase>& analyticCases();
 
 } // namespace shadelab::test

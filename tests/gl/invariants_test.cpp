@@ -143,6 +143,11 @@ struct StiffCase {
     std::function<void(Scene&)> change;
 };
 
+// Test names and failure messages show the case by its name, not as bytes.
+inline void PrintTo(const StiffCase& c, std::ostream* os) {
+    *os << c.name;
+}
+
 const StiffCase kStiffCases[] = {
     {"viewer_opposite_light", // v = −l at the silhouette: the light is straight behind the sphere
      [](Scene& s) {

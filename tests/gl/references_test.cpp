@@ -23,6 +23,11 @@ struct ReferenceCase {
     Tolerance tolerance;
 };
 
+// Test names and failure messages show the case by its name, not as bytes.
+inline void PrintTo(const ReferenceCase& c, std::ostream* os) {
+    *os << c.name;
+}
+
 // The tolerances, with their reasons:
 // - Same machine kind, same Mesa: llvmpipe is deterministic, so most pixels match exactly. A different
 //   CPU gives llvmpipe other SIMD widths and FMA use: ±1/255 per channel from float rounding (maxDelta 1,

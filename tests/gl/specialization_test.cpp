@@ -15,6 +15,11 @@ struct CrossCheckCase {
     std::function<void(Scene&)> change;
 };
 
+// Test names and failure messages show the case by its name, not as bytes.
+inline void PrintTo(const CrossCheckCase& c, std::ostream* os) {
+    *os << c.name;
+}
+
 Light light(LightType type, glm::dvec3 position, glm::dvec3 color) {
     Light l;
     l.type = type;
