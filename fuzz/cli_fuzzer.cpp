@@ -51,6 +51,10 @@ void checkParsed(const app::ParsedCommand& command) {
         // --out is required (CLI11 for reference, parseCommandLine for render); an empty value is left to
         // checkOutputPath.
         return;
+    case Kind::Compare:
+        if (command.compare.actual.empty() || command.compare.expected.empty())
+            crash("compare without its two images", "");
+        return;
     case Kind::EglDevices:
         if (command.eglDevice != "list") crash("a device listing not asked for", command.eglDevice);
         return;

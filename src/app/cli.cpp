@@ -173,6 +173,19 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
     benchCommand->add_option("--json", benchJson, "Also write every figure and ratio to this JSON file");
 
     ParsedCommand command;
+    CLI::App* compareCommand = cli.add_subcommand(
+        "compare", "Compare two PNGs as the image tests do: exit 0 within the tolerance, 1 beyond it");
+    compareCommand->add_option("actual", command.compare.actual, "The image under test (PNG)")->required();
+    compareCommand->add_option("expected", command.compare.expected, "The reference (PNG)")->required();
+    compareCommand->add_option("--max", command.compare.maxDelta, "Largest per-channel difference, 0..255")
+        ->capture_default_str();
+    compareCommand->add_option("--mean", command.compare.meanDelta, "Largest mean per-channel difference")
+        ->capture_default_str();
+    compareCommand->add_option("--outliers", command.compare.outliers, "Pixels allowed over --max")
+        ->capture_default_str();
+    compareCommand->add_option("--mask", command.compare.mask, "PNG: black pixels are not compared");
+    compareCommand->add_option("--diff", command.compare.diff, "Where to write the difference ×8 on failure");
+
     std::string reportScene, reportBackend = "egl";
     CLI::App* reportCommand = cli.add_subcommand(
         "report",
@@ -215,7 +228,7 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
         if (hints.empty() && !demoScene.empty() && !std::filesystem::exists(demoScene, ec))
             throw InputError(
                 "\"" + demoScene +
-                "\" is neither a subcommand (render, reference, bench, report) nor a scene file");
+                "\" is neither a subcommand (render, reference, report, bench, compare) nor a scene file");
         std::ostringstream out, err;
         cli.exit(e, out, err); // CLI11's message naming the argument, and its "Run with --help" hint
         throw InputError(withoutTrailingNewlines(err.str()) + hints);
@@ -245,6 +258,8 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
         command.backend = reportBackend;
         command.api = reportApi;
         command.eglDevice = reportDevice;
+    } else if (*compareCommand) {
+        command.kind = ParsedCommand::Kind::Compare;
     } else if (*reference) {
         command.kind = ParsedCommand::Kind::Reference;
         command.backend = referenceBackend;

@@ -12,7 +12,7 @@
 namespace shadelab::app {
 
 struct ParsedCommand {
-    enum class Kind { Exit, Demo, Render, Reference, Bench, Report, EglDevices };
+    enum class Kind { Exit, Demo, Render, Reference, Bench, Report, EglDevices, Compare };
     Kind kind = Kind::Demo;
 
     // Kind::Exit (--help, --help-all): print `text` to stdout and exit with `exitCode`.
@@ -35,6 +35,7 @@ struct ParsedCommand {
     bool reportNoAuto = false;
     bool reportNoPlot = false;
     int reportFrames = 20, reportWarmup = 3;
+    CompareOptions compare; // Compare
 };
 
 // Throws InputError for anything CLI11 rejects, with CLI11's message (naming the argument) and its

@@ -95,4 +95,41 @@ int runShowcase(const Scene& scene, const ContextRequest& context, const std::fi
     return kExitOk;
 }
 
+int runCompare(const CompareOptions& o) {
+    auto read = [](const std::string& path, const char* what) {
+        if (std::error_code error; !std::filesystem::is_regular_file(path, error))
+            throw InputError(std::string(what) + ": " + printable(path) + " is not a readable file");
+        try {
+            return readPng(path);
+        } catch (const RuntimeError& e) {
+            throw InputError(std::string(what) + ": " + e.what());
+        }
+    };
+    if (o.maxDelta < 0 || o.maxDelta > 255 || !(o.meanDelta >= 0) || o.outliers < 0)
+        throw InputError("--max 0..255, --mean >= 0 and --outliers >= 0, got " + std::to_string(o.maxDelta) +
+                         ", " + std::to_string(o.meanDelta) + ", " + std::to_string(o.outliers));
+    Image actual = read(o.actual, "ACTUAL");
+    const Image expected = read(o.expected, "EXPECTED");
+    if (!o.mask.empty()) {
+        const Image mask = read(o.mask, "--mask");
+        if (mask.width != actual.width || mask.height != actual.height)
+            throw InputError("--mask: " + std::to_string(mask.width) + "x" + std::to_string(mask.height) +
+                             ", but ACTUAL is " + std::to_string(actual.width) + "x" +
+                             std::to_string(actual.height));
+        // Black in the mask: not compared (the expected pixel is taken as the actual one).
+        if (expected.width == actual.width && expected.height == actual.height)
+            for (std::size_t i = 0; i < mask.rgba.size(); i += 4)
+                if (mask.rgba[i] == 0 && mask.rgba[i + 1] == 0 && mask.rgba[i + 2] == 0)
+                    std::copy_n(&expected.rgba[i], 4, &actual.rgba[i]);
+    }
+    const Comparison c = compareImages(actual, expected, Tolerance{o.maxDelta, o.meanDelta, o.outliers});
+    std::printf("%s\n", c.summary().c_str());
+    if (c.passed) return kExitOk;
+    if (!o.diff.empty() && c.sizeMatches) {
+        writePng(diffImage(actual, expected), o.diff);
+        std::printf("difference ×8 written to %s\n", printable(o.diff).c_str());
+    }
+    return kExitRuntimeError; // as cmp and diff: 1 is "they differ"
+}
+
 } // namespace shadelab::app

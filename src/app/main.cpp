@@ -78,6 +78,9 @@ int run(int argc, char** argv) {
         report.warmup = command.reportWarmup;
         return app::runReport(report);
     }
+    case Kind::Compare:
+        if (!command.compare.diff.empty()) app::checkOutputPath(command.compare.diff, "--diff");
+        return app::runCompare(command.compare);
     case Kind::EglDevices:
         return app::runListEglDevices(app::apiFromArgument(command.api));
     case Kind::Demo:

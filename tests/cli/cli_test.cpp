@@ -29,6 +29,7 @@
 #include <gtest/gtest.h>
 
 #include "cli/run_process.h"
+#include "shadelab/image.h"
 
 namespace {
 
@@ -175,6 +176,34 @@ TEST_F(CliTest, EglDevicesAreListedAndChosen) {
     const Outcome verbose =
         shadelab({"render", "--size", "8x8", "--egl-device", "0", "--verbose", "--out", "v.png"});
     EXPECT_NE(verbose.err.find("EGL device 0 ("), std::string::npos) << describe(verbose);
+}
+
+// Issue 15, the regression kit: `shadelab compare` is the tests' comparison from a shell. 0 within the
+// tolerance, 1 beyond it (the figures printed, --diff written), 2 for a file that is not there; a mask's
+// black pixels are not compared.
+TEST_F(CliTest, CompareJudgesAsTheTestsDo) {
+    ASSERT_EQ(shadelab({"render", "--size", "64x64", "--out", "a.png"}).exitCode, 0);
+    ASSERT_EQ(shadelab({"render", "--size", "64x64", "--shading", "flat", "--out", "b.png"}).exitCode, 0);
+    const Outcome same = shadelab({"compare", "a.png", "a.png"});
+    EXPECT_EQ(same.exitCode, 0) << describe(same);
+    EXPECT_TRUE(same.out.starts_with("pass: max delta 0")) << same.out;
+    const Outcome differ = shadelab({"compare", "a.png", "b.png", "--diff", "d.png"});
+    EXPECT_EQ(differ.exitCode, 1) << describe(differ);
+    EXPECT_TRUE(differ.out.starts_with("FAIL: max delta ")) << differ.out;
+    EXPECT_TRUE(pngSize(readFile(dir_ / "d.png"))) << "the difference image";
+    const shadelab::Image a = shadelab::readPng(dir_ / "a.png"), b = shadelab::readPng(dir_ / "b.png");
+    const shadelab::Comparison c = shadelab::compareImages(a, b, shadelab::Tolerance{});
+    EXPECT_NE(differ.out.find("max delta " + std::to_string(c.maxDelta) + ","), std::string::npos)
+        << "the same figure as compareImages: " << c.summary() << " vs " << differ.out;
+    const Outcome loose = shadelab({"compare", "a.png", "b.png", "--max", "255", "--mean", "255"});
+    EXPECT_EQ(loose.exitCode, 0) << describe(loose);
+    const shadelab::Image black(64, 64); // all zero: nothing is compared
+    shadelab::writePng(black, dir_ / "mask.png");
+    const Outcome masked = shadelab({"compare", "a.png", "b.png", "--mask", "mask.png"});
+    EXPECT_EQ(masked.exitCode, 0) << describe(masked);
+    const Outcome missing = shadelab({"compare", "a.png", "nothere.png"});
+    EXPECT_EQ(missing.exitCode, 2) << describe(missing);
+    EXPECT_NE(missing.err.find("nothere.png"), std::string::npos) << describe(missing);
 }
 
 // Issue 15: reference takes render's context flags (checked, no effect), so one command line switches.

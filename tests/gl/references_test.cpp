@@ -120,18 +120,32 @@ TEST_P(References, MatchesReferenceImage) {
         std::printf("blessed %s\n", expectedPath.c_str());
         return;
     }
-    ASSERT_TRUE(fs::exists(expectedPath))
-        << "missing reference " << expectedPath << "; look at the picture, then run scripts/bless.sh";
+    const fs::path failures = fs::current_path() / "reference-failures";
+    const std::string stem = std::string(toString(renderer->backend())) + "_" + c.name;
+    if (!fs::exists(expectedPath)) { // never created silently: the picture is written to be looked at
+        fs::create_directories(failures);
+        writePng(actual, failures / (stem + ".actual.png"));
+        FAIL() << "missing reference " << expectedPath << "; the render is "
+               << (failures / (stem + ".actual.png")) << ": look at it, then run scripts/bless.sh " << c.name;
+    }
     const Comparison result = compareImages(actual, readPng(expectedPath), c.tolerance);
     if (!result.passed) {
-        const fs::path failures = fs::current_path() / "reference-failures";
         fs::create_directories(failures);
-        const std::string stem = std::string(toString(renderer->backend())) + "_" + c.name;
+        // The references are one driver's pictures: on another, say so (the difference may be the driver's).
+        std::string madeWith;
+        std::getline(std::ifstream(kReferenceDir / "RENDERER.txt"), madeWith);
+        const std::string driverNote = madeWith == renderer->rendererString()
+                                           ? ""
+                                           : "\n  the references were made with \"" + madeWith +
+                                                 "\"; this is \"" + renderer->rendererString() +
+                                                 "\": another driver may rasterize differently — look at the "
+                                                 "diff, and bless only if the "
+                                                 "difference is the driver's (scripts/bless.sh)";
         writePng(actual, failures / (stem + ".actual.png"));
         writePng(diffImage(actual, readPng(expectedPath)), failures / (stem + ".diff.png"));
         ADD_FAILURE() << c.name << ": " << result.summary() << "\n  expected: " << expectedPath
                       << "\n  actual:   " << (failures / (stem + ".actual.png"))
-                      << "\n  diff ×8:  " << (failures / (stem + ".diff.png"));
+                      << "\n  diff ×8:  " << (failures / (stem + ".diff.png")) << driverNote;
     }
 }
 
