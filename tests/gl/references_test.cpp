@@ -1,5 +1,5 @@
-// Regression images: every shading × lighting variant, and one case per projection, light type and
-// transform, rendered at 128×128 and compared with a reference PNG in tests/references/.
+// Regression images: the scenes in tests/references/*.json rendered at their size (128×128) and compared
+// with the PNG beside each.
 // The references are anchored to the equations by analytic_test.cpp (an independent CPU ray-cast), not
 // only to themselves. Re-bless with scripts/bless.sh after looking at the new pictures.
 #include <algorithm>
@@ -39,67 +39,21 @@ constexpr Tolerance kLlvmpipeTolerance{1, 0.05, 24};
 // jumps a whole band (~40/255), so such pixels are budgeted, not the delta loosened.
 constexpr Tolerance kToonTolerance{1, 0.3, 64};
 
-// Two lights, a warm point light and a cool directional light, on a level-3 sphere: coarse enough to
-// show the facets of flat shading and the polygonal highlight of Gouraud shading.
-Scene baseScene() {
-    Scene scene = litSphereScene(128, LightType::Point);
-    scene.objects[0].subdivisions = 3;
-    Light fill;
-    fill.type = LightType::Directional;
-    fill.direction = {1, 0.5, -0.3};
-    fill.diffuse = {0.2, 0.3, 0.6};
-    fill.specular = {0.3, 0.3, 0.5};
-    scene.lights.push_back(fill);
-    return scene;
-}
-
+// The cases are the scenes in tests/references/*.json, each beside its PNG: adding a case is adding a scene
+// file and blessing its picture, with no rebuild (the folder is read each run; ctest's per-case names are
+// those of the last build, and ReferenceFiles.EverySceneMatchesItsPicture covers files added since). Toon
+// scenes take the toon tolerance, all others the llvmpipe one. The set: every shading ×
+// lighting variant of a level-3 sphere under a warm point light and a cool directional fill light, and at
+// level 5 one case per projection, light type, transform, normal kind and the eight-light maximum.
 std::vector<ReferenceCase> cases() {
     std::vector<ReferenceCase> out;
-    for (ShadingMode mode : kShadingModes) {
-        for (LightingModel model : kLightingModels) {
-            std::string name = std::string(toString(mode)) + "_" + std::string(toString(model));
-            std::replace(name.begin(), name.end(), '-', '_');
-            out.push_back({name,
-                           [=] {
-                               Scene s = baseScene();
-                               s.shading = mode;
-                               s.lighting = model;
-                               return s;
-                           },
-                           mode == ShadingMode::Toon ? kToonTolerance : kLlvmpipeTolerance});
-        }
+    for (const auto& entry : fs::directory_iterator(kReferenceDir)) {
+        if (entry.path().extension() != ".json") continue;
+        const Scene scene = loadScene(entry.path());
+        out.push_back({entry.path().stem().string(), [scene] { return scene; },
+                       scene.shading == ShadingMode::Toon ? kToonTolerance : kLlvmpipeTolerance});
     }
-    auto variant = [&](std::string name, std::function<void(Scene&)> change) {
-        out.push_back({std::move(name),
-                       [=] {
-                           Scene s = baseScene();
-                           s.objects[0].subdivisions = 5;
-                           change(s);
-                           return s;
-                       },
-                       kLlvmpipeTolerance});
-    };
-    variant("orthographic",
-            [](Scene& s) { s.projection = {ProjectionType::Orthographic, 40, -1.5, 1.5, -1.5, 1.5, 1, 10}; });
-    variant("off_centre_frustum",
-            [](Scene& s) { s.projection = {ProjectionType::Frustum, 40, -0.1, 0.25, -0.2, 0.1, 0.5, 20}; });
-    variant("spot_light", [](Scene& s) { s.lights = litSphereScene(128, LightType::Spot).lights; });
-    variant("ellipsoid_mirrored", [](Scene& s) { s.objects[0].scale = {-1.3, 0.7, 0.9}; });
-    variant("exact_normals_gouraud", [](Scene& s) {
-        s.shading = ShadingMode::Gouraud;
-        s.vertexNormals = VertexNormals::Exact;
-        s.objects[0].subdivisions = 2;
-    });
-    variant("eight_lights", [](Scene& s) {
-        s.lights.clear();
-        for (int i = 0; i < kMaxLights; ++i) {
-            Light l;
-            l.position = {3 * std::cos(i * 0.785), 3 * std::sin(i * 0.785), 2};
-            l.diffuse = {0.15 + 0.1 * (i % 3), 0.15 + 0.1 * ((i + 1) % 3), 0.15 + 0.1 * ((i + 2) % 3)};
-            l.specular = l.diffuse;
-            s.lights.push_back(l);
-        }
-    });
+    std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
     return out;
 }
 
@@ -109,9 +63,7 @@ bool blessing() {
 
 class References : public testing::TestWithParam<ReferenceCase> {};
 
-TEST_P(References, MatchesReferenceImage) {
-    SHADELAB_REQUIRE_GL(renderer);
-    const ReferenceCase& c = GetParam();
+void checkReference(HeadlessRenderer* renderer, const ReferenceCase& c) {
     const Image actual = renderer->render(c.scene());
     const fs::path expectedPath = kReferenceDir / (c.name + ".png");
     if (blessing()) {
@@ -147,6 +99,33 @@ TEST_P(References, MatchesReferenceImage) {
                       << "\n  actual:   " << (failures / (stem + ".actual.png"))
                       << "\n  diff ×8:  " << (failures / (stem + ".diff.png")) << driverNote;
     }
+}
+
+TEST_P(References, MatchesReferenceImage) {
+    SHADELAB_REQUIRE_GL(renderer);
+    checkReference(renderer, GetParam());
+}
+
+// The folder as it is now, whatever the last build listed: a scene file added since is checked too.
+TEST(ReferenceFiles, EverySceneMatchesItsPicture) {
+    SHADELAB_REQUIRE_GL(renderer);
+    for (const ReferenceCase& c : cases()) {
+        SCOPED_TRACE(c.name);
+        checkReference(renderer, c);
+    }
+}
+
+// Every picture has its scene and every scene its picture (a scene without one fails in the test above).
+TEST(ReferenceFiles, EveryPngHasItsSceneJson) {
+    std::size_t pictures = 0;
+    for (const auto& entry : fs::directory_iterator(kReferenceDir)) {
+        if (entry.path().extension() != ".png") continue;
+        ++pictures;
+        fs::path scene = entry.path();
+        scene.replace_extension(".json");
+        EXPECT_TRUE(fs::exists(scene)) << entry.path().filename() << " has no " << scene.filename();
+    }
+    EXPECT_GE(pictures, 14u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, References, testing::ValuesIn(cases()),
