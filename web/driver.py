@@ -95,8 +95,13 @@ class Page:
         return self.js('return window.shadelab.applyFlags(arguments[0])', flags) if flags else ''
 
     def capture(self, width=0, height=0, kind='rgba8'):
-        shot = self.js('return window.shadelab.captureBase64(arguments[0], arguments[1], arguments[2])',
-                       width, height, kind)
+        from selenium.common.exceptions import JavascriptException
+        try:
+            shot = self.js('return window.shadelab.captureBase64(arguments[0], arguments[1], arguments[2])',
+                           width, height, kind)
+        except JavascriptException as e:  # the renderer's own message (e.g. a feature WebGL 2 lacks)
+            message = (e.msg or str(e)).split('\n')[0]
+            raise RuntimeError(message.replace('javascript error: ', '', 1)) from None
         return shot['width'], shot['height'], base64.b64decode(shot['rgba'])
 
 

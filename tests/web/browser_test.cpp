@@ -541,6 +541,12 @@ TEST_F(Browser, RenderScriptWritesThePngOrSaysWhy) {
     EXPECT_FALSE(fs::exists(dir_ / "b.png"));
     const Outcome folder = runWith({"render", "--out", "."}, dir_, options);
     EXPECT_EQ(folder.exitCode, 2) << folder.err;
+    // What WebGL 2 lacks is a run-time failure named by the renderer, as natively (DESIGN §7).
+    const Outcome reversed = runWith({"render", "--depth", "reversed", "--out", "r.png"}, dir_, options);
+    EXPECT_EQ(reversed.exitCode, 1) << reversed.err;
+    EXPECT_TRUE(reversed.err.starts_with("shadelab: depth reversed: needs glClipControl")) << reversed.err;
+    EXPECT_EQ(reversed.err.find("Stacktrace"), std::string::npos) << reversed.err;
+    EXPECT_FALSE(fs::exists(dir_ / "r.png"));
 }
 
 } // namespace
