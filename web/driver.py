@@ -224,6 +224,10 @@ def session():
                     'const e = document.querySelector(arguments[0]); if (!e) return false;'
                     'e.value = arguments[1]; e.dispatchEvent(new Event(arguments[2])); return true;',
                     request['selector'], request['value'], request.get('event', 'change'))}
+            elif op == 'element':  # what a user sees of one element: shown or not, and its text
+                answer = {'element': page.js(
+                    'const e = document.querySelector(arguments[0]);'
+                    'return e ? {hidden: e.hidden, text: e.textContent} : null;', request['selector'])}
             elif op == 'ui':
                 answer = {'ui': page.js('return window.shadelab.ui()')}
             elif op == 'message':

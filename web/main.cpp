@@ -156,7 +156,7 @@ EMSCRIPTEN_KEEPALIVE const char* shadelab_edit_scene(const char* json) {
 }
 
 // A key by its GLFW code (printable keys: their upper-case ASCII). 0: no binding; 1: applied; 2: the page
-// saves a screenshot (S); 3: quit (Esc), which a page cannot do.
+// saves a screenshot (S); 3: quit (Esc), which a page cannot do; 4: full screen (F11), which the page does.
 EMSCRIPTEN_KEEPALIVE int shadelab_key(int key) {
     const auto command = app::commandForKey(key);
     if (!command) return 0;
@@ -164,6 +164,7 @@ EMSCRIPTEN_KEEPALIVE int shadelab_key(int key) {
         page().dirty = true;
         return 1;
     }
+    if (*command == app::Command::ToggleFullScreen) return 4;
     return *command == app::Command::Screenshot ? 2 : 3;
 }
 
@@ -199,6 +200,8 @@ EMSCRIPTEN_KEEPALIVE const char* shadelab_ui() {
         {"help", app::keyHelpText()},
         {"showHelp", s.showHelp},
         {"showPanel", s.showPanel},
+        {"presenting", s.presenting},
+        {"presentation", app::presentationLabel(s)},
         {"matchHighlight", s.matchHighlight},
         {"level", s.level()},
         {"autoLevel", s.autoLevel()},

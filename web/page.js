@@ -87,6 +87,10 @@ async function shadelabStarted() {
     message = await loadUrl('scenes/showcase.json', 'showcase.json');
   }
   if (!message) message = applyUrlFlags();
+  // ?present (for a class): the presentation label on and larger panel text; ?ui-scale=S scales the panel.
+  if (params.has('present')) press(291);
+  const scale = Number(params.get('ui-scale') || (params.has('present') ? 1.75 : 1));
+  if (scale >= 0.5 && scale <= 4) $('panel').style.zoom = scale;
   showMessage(message);
   refresh();
   window.shadelab.ready = true;
@@ -140,6 +144,8 @@ function glfwKey(event) {
   if (event.code === 'NumpadSubtract') return 333;
   if (event.key === 'Escape') return 256;
   if (event.key === 'F1') return 290;
+  if (event.key === 'F2') return 291;
+  if (event.key === 'F11') return 300;
   if (event.key === '+' || event.key === '=') return 61;
   if (event.key === '-' || event.key === '_') return 45;
   if (event.key.length === 1) {
@@ -153,6 +159,10 @@ function press(code) {
   const result = api.key(code);
   if (result === 2) save();
   if (result === 3) showMessage('Esc closes the window version; in a browser, close the tab.');
+  if (result === 4) {
+    if (document.fullscreenElement) document.exitFullscreen().catch(() => {});
+    else document.documentElement.requestFullscreen().catch(() => {});
+  }
   refresh();
   return result;
 }
@@ -207,6 +217,8 @@ function refresh() {
   $('renderer').textContent = 'WebGL 2 (OpenGL ES 3.0 to the renderer): ' + ui.renderer;
   $('panel').hidden = !ui.showPanel;
   $('help').hidden = !ui.showHelp;
+  $('presentation').hidden = !ui.presenting;
+  $('presentation').textContent = ui.presentation;
   $('help-text').textContent = ui.help;
   if (ui.error) showMessage(ui.error);
   const scene = ui.current;

@@ -15,6 +15,8 @@ namespace shadelab {
 // Key codes are GLFW's (printable keys are their upper-case ASCII code); the few others used are here.
 inline constexpr int kKeyEscape = 256;
 inline constexpr int kKeyF1 = 290;
+inline constexpr int kKeyF2 = 291;
+inline constexpr int kKeyF11 = 300;
 inline constexpr int kKeyKeypadSubtract = 333;
 inline constexpr int kKeyKeypadAdd = 334;
 
@@ -48,6 +50,8 @@ public:
     bool shouldClose() const;
     void requestClose();
     void setTitle(const std::string& title);
+    // Full screen on the primary monitor at its current mode, and back to the window it was.
+    void toggleFullScreen();
     void framebufferSize(int& width, int& height) const;
     void swapBuffers();
     void waitEvents(double timeoutSeconds);

@@ -116,6 +116,10 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
     cli.add_option("--screenshot-dir", demo.screenshotDir, "Where S saves shadelab-NNN.png and .json")
         ->capture_default_str(); // checked in main.cpp, with a message as helpful as --out's
     cli.add_flag("--hide-panel", demo.hidePanel, "Start with the control panel hidden (C shows it)");
+    cli.add_flag("--present", demo.present,
+                 "For a class: the large label of mode, lighting, level and exponent (F2), larger text");
+    cli.add_option("--ui-scale", demo.uiScale, "Scale of the panel, help and label text, 0.5..4")
+        ->check(CLI::Range(0.5, 4.0));
     cli.add_flag("--gl-debug", demo.glDebug, "Ask for a KHR_debug context and print every GL message");
     std::string demoApi = "gl";
     addContextFlags(cli, demoApi, nullptr);

@@ -44,6 +44,8 @@ struct DemoOptions {
     bool hidePanel = false;                // start with the control panel hidden (C shows it)
     bool glDebug = false;                  // a KHR_debug context; every GL message is printed and counted
     Api api = Api::Gl;                     // --api: desktop OpenGL 3.3 core or OpenGL ES 3.0
+    bool present = false;                  // --present: the presentation label on, and larger text
+    double uiScale = 0;                    // --ui-scale; 0: 1, or 1.75 with --present
     int windowWidth = 0, windowHeight = 0; // --size; 0: a size fit for the screen, not the scene's image
 };
 

@@ -46,8 +46,12 @@ public:
     Demo(const Scene& scene, const DemoOptions& options)
         : options_(options), state_(scene), window_(options.windowWidth, options.windowHeight,
                                                     windowTitle(state_, 0), options.glDebug, options.api),
-          panel_(window_) {
+          uiScale_(options.uiScale > 0 ? options.uiScale
+                   : options.present   ? 1.75
+                                       : 1.0),
+          panel_(window_, uiScale_) {
         state_.showPanel = !options.hidePanel;
+        state_.presenting = options.present;
         if (options.glDebug && !gl::enableDebugOutput(&debugSink_))
             std::fprintf(stderr,
                          "shadelab: --gl-debug: the context has no KHR_debug; no GL messages will show\n");
@@ -87,7 +91,7 @@ private:
         window_.framebufferSize(width, height);
         if (width <= 0 || height <= 0) return; // minimized: nothing to draw, no NaN aspect
         // The panel is a column on the left; the picture takes the rest, framed as the scene defines it.
-        const int column = panelColumnWidth(width, state_.showPanel);
+        const int column = panelColumnWidth(width, state_.showPanel, uiScale_);
         const auto start = Clock::now();
         state_.setViewport(width - column, height);
         renderer_.render(state_.drawn(), width - column, height, column);
@@ -108,6 +112,7 @@ private:
             const auto command = commandForKey(key);
             if (!command || state_.apply(*command)) return;
             if (*command == Command::Quit) window_.requestClose();
+            if (*command == Command::ToggleFullScreen) window_.toggleFullScreen();
             if (*command == Command::Screenshot) saveScreenshot();
         } catch (const std::exception& e) {
             std::fprintf(stderr, "shadelab: key not handled: %s\n", printable(e.what()).c_str());
@@ -194,6 +199,7 @@ private:
     };
     DemoState state_;
     Window window_;
+    double uiScale_; // before the panel, which is made with it
     Panel panel_;
     gl::Renderer renderer_; // after the window: its GL objects go while the context lives
     FrameTimer timer_;

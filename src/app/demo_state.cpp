@@ -1,6 +1,7 @@
 #include "app/demo_state.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -32,6 +33,8 @@ const std::vector<KeyBinding>& bindings() {
         {{'S'}, "S", "save a screenshot (PNG + scene JSON)", Command::Screenshot},
         {{'C'}, "C", "show / hide the control panel", Command::TogglePanel},
         {{'H', kKeyF1}, "H / F1", "show / hide this help", Command::ToggleHelp},
+        {{kKeyF2}, "F2", "presentation label: mode, lighting, level, exponent", Command::TogglePresentation},
+        {{kKeyF11}, "F11", "full screen", Command::ToggleFullScreen},
         {{kKeyEscape}, "Esc", "quit", Command::Quit},
     };
     return kBindings;
@@ -155,7 +158,9 @@ void DemoState::zoom(double wheelSteps) {
     // Outside the objects comes first; inside the far plane where both fit.
     const double extent = sceneExtent(scene_, camera_.target);
     const double closest = extent + scene_.projection.near * 1.5;
-    const double farthest = std::max(closest, scene_.projection.far - extent);
+    // A millionth of the far distance short of it: at exactly far - extent the eye, rebuilt from its angles,
+    // can land an ulp beyond, and the object's back would touch the far plane.
+    const double farthest = std::max(closest, scene_.projection.far * (1 - 1e-6) - extent);
     camera_.distance = std::clamp(camera_.distance, closest, farthest);
     cameraMoved_ = true;
 }
@@ -274,6 +279,10 @@ bool DemoState::apply(Command command) {
     case Command::ToggleHelp:
         showHelp = !showHelp;
         break;
+    case Command::TogglePresentation:
+        presenting = !presenting;
+        break;
+    case Command::ToggleFullScreen:
     case Command::Screenshot:
     case Command::Quit:
         return false;
@@ -392,6 +401,22 @@ std::string statusText(const DemoState& state) {
            (state.orthographic() ? "orthographic" : "perspective") + ", " +
            (scene.vertexNormals == VertexNormals::Averaged ? "averaged" : "exact") +
            " normals\nmaterial: " + state.materialName() + ", lights: " + state.lightsName();
+}
+
+std::string presentationLabel(const DemoState& state) {
+    const Scene scene = state.drawn();
+    std::string label = std::string(toString(scene.shading)) + " shading\n" +
+                        std::string(toString(scene.lighting)) + " lighting | level " +
+                        std::to_string(state.level());
+    if (!scene.objects.empty()) {
+        char exponent[48];
+        std::snprintf(exponent, sizeof exponent, " | %s = %g",
+                      scene.lighting == LightingModel::BlinnPhong ? "beta" : "alpha",
+                      scene.objects[0].material.shininess);
+        label += exponent;
+    }
+    for (char& c : label) c = char(std::toupper(static_cast<unsigned char>(c)));
+    return label;
 }
 
 } // namespace shadelab::app

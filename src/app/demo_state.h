@@ -14,9 +14,11 @@ namespace shadelab::app {
 
 // The width of the demo's control panel, docked as a left column beside the picture (0 when hidden): at
 // most 420 px and at most half the window, so the picture always keeps at least half of it.
-inline int panelColumnWidth(int windowWidth, bool panelShown) {
+// `uiScale` (--ui-scale, --present) widens it with the text.
+inline int panelColumnWidth(int windowWidth, bool panelShown, double uiScale = 1) {
     if (!panelShown || windowWidth <= 0) return 0;
-    return windowWidth / 2 < 420 ? windowWidth / 2 : 420;
+    const int widest = int(420 * uiScale);
+    return windowWidth / 2 < widest ? windowWidth / 2 : widest;
 }
 
 enum class Command {
@@ -36,6 +38,8 @@ enum class Command {
     Screenshot,
     ToggleHelp,
     TogglePanel,
+    TogglePresentation,
+    ToggleFullScreen,
     Quit
 };
 
@@ -104,6 +108,7 @@ public:
     bool matchHighlight = true; // B keeps the highlight size: β = 4α going to Blinn-Phong, α = β/4 back
     bool showHelp = false;
     bool showPanel = true;
+    bool presenting = false; // F2, --present: the large label for a class (presentationLabel)
     // The level drawn (of the first object): its own, or what "auto" chose for the drawn view.
     int level() const;
     bool autoLevel() const;
@@ -139,5 +144,9 @@ private:
 std::string windowTitle(const DemoState& state, double frameMs);
 // The control panel's first lines: modes, level, projection, normals, material and lights.
 std::string statusText(const DemoState& state);
+// Presentation mode's label, large enough for the back of a classroom: "PHONG SHADING" over "BLINN-PHONG
+// LIGHTING | LEVEL 5 | BETA = 96" (ALPHA under Phong lighting; the first object's exponent). ASCII: the
+// window's built-in font has no Greek letters.
+std::string presentationLabel(const DemoState& state);
 
 } // namespace shadelab::app

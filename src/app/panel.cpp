@@ -76,10 +76,11 @@ void lightControls(Light& light, int index) {
 
 } // namespace
 
-Panel::Panel(Window& window) : api_(window.api()) {
+Panel::Panel(Window& window, double uiScale) : api_(window.api()) {
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr; // no imgui.ini left in the user's folder
+    ImGui::GetIO().FontGlobalScale = float(uiScale);
     ImGui::StyleColorsDark();
     ImGui_ImplGlfw_InitForOpenGL(static_cast<GLFWwindow*>(window.nativeHandle()), true);
     ImGui_ImplOpenGL3_Init(window.api() == Api::Gl ? "#version 330 core" : "#version 300 es");
@@ -126,6 +127,23 @@ void Panel::draw(DemoState& state, const std::string& status, int columnWidth) {
                 scene.toonBands = std::clamp(bands, kMinToonBands, kMaxToonBands);
         }
         ImGui::PopTextWrapPos();
+        ImGui::End();
+    }
+    if (state.presenting) {
+        // For the back of a classroom: bottom left of the picture, three times the text size.
+        const ImVec2 display = ImGui::GetIO().DisplaySize;
+        ImGui::SetNextWindowPos({float(columnWidth) + 16, display.y - 16}, ImGuiCond_Always, {0, 1});
+        ImGui::SetNextWindowBgAlpha(0.6f);
+        ImGui::Begin("presentation", nullptr,
+                     ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs |
+                         ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
+                         ImGuiWindowFlags_NoFocusOnAppearing);
+        // Three times the text size, or less where the picture is too narrow for the label to fit.
+        const std::string label = presentationLabel(state);
+        const float width = ImGui::CalcTextSize(label.c_str()).x;
+        const float room = display.x - float(columnWidth) - 48;
+        ImGui::SetWindowFontScale(std::clamp(room / std::max(width, 1.0f), 0.5f, 3.0f));
+        ImGui::TextUnformatted(label.c_str());
         ImGui::End();
     }
     if (state.showHelp) {

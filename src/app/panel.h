@@ -14,7 +14,8 @@ namespace shadelab::app {
 
 class Panel {
 public:
-    explicit Panel(Window& window); // installs ImGui's GLFW callbacks, chained to the window's own
+    // Installs ImGui's GLFW callbacks, chained to the window's own; `uiScale` scales every text.
+    Panel(Window& window, double uiScale);
     ~Panel();
     Panel(const Panel&) = delete;
     Panel& operator=(const Panel&) = delete;

@@ -33,8 +33,14 @@ std::string lastGlfwError() {
 
 } // namespace
 
+// Where the window was before full screen, to go back to.
+struct WindowedGeometry {
+    int x = 0, y = 0, width = 0, height = 0;
+};
+
 struct Window::State {
     GLFWwindow* window = nullptr;
+    WindowedGeometry windowed;
     std::function<void(int)> keyHandler;
     std::function<void(double, double)> dragHandler;
     std::function<void(double)> scrollHandler;
@@ -147,6 +153,22 @@ bool Window::shouldClose() const {
 void Window::requestClose() {
     glfwSetWindowShouldClose(state_->window, GLFW_TRUE);
 }
+void Window::toggleFullScreen() {
+    GLFWwindow* window = state_->window;
+    if (glfwGetWindowMonitor(window)) {
+        const WindowedGeometry& g = state_->windowed;
+        glfwSetWindowMonitor(window, nullptr, g.x, g.y, g.width, g.height, GLFW_DONT_CARE);
+        return;
+    }
+    GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+    const GLFWvidmode* mode = monitor ? glfwGetVideoMode(monitor) : nullptr;
+    if (!mode) return; // no monitor to fill: stay a window
+    WindowedGeometry& g = state_->windowed;
+    glfwGetWindowPos(window, &g.x, &g.y);
+    glfwGetWindowSize(window, &g.width, &g.height);
+    glfwSetWindowMonitor(window, monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
+}
+
 void Window::setTitle(const std::string& title) {
     glfwSetWindowTitle(state_->window, title.c_str());
 }

@@ -30,10 +30,24 @@ namespace {
 constexpr double kDeg = std::numbers::pi / 180;
 
 constexpr Command kAllCommands[] = {
-    Command::Flat,           Command::Gouraud,      Command::Phong,       Command::Toon,
-    Command::ToggleLighting, Command::LevelUp,      Command::LevelDown,   Command::ToggleProjection,
-    Command::ToggleNormals,  Command::NextMaterial, Command::NextLights,  Command::ResetView,
-    Command::Screenshot,     Command::ToggleHelp,   Command::TogglePanel, Command::Quit,
+    Command::Flat,
+    Command::Gouraud,
+    Command::Phong,
+    Command::Toon,
+    Command::ToggleLighting,
+    Command::LevelUp,
+    Command::LevelDown,
+    Command::ToggleProjection,
+    Command::ToggleNormals,
+    Command::NextMaterial,
+    Command::NextLights,
+    Command::ResetView,
+    Command::Screenshot,
+    Command::ToggleHelp,
+    Command::TogglePanel,
+    Command::Quit,
+    Command::TogglePresentation,
+    Command::ToggleFullScreen,
 };
 
 std::string str(const glm::dvec3& v) {
@@ -171,6 +185,8 @@ const std::vector<std::pair<int, Command>>& issueKeys() {
         {GLFW_KEY_F1, Command::ToggleHelp},
         {GLFW_KEY_ESCAPE, Command::Quit},
         {GLFW_KEY_C, Command::TogglePanel},
+        {GLFW_KEY_F2, Command::TogglePresentation}, // issue 15: presentation mode
+        {GLFW_KEY_F11, Command::ToggleFullScreen},
     };
     return kKeys;
 }
@@ -178,6 +194,8 @@ const std::vector<std::pair<int, Command>>& issueKeys() {
 TEST(DemoKeys, WindowKeyConstantsAreGlfwKeyCodes) {
     EXPECT_EQ(kKeyEscape, GLFW_KEY_ESCAPE);
     EXPECT_EQ(kKeyF1, GLFW_KEY_F1);
+    EXPECT_EQ(kKeyF2, GLFW_KEY_F2);
+    EXPECT_EQ(kKeyF11, GLFW_KEY_F11);
     EXPECT_EQ(kKeyKeypadSubtract, GLFW_KEY_KP_SUBTRACT);
     EXPECT_EQ(kKeyKeypadAdd, GLFW_KEY_KP_ADD);
 }
@@ -221,7 +239,7 @@ TEST(DemoKeys, EveryCommandHasExactlyOneBinding) {
 }
 
 TEST(DemoKeys, UnboundKeysGiveNoCommand) {
-    for (int key : {GLFW_KEY_Q, GLFW_KEY_Z, GLFW_KEY_X, GLFW_KEY_SPACE, GLFW_KEY_5, GLFW_KEY_F2,
+    for (int key : {GLFW_KEY_Q, GLFW_KEY_Z, GLFW_KEY_X, GLFW_KEY_SPACE, GLFW_KEY_5, GLFW_KEY_F3,
                     GLFW_KEY_ENTER, GLFW_KEY_UNKNOWN, 0})
         EXPECT_FALSE(commandForKey(key).has_value()) << "key " << key;
 }
@@ -251,8 +269,8 @@ TEST(DemoKeys, HelpLabelsNameTheIssuesKeys) {
     // The labels are what the overlay, --help and the README show: each listed key appears in some label.
     std::string labels;
     for (const KeyBinding& binding : keyBindings()) labels += std::string(binding.label) + " | ";
-    for (const char* key : {"1", "2", "3", "4", "F", "G", "P", "T",  "B",   "+", "-",
-                            "O", "N", "M", "L", "R", "S", "H", "F1", "Esc", "C"})
+    for (const char* key : {"1", "2", "3", "4", "F", "G", "P",  "T",   "B", "+",  "-",  "O",
+                            "N", "M", "L", "R", "S", "H", "F1", "Esc", "C", "F2", "F11"})
         EXPECT_NE(labels.find(key), std::string::npos) << key << " not in labels: " << labels;
 }
 
@@ -458,6 +476,26 @@ TEST(DemoTitle, SaysWhatTheLastKeyChanged) {
         const std::string title = windowTitle(state, 0);
         EXPECT_TRUE(title.ends_with(std::string("| H: keys | ") + words)) << title;
     }
+}
+
+// Issue 15, presentation mode: F2 toggles the large label; it names the mode, the lighting model, the
+// drawn level and the exponent by its model's letter. F11 (full screen) is the window's to carry out.
+TEST(DemoPresentation, LabelNamesModeLightingLevelAndExponent) {
+    Scene scene;
+    scene.objects[0].material.shininess = 32;
+    DemoState state(scene);
+    EXPECT_FALSE(state.presenting);
+    EXPECT_TRUE(state.apply(Command::TogglePresentation));
+    EXPECT_TRUE(state.presenting);
+    EXPECT_EQ(presentationLabel(state), "PHONG SHADING\nBLINN-PHONG LIGHTING | LEVEL 5 | BETA = 32");
+    state.apply(Command::Gouraud);
+    state.matchHighlight = false;
+    state.apply(Command::ToggleLighting);
+    state.apply(Command::LevelDown);
+    EXPECT_EQ(presentationLabel(state), "GOURAUD SHADING\nPHONG LIGHTING | LEVEL 4 | ALPHA = 32");
+    EXPECT_FALSE(state.apply(Command::ToggleFullScreen)) << "the window's to carry out";
+    state.apply(Command::TogglePresentation);
+    EXPECT_FALSE(state.presenting);
 }
 
 TEST(DemoLevel, TriangleCountIsFourToTheLevelPlusOnePerObject) {

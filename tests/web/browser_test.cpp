@@ -21,6 +21,7 @@
 #include "cli/run_process.h"
 #include "gl/gl_test_support.h"
 #include "gl/projected_mesh.h"
+#include "shadelab/window.h"
 
 namespace shadelab::test {
 namespace {
@@ -75,6 +76,9 @@ public:
     }
     std::size_t key(int code) { return add({{"op", "key"}, {"code", code}}); }
     std::size_t ui() { return add({{"op", "ui"}}); }
+    std::size_t element(const std::string& selector) {
+        return add({{"op", "element"}, {"selector", selector}});
+    }
     std::size_t panel(const std::string& selector, const std::string& value,
                       const std::string& event = "change") {
         return add({{"op", "panel"}, {"selector", selector}, {"value", value}, {"event", event}});
@@ -503,6 +507,26 @@ TEST_F(Browser, SDownloadsThePictureAndItsScene) {
     EXPECT_NE(saved.objects.at(0).material.shininess, 24.0) << "the material preset is not in the JSON";
     const Comparison c = compareImages(png, nativeGles().render(saved), swiftShaderTolerance(png));
     EXPECT_TRUE(c.passed) << c.summary();
+    expectCleanConsole(session.answer(console).at("console"));
+}
+
+// Issue 15, presentation mode in the page: ?present shows the large label (the window's words), F2 hides it.
+TEST_F(Browser, PresentationLabelShowsAndF2HidesIt) {
+    Session session;
+    session.open("?present");
+    const std::size_t shown = session.element("#presentation");
+    const std::size_t ui = session.ui();
+    session.key(kKeyF2);
+    const std::size_t hidden = session.element("#presentation");
+    const std::size_t console = session.console();
+    if (!session.run(dir_)) return;
+    const json label = session.answer(shown).at("element");
+    EXPECT_FALSE(label.at("hidden").get<bool>());
+    EXPECT_EQ(label.at("text"), session.answer(ui).at("ui").at("presentation"));
+    EXPECT_TRUE(
+        label.at("text").get<std::string>().starts_with("PHONG SHADING\nBLINN-PHONG LIGHTING | LEVEL 3"))
+        << label;
+    EXPECT_TRUE(session.answer(hidden).at("element").at("hidden").get<bool>());
     expectCleanConsole(session.answer(console).at("console"));
 }
 

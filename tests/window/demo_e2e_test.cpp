@@ -354,6 +354,30 @@ TEST_F(DemoWindow, AfterAResizeTheTitleShowsTheDrawnLevel) {
     expectCleanQuit(demo);
 }
 
+// Issue 15, presentation mode: --present draws the large label over the bottom of the picture and leaves
+// the rest as `render` draws it; F2 takes the label away and the whole window is the render again.
+TEST_F(DemoWindow, PresentationLabelCoversOnlyTheBottomAndF2RemovesIt) {
+    const fs::path scene = writeScene("scene.json", sceneJson(kWidth * 2, kHeight * 2, 3, "phong", "phong"));
+    const std::string size = std::to_string(kWidth * 2) + "x" + std::to_string(kHeight * 2);
+    DemoProcess& demo =
+        startDemo("demo", {scene.string(), "--size", size, "--hide-panel", "--present", "--gl-debug"});
+    demo.window().waitForTitle("shadelab — phong shading, phong lighting | level 3 | ");
+    const fs::path stem = demo.screenshot(); // offscreen: the picture without the label
+    const Image rendered = readPng(stem.string() + ".png");
+    const int top = rendered.height * 3 / 5;
+    Image withLabel;
+    ASSERT_TRUE(pollUntil([&] {
+        withLabel = demo.window().capture();
+        return compareImages(crop(withLabel, 0, 0, rendered.width, top),
+                             crop(rendered, 0, 0, rendered.width, top), kWindowTolerance)
+            .passed;
+    })) << "the top of the window is not the picture";
+    EXPECT_FALSE(compareImages(withLabel, rendered, kWindowTolerance).passed) << "no label was drawn";
+    demo.window().key("F2");
+    EXPECT_TRUE(matches(settledCapture(demo.window(), rendered), rendered, kWindowTolerance, "after_F2"));
+    expectCleanQuit(demo);
+}
+
 // H shows the help overlay over the picture and H again takes it away. The demo runs on its built-in
 // scene (no scene file), whose modes the title must show.
 TEST_F(DemoWindow, HTogglesTheHelpOverlay) {
