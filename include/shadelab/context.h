@@ -46,8 +46,10 @@ public:
 // --egl-device index this machine does not have is an InputError.
 std::unique_ptr<HeadlessContext> makeEglContext(Api api = Api::Gl, std::optional<int> device = std::nullopt);
 std::unique_ptr<HeadlessContext> makeOsmesaContext();
-// Throws RuntimeError for a backend not compiled in, naming the ones that are, and for OpenGL ES asked of
-// OSMesa.
+// InputError for a request no backend can meet: OpenGL ES or an EGL device asked of OSMesa.
+void checkContextRequest(const ContextRequest& request);
+// Throws RuntimeError for a backend not compiled in, naming the ones that are, and InputError as
+// checkContextRequest.
 std::unique_ptr<HeadlessContext> makeHeadlessContext(const ContextRequest& request);
 
 // One line per EGL device (EGL_EXT_device_enumeration): its index, what it is (DRM device file or

@@ -24,8 +24,8 @@ public:
 
     Image render(const Scene& scene);       // scene.width × scene.height, rows top first
     ImageF renderFloat(const Scene& scene); // through an RGBA32F target: NaN and Inf stay visible
-    Backend backend() const { return backend_; }
-    Api api() const { return api_; }
+    Backend backend() const { return context_->backend(); }
+    Api api() const { return context_->api(); }
     // "EGL device 0 (software rasterizer)", "EGL surfaceless platform", "OSMesa".
     std::string origin() const { return context_->origin(); }
     // Scene-specialized programs (default) or the uber programs; see gl/program.h.
@@ -36,8 +36,6 @@ public:
     const std::string& rendererString() const { return rendererString_; }
 
 private:
-    Backend backend_;
-    Api api_;
     std::unique_ptr<HeadlessContext> context_;
     std::unique_ptr<gl::Renderer> renderer_;
     std::string rendererString_;

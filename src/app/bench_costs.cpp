@@ -223,7 +223,7 @@ constexpr const char* kSphereVertex =
 void beginFrame(int width, int height) {
     glViewport(0, 0, width, height);
     glClearColor(0, 0, 0, 0);
-    if (gl::capabilities().clipControl) gl::setClipDepthZeroToOne(false, "bench");
+    gl::setClipDepthZeroToOne(false, "standard");
     gl::clearDepth(0.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 }

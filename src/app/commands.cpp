@@ -47,10 +47,7 @@ ContextRequest contextFromArguments(const std::string& backend, const std::strin
                              " is neither a device number (0, 1, …) nor list; see --egl-device list");
         request.eglDevice = std::stoi(eglDevice);
     }
-    if (request.backend == Backend::Osmesa && request.api == Api::Gles)
-        throw InputError("--api gles: OSMesa offers desktop OpenGL only; use --backend egl for OpenGL ES");
-    if (request.backend == Backend::Osmesa && request.eglDevice)
-        throw InputError("--egl-device: a choice of the EGL backend; leave it out with --backend osmesa");
+    checkContextRequest(request); // before any work, not when the context is made
     return request;
 }
 

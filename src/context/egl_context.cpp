@@ -83,6 +83,10 @@ bool hasExtension(const char* list, const char* name) {
     return false;
 }
 
+EGLenum eglApi(Api api) {
+    return api == Api::Gles ? EGL_OPENGL_ES_API : EGL_OPENGL_API;
+}
+
 // What one attempt to open a display and make a context on it gives: the objects, or why not.
 struct Attempt {
     EGLDisplay display = EGL_NO_DISPLAY;
@@ -103,7 +107,7 @@ Attempt createContext(EGLDisplay display, Api api) {
     EGLint major = 0, minor = 0;
     if (!eglInitialize(display, &major, &minor)) return failed("eglInitialize");
     const bool gles = api == Api::Gles;
-    if (!eglBindAPI(gles ? EGL_OPENGL_ES_API : EGL_OPENGL_API))
+    if (!eglBindAPI(eglApi(api)))
         return failed(gles ? "eglBindAPI(EGL_OPENGL_ES_API)" : "eglBindAPI(EGL_OPENGL_API)");
     const EGLint renderable = gles ? EGL_OPENGL_ES3_BIT : EGL_OPENGL_BIT;
     EGLConfig config = nullptr;
@@ -171,6 +175,11 @@ std::string deviceKind(EGLDeviceEXT device) {
     return "device";
 }
 
+// "EGL device 1 (/dev/dri/renderD128)": how messages and --verbose name a device.
+std::string deviceName(std::size_t index, EGLDeviceEXT device) {
+    return "EGL device " + std::to_string(index) + " (" + deviceKind(device) + ")";
+}
+
 PFNEGLGETPLATFORMDISPLAYEXTPROC platformDisplayFunction() {
     auto getPlatformDisplay =
         reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
@@ -199,7 +208,7 @@ public:
     // No surface: we draw into our own framebuffer objects only. The bound API decides which context
     // eglMakeCurrent replaces, so it is bound first (a process may hold a GL and a GLES context).
     void makeCurrent() override {
-        eglBindAPI(api_ == Api::Gles ? EGL_OPENGL_ES_API : EGL_OPENGL_API);
+        eglBindAPI(eglApi(api_));
         if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_)) fail("eglMakeCurrent");
         gl::loadGl(eglGetProcAddress, "egl", api_);
     }
@@ -227,16 +236,14 @@ private:
                     "; see --egl-device list");
             const EGLDeviceEXT chosen = devices.list[std::size_t(*device)];
             Attempt a = onDevice(chosen, api_);
+            origin_ = deviceName(std::size_t(*device), chosen);
             if (a.context == EGL_NO_CONTEXT)
-                throw RuntimeError("egl: device " + std::to_string(*device) + " (" + deviceKind(chosen) +
-                                   "): " + a.failure + ". " + environmentHint());
-            origin_ = "EGL device " + std::to_string(*device) + " (" + deviceKind(chosen) + ")";
+                throw RuntimeError("egl: " + origin_ + ": " + a.failure + ". " + environmentHint());
             return a;
         }
         std::string deviceFailures; // said only if the surfaceless platform fails too
         for (std::size_t i = 0; i < devices.list.size(); ++i) {
-            const std::string name =
-                "EGL device " + std::to_string(i) + " (" + deviceKind(devices.list[i]) + ")";
+            const std::string name = deviceName(i, devices.list[i]);
             Attempt a = onDevice(devices.list[i], api_);
             if (a.context != EGL_NO_CONTEXT) {
                 origin_ = name;
@@ -259,7 +266,7 @@ private:
     }
 
     void release() {
-        eglBindAPI(api_ == Api::Gles ? EGL_OPENGL_ES_API : EGL_OPENGL_API);
+        eglBindAPI(eglApi(api_));
         eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         eglDestroyContext(display_, context_);
         // No eglTerminate: the display is one per process and is reused by the next context; Mesa's EGL

@@ -29,18 +29,23 @@ std::unique_ptr<HeadlessContext> makeOsmesaContext() {
 }
 #endif
 
-std::unique_ptr<HeadlessContext> makeHeadlessContext(const ContextRequest& request) {
-    if (request.backend == Backend::Egl) return makeEglContext(request.api, request.eglDevice);
+void checkContextRequest(const ContextRequest& request) {
+    if (request.backend != Backend::Osmesa) return;
     if (request.api == Api::Gles)
         throw InputError("--api gles: OSMesa offers desktop OpenGL only; use --backend egl for OpenGL ES");
     if (request.eglDevice)
         throw InputError("--egl-device: a choice of the EGL backend; leave it out with --backend osmesa");
+}
+
+std::unique_ptr<HeadlessContext> makeHeadlessContext(const ContextRequest& request) {
+    checkContextRequest(request);
+    if (request.backend == Backend::Egl) return makeEglContext(request.api, request.eglDevice);
     return makeOsmesaContext();
 }
 
 HeadlessRenderer::HeadlessRenderer(const ContextRequest& request)
-    : backend_(request.backend), api_(request.api), context_(makeHeadlessContext(request)),
-      renderer_(std::make_unique<gl::Renderer>()), rendererString_(gl::rendererString()) {}
+    : context_(makeHeadlessContext(request)), renderer_(std::make_unique<gl::Renderer>()),
+      rendererString_(gl::rendererString()) {}
 
 // The renderer's GL objects must go while its context is current.
 HeadlessRenderer::~HeadlessRenderer() {

@@ -83,11 +83,11 @@ const char* glslHeader() {
                : "#version 300 es\nprecision highp float;\nprecision highp int;\n";
 }
 
-void setClipDepthZeroToOne(bool zeroToOne, const char* why) {
+void setClipDepthZeroToOne(bool zeroToOne, std::string_view depthMode) {
     const Capabilities& c = loadedCapabilities;
     if (!c.clipControl) {
         if (zeroToOne)
-            throw RuntimeError(std::string(why) +
+            throw RuntimeError("depth " + std::string(depthMode) +
                                ": needs glClipControl (OpenGL 4.5) or GL_EXT_clip_control (OpenGL ES), "
                                "which this " +
                                std::string(displayName(c.api)) + " context lacks; use depth standard");

@@ -125,11 +125,6 @@ void cullBackFaces(const SceneObject& object, const glm::dmat4& viewFromObject, 
     glFrontFace(glm::determinant(glm::dmat3(viewFromObject)) < 0 ? GL_CW : GL_CCW);
 }
 
-void setClipRange(DepthMode mode) {
-    const std::string what = "depth " + std::string(toString(mode));
-    setClipDepthZeroToOne(mode != DepthMode::Standard, what.c_str());
-}
-
 } // namespace
 
 Renderer::Renderer() = default;
@@ -166,7 +161,7 @@ void Renderer::render(const Scene& scene, int width, int height, int x) {
     glClearColor(float(scene.background.x), float(scene.background.y), float(scene.background.z), 0.0f);
     // DESIGN §2: near maps to NDC z = +1 (standard) or clip depth 1 (reversed), so in both modes the nearer
     // surface has the greater depth. Reversed-Z also needs the [0, 1] clip range.
-    setClipRange(view.depth);
+    setClipDepthZeroToOne(view.depth != DepthMode::Standard, toString(view.depth));
     clearDepth(0.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);

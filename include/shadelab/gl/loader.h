@@ -5,6 +5,7 @@
 
 #include <functional>
 #include <string>
+#include <string_view>
 
 #include "shadelab/gl/api.h"
 
@@ -32,8 +33,8 @@ const Capabilities& capabilities();
 const char* glslHeader();
 
 // The clip-space depth range: [-1, 1] (GL's default) or [0, 1] (reversed-Z). Throws RuntimeError naming
-// the API where [0, 1] is asked of a context without clip control.
-void setClipDepthZeroToOne(bool zeroToOne, const char* why);
+// `depthMode` and the API where [0, 1] is asked of a context without clip control.
+void setClipDepthZeroToOne(bool zeroToOne, std::string_view depthMode);
 // glClearDepth on desktop, glClearDepthf on ES.
 void clearDepth(float depth);
 
