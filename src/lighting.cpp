@@ -19,14 +19,6 @@ std::optional<Enum> parseEnum(std::string_view text, const std::array<Enum, N>& 
 constexpr double kTinyComponent = 1e-30;
 constexpr double kMinAttenuationDenominator = 1e-12; // same constant in shaders/lighting.glsl
 
-// (l, t): unit direction to the light and the distance to it (0 for directional lights).
-std::pair<glm::dvec3, double> toLight(const Light& light, const SurfacePoint& point) {
-    if (light.type == LightType::Directional) return {-safeNormalize(light.direction, point.normal), 0.0};
-    const glm::dvec3 d = light.position - point.position;
-    // A light exactly on the surface lights it head-on rather than from an undefined direction.
-    return {safeNormalize(d, point.normal), glm::length(d)};
-}
-
 double attenuation(const Light& light, double t) {
     if (light.type == LightType::Directional) return 1;
     const glm::dvec3& k = light.attenuation;
@@ -44,15 +36,27 @@ double spotFactor(const Light& light, const glm::dvec3& l) {
     return light.exponent > 0 ? std::pow(std::max(cosAngle, 0.0), light.exponent) : 1.0;
 }
 
-double specular(const SurfacePoint& p, const glm::dvec3& l, double lDotN, double shininess,
-                LightingModel model) {
+} // namespace
+
+std::pair<glm::dvec3, double> toLight(const Light& light, const SurfacePoint& point) {
+    if (light.type == LightType::Directional) return {-safeNormalize(light.direction, point.normal), 0.0};
+    const glm::dvec3 d = light.position - point.position;
+    // A light exactly on the surface lights it head-on rather than from an undefined direction.
+    return {safeNormalize(d, point.normal), glm::length(d)};
+}
+
+glm::dvec3 specularVector(const SurfacePoint& p, const glm::dvec3& l, LightingModel model) {
+    if (model == LightingModel::Phong) return -l + 2 * glm::dot(l, p.normal) * p.normal;
+    return safeNormalize(p.toViewer + l, p.normal);
+}
+
+namespace {
+
+double specular(const SurfacePoint& p, const glm::dvec3& l, double shininess, LightingModel model) {
     const double exponent = std::max(shininess, 1.0); // pow(0, 0) is undefined in GLSL
-    if (model == LightingModel::Phong) {
-        const glm::dvec3 r = -l + 2 * lDotN * p.normal;
-        return std::pow(std::max(glm::dot(p.toViewer, r), 0.0), exponent);
-    }
-    const glm::dvec3 h = safeNormalize(p.toViewer + l, p.normal);
-    return std::pow(std::max(glm::dot(p.normal, h), 0.0), exponent);
+    const glm::dvec3 rh = specularVector(p, l, model);
+    const double cosine = model == LightingModel::Phong ? glm::dot(p.toViewer, rh) : glm::dot(p.normal, rh);
+    return std::pow(std::max(cosine, 0.0), exponent);
 }
 
 } // namespace
@@ -127,32 +131,37 @@ glm::dvec3 capColor(const glm::dvec3& color) {
     return glm::min(color, glm::dvec3(kMaxColorComponent));
 }
 
-glm::dvec3 shade(const SurfacePoint& p, const Material& uncapped, std::span<const Light> lights,
-                 ShadeOptions options) {
+LightTerms shadeTerms(const SurfacePoint& p, const Material& uncapped, std::span<const Light> lights,
+                      ShadeOptions options) {
     const Material material{capColor(uncapped.ambient), capColor(uncapped.diffuse),
                             capColor(uncapped.specular), uncapped.shininess};
-    glm::dvec3 color(0.0);
+    LightTerms terms;
     for (const Light& uncappedLight : lights) {
         Light light = uncappedLight;
         light.ambient = capColor(light.ambient);
         light.diffuse = capColor(light.diffuse);
         light.specular = capColor(light.specular);
-        color += material.ambient * light.ambient; // neither attenuated nor spot-limited
+        terms.ambient += material.ambient * light.ambient; // neither attenuated nor spot-limited
         if (light.type == LightType::Ambient) continue;
 
         const auto [l, t] = toLight(light, p);
         const double factor = attenuation(light, t) * spotFactor(light, l);
         const double lDotN = glm::dot(l, p.normal);
         double diffuse = std::max(lDotN, 0.0);
-        double spec = lDotN > 0 ? specular(p, l, lDotN, material.shininess, options.model) : 0.0;
+        double spec = lDotN > 0 ? specular(p, l, material.shininess, options.model) : 0.0;
         if (options.toon) {
             diffuse = std::ceil(diffuse * options.toonBands) / options.toonBands;
             spec = spec > kToonHighlight ? 1.0 : 0.0;
         }
-        color +=
-            factor * (material.diffuse * light.diffuse * diffuse + material.specular * light.specular * spec);
+        terms.diffuse += factor * material.diffuse * light.diffuse * diffuse;
+        terms.specular += factor * material.specular * light.specular * spec;
     }
-    return color;
+    return terms;
+}
+
+glm::dvec3 shade(const SurfacePoint& p, const Material& material, std::span<const Light> lights,
+                 ShadeOptions options) {
+    return shadeTerms(p, material, lights, options).total();
 }
 
 glm::dvec3 clampColor(const glm::dvec3& c) {

@@ -8,98 +8,10 @@
 
 #include "shadelab/errors.h"
 #include "shadelab/lighting.h"
+#include "shadelab/ray_cast.h"
 
 namespace shadelab {
 namespace {
-
-// One object, prepared for casting view-space rays at it.
-struct ObjectInView {
-    glm::dmat3 objectFromView3;      // inverse of viewFromObject's upper 3×3
-    glm::dvec3 originView;           // viewFromObject's translation: the centre in view space
-    glm::dmat3 normalViewFromObject; // normalMatrix(viewFromObject), rescaled to O(1)
-};
-
-double maxAbsEntry(const glm::dmat3& m) {
-    double k = 0;
-    for (int c = 0; c < 3; ++c)
-        for (int r = 0; r < 3; ++r) k = std::max(k, std::abs(m[c][r]));
-    return k;
-}
-
-// viewFromObject's 3×3 is (rotation)·diag(radius·scale). Its determinant is radius³·sx·sy·sz, which a
-// generic inverse or the cofactor matrix under/overflows for extreme radii (radius 1e-9 gives cofactors
-// of 1e-18, which safeNormalize treats as zero). Dividing by the largest entry first keeps both O(1): the
-// inverse is then rescaled back, and the normal matrix only needs its direction (it is renormalized).
-ObjectInView prepare(const SceneObject& object, const glm::dmat4& viewFromWorld) {
-    const glm::dmat4 viewFromObject = viewFromWorld * worldFromObject(object);
-    const glm::dmat3 linear(viewFromObject);
-    const double k = maxAbsEntry(linear); // > 0: validated radius > 0 and non-zero scale
-    const glm::dmat3 unit = linear / k;
-    return ObjectInView{glm::inverse(unit) / k, glm::dvec3(viewFromObject[3]),
-                        normalMatrix(glm::dmat4(unit))};
-}
-
-struct Hit {
-    double s = std::numeric_limits<double>::infinity(); // ray parameter: point = origin + s·direction
-    int object = -1;
-    glm::dvec3 pointObject{0, 0, 1}; // on the unit sphere: also the object-space normal
-};
-
-// Intersects the view-space ray origin + s·direction with `object` and keeps the hit in `best` when it lies
-// inside the clip volume (view z in [−far, −near]) and is nearer than the hit already there.
-void intersect(const ObjectInView& object, int index, const glm::dvec3& originView,
-               const glm::dvec3& directionView, double near, double far, Hit& best) {
-    const glm::dvec3 o = object.objectFromView3 * (originView - object.originView);
-    const glm::dvec3 d = object.objectFromView3 * directionView;
-    const double dLength = glm::length(d);
-    if (!(dLength > 0) || !std::isfinite(dLength) || !std::isfinite(glm::dot(o, o))) return;
-    const glm::dvec3 dUnit = d / dLength;
-
-    // |o + t·dUnit|² = 1 with a = 1: t² + 2b·t + c = 0. The discriminant b² − c loses everything to
-    // cancellation when |o| ≫ 1 (a tiny sphere seen from afar), so it is taken as 1 − |o⊥|², the distance of
-    // the ray from the centre (Ray Tracing Gems, ch. 7). The roots come from q = −(b + sign(b)·√disc), which
-    // never subtracts nearly equal numbers: t = q and t = c/q.
-    const double b = glm::dot(o, dUnit);
-    const glm::dvec3 perpendicular = o - b * dUnit;
-    const double disc = 1 - glm::dot(perpendicular, perpendicular);
-    if (!(disc >= 0)) return;
-    const double c = glm::dot(o, o) - 1;
-    const double root = std::sqrt(disc);
-    const double q = -(b + std::copysign(root, b));
-    double t0 = q, t1 = q != 0 ? c / q : 0; // q = 0 only for a ray grazing the sphere at t = 0
-    if (t0 > t1) std::swap(t0, t1);
-
-    // The hit points themselves are taken from the point of the ray nearest the centre, ∓√disc along it,
-    // not from o + t·dUnit, which would lose the normal to the rounding of |o| when |o| ≫ 1.
-    for (auto [t, side] : {std::pair{t0, -1.0}, std::pair{t1, 1.0}}) {
-        const double s = t / dLength;
-        const double zView = originView.z + s * directionView.z;
-        // Both projections cast rays towards −z, so the first root inside the volume is the nearer one.
-        if (zView <= -near && zView >= -far) {
-            if (s < best.s) best = Hit{s, index, perpendicular + side * root * dUnit};
-            return;
-        }
-    }
-}
-
-// Exactly one place decides which pixel sees which point: pixel centres, top row first.
-struct PixelRays {
-    ViewVolume volume;
-    bool orthographic;
-    int width, height;
-
-    void ray(int i, int j, glm::dvec3& originView, glm::dvec3& directionView) const {
-        const double x = volume.left + (volume.right - volume.left) * (i + 0.5) / width;
-        const double y = volume.top - (volume.top - volume.bottom) * (j + 0.5) / height;
-        if (orthographic) {
-            originView = {x, y, 0};
-            directionView = {0, 0, -1};
-        } else {
-            originView = {0, 0, 0};
-            directionView = {x, y, -volume.near}; // through (x, y) on the near plane
-        }
-    }
-};
 
 void writePixel(float* pixel, const glm::dvec3& color, float alpha) {
     pixel[0] = float(color.x);
@@ -119,7 +31,8 @@ ReferenceImage renderReference(const Scene& scene) {
 
     std::vector<ObjectInView> objects;
     objects.reserve(scene.objects.size());
-    for (const SceneObject& object : scene.objects) objects.push_back(prepare(object, view.viewFromWorld));
+    for (const SceneObject& object : scene.objects)
+        objects.push_back(prepareObject(object, view.viewFromWorld));
     std::vector<Light> lightsView;
     lightsView.reserve(scene.lights.size());
     for (const Light& light : scene.lights) lightsView.push_back(transformLight(light, view.viewFromWorld));
@@ -133,29 +46,20 @@ ReferenceImage renderReference(const Scene& scene) {
     auto renderRow = [&](int j) {
         for (int i = 0; i < scene.width; ++i) {
             glm::dvec3 originView, directionView;
-            rays.ray(i, j, originView, directionView);
-            Hit hit;
+            rays.ray(i + 0.5, j + 0.5, originView, directionView);
+            RayHit hit;
             for (std::size_t k = 0; k < objects.size(); ++k)
-                intersect(objects[k], int(k), originView, directionView, view.volume.near, far, hit);
+                intersectObject(objects[k], int(k), originView, directionView, view.volume.near, far, hit);
 
             float* pixel = out.color.pixel(i, j);
             if (hit.object < 0) {
                 writePixel(pixel, background, 0);
                 continue;
             }
-            const ObjectInView& object = objects[std::size_t(hit.object)];
-            const glm::dvec3 positionView = originView + hit.s * directionView;
-            // The mesh is seen from outside, so the outward normal is used as is, even where the near plane
-            // cuts a sphere open and its inside shows.
-            const glm::dvec3 normalView =
-                safeNormalize(object.normalViewFromObject * hit.pointObject, glm::dvec3(0, 0, 1));
-            // Local viewer (DESIGN §3), the same rule as the GLSL: towards the eye under perspective; under
-            // orthographic projection the eye is at infinity, so back along the parallel rays, +z.
-            const glm::dvec3 toViewer =
-                rays.orthographic ? glm::dvec3(0, 0, 1) : safeNormalize(-positionView, glm::dvec3(0, 0, 1));
-            const glm::dvec3 color =
-                clampColor(shade(SurfacePoint{positionView, normalView, toViewer},
-                                 scene.objects[std::size_t(hit.object)].material, lightsView, options));
+            const SurfacePoint point = exactSurfacePoint(objects[std::size_t(hit.object)], hit, originView,
+                                                         directionView, rays.orthographic);
+            const glm::dvec3 color = clampColor(
+                shade(point, scene.objects[std::size_t(hit.object)].material, lightsView, options));
             writePixel(pixel, color, 1);
             out.objectId[std::size_t(j) * std::size_t(scene.width) + std::size_t(i)] = hit.object;
         }

@@ -49,6 +49,7 @@ constexpr std::array kProjectionTypes = {ProjectionType::Perspective, Projection
                                          ProjectionType::Orthographic};
 constexpr std::array kVertexNormals = {VertexNormals::Averaged, VertexNormals::Exact};
 constexpr std::array kDepthModes = {DepthMode::Standard, DepthMode::Reversed, DepthMode::ReversedInfinite};
+constexpr std::array kOverlays = {Overlay::None, Overlay::Wireframe, Overlay::Normals};
 
 struct IntRange {
     int lo, hi;
@@ -762,9 +763,9 @@ std::vector<Light> readLights(const Json& json) {
 }
 
 Scene readScene(const Json& root) {
-    static constexpr std::array<std::string_view, 11> kKeys = {
+    static constexpr std::array<std::string_view, 12> kKeys = {
         "image",        "camera", "projection",     "shading", "lighting", "toon_bands",
-        "tolerance_px", "depth",  "vertex_normals", "objects", "lights"};
+        "tolerance_px", "depth",  "vertex_normals", "overlay", "objects",  "lights"};
     requireObject(root, "");
     checkKeys(root, "", kKeys);
     Scene scene;
@@ -782,6 +783,8 @@ Scene readScene(const Json& root) {
     if (const Json* depth = member(root, "depth")) scene.depth = readEnum(*depth, "depth", kDepthModes);
     if (const Json* normals = member(root, "vertex_normals"))
         scene.vertexNormals = readEnum(*normals, "vertex_normals", kVertexNormals);
+    if (const Json* overlay = member(root, "overlay"))
+        scene.overlay = readEnum(*overlay, "overlay", kOverlays);
     if (const Json* objects = member(root, "objects")) scene.objects = readObjects(*objects);
     if (const Json* lights = member(root, "lights")) scene.lights = readLights(*lights);
     return scene;
@@ -849,6 +852,24 @@ std::string_view toString(DepthMode mode) {
 std::optional<DepthMode> parseDepthMode(std::string_view text) {
     for (DepthMode mode : kDepthModes)
         if (toString(mode) == text) return mode;
+    return std::nullopt;
+}
+
+std::string_view toString(Overlay overlay) {
+    switch (overlay) {
+    case Overlay::None:
+        return "none";
+    case Overlay::Wireframe:
+        return "wireframe";
+    case Overlay::Normals:
+        return "normals";
+    }
+    return "unknown";
+}
+
+std::optional<Overlay> parseOverlay(std::string_view text) {
+    for (Overlay overlay : kOverlays)
+        if (toString(overlay) == text) return overlay;
     return std::nullopt;
 }
 
@@ -950,6 +971,7 @@ std::string sceneToJson(const Scene& scene) {
         {"tolerance_px", scene.tolerancePx},
         {"depth", toString(scene.depth)},
         {"vertex_normals", toString(scene.vertexNormals)},
+        {"overlay", toString(scene.overlay)},
         {"objects", objects},
         {"lights", lights}};
     return root.dump(2) + "\n";

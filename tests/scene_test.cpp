@@ -331,7 +331,10 @@ const std::vector<ErrorCase> kErrorCases = {
     {"UnknownTopLevelKey",
      R"({"shadding": "phong"})",
      {"scene.json: shadding: unknown key; expected one of image, camera, projection, shading, lighting, "
-      "toon_bands, tolerance_px, depth, vertex_normals, objects, lights"}},
+      "toon_bands, tolerance_px, depth, vertex_normals, overlay, objects, lights"}},
+    {"OverlayUnknown",
+     R"({"overlay": "wires"})",
+     {"scene.json: overlay: unknown value \"wires\"; expected one of none, wireframe, normals"}},
     {"UnknownImageKey",
      R"({"image": {"depth": 8}})",
      {"image.depth: unknown key; expected one of width, height"}},

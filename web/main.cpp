@@ -15,6 +15,7 @@
 #include <emscripten/html5.h>
 #include <nlohmann/json.hpp>
 
+#include "app/demo_draw.h"
 #include "app/demo_state.h"
 #include "app/scene_flags.h"
 #include "shadelab/errors.h"
@@ -78,7 +79,7 @@ void frame() {
         const double start = emscripten_get_now();
         gl::bindDefaultFramebuffer();
         p.state->setViewport(width, height);
-        p.renderer->render(p.state->drawn(), width, height);
+        app::drawDemo(*p.renderer, *p.state, width, height);
         gl::finish();
         p.frameMs = emscripten_get_now() - start;
         p.drawError.clear();
@@ -107,6 +108,13 @@ template <typename Read> bool captureInto(int width, int height, gl::ColorFormat
         p.drawError = e.what();
         return false;
     }
+}
+
+std::string probeTextOf(const DemoState& state) {
+    const auto probe = state.probe();
+    if (!probe) return "";
+    const Scene shown = state.drawn();
+    return app::probeText(*probe, shown.shading, shown.lighting);
 }
 
 } // namespace
@@ -139,6 +147,7 @@ EMSCRIPTEN_KEEPALIVE const char* shadelab_apply_flags(const char* flags) {
         take("subdivisions", o.subdivisions);
         take("tolerance-px", o.tolerancePx);
         take("depth", o.depth);
+        take("overlay", o.overlay);
         const Scene scene = app::applyOverrides(page().state->scene(), o, page().sceneName);
         page().state = std::make_unique<DemoState>(scene);
         page().dirty = true;
@@ -171,6 +180,20 @@ EMSCRIPTEN_KEEPALIVE int shadelab_key(int key) {
 EMSCRIPTEN_KEEPALIVE void shadelab_drag(double dx, double dy) {
     page().state->drag(dx, dy);
     page().dirty = true;
+}
+
+// Right-drag (or Shift + drag): the first light that is not ambient orbits the target.
+EMSCRIPTEN_KEEPALIVE void shadelab_drag_light(double dx, double dy) {
+    page().state->dragLight(dx, dy);
+    page().dirty = true;
+}
+
+// A click at canvas pixel (x, y), top left origin: probe the surface point there (the background: no probe).
+EMSCRIPTEN_KEEPALIVE const char* shadelab_probe(double x, double y) {
+    return guarded([&] {
+        page().state->probeAt(x, y);
+        page().dirty = true;
+    });
 }
 
 EMSCRIPTEN_KEEPALIVE void shadelab_zoom(double steps) {
@@ -208,6 +231,8 @@ EMSCRIPTEN_KEEPALIVE const char* shadelab_ui() {
         {"orthographic", s.orthographic()},
         {"material", s.materialName()},
         {"lights", s.lightsName()},
+        {"overlay", toString(s.drawn().overlay)},
+        {"probe", probeTextOf(s)},
         {"scene", nlohmann::json::parse(sceneToJson(p.state->scene()))},
         {"current", nlohmann::json::parse(sceneToJson(s.current(width, height)))},
         {"atImageSize", nlohmann::json::parse(sceneToJson(s.current()))}, // what a capture at 0 × 0 draws

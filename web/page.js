@@ -60,6 +60,8 @@ function bind() {
     key: c('shadelab_key', 'number', ['number']),
     drag: c('shadelab_drag', null, ['number', 'number']),
     zoom: c('shadelab_zoom', null, ['number']),
+    dragLight: c('shadelab_drag_light', null, ['number', 'number']),
+    probe: c('shadelab_probe', 'string', ['number', 'number']),
     setMatch: c('shadelab_set_match_highlight', null, ['number']),
     redraw: c('shadelab_redraw', null, []),
     ui: () => JSON.parse(Module.ccall('shadelab_ui', 'string', [], [])),
@@ -175,23 +177,37 @@ document.addEventListener('keydown', (event) => {
   if (press(code)) event.preventDefault();
 });
 
-// ---- mouse: drag orbits, the wheel zooms ----
+// ---- mouse: drag orbits, right-drag (or Shift + drag) moves the light, a click probes, the wheel zooms ----
 function wireMouse() {
   const canvas = $('canvas');
   let last = null;
+  canvas.addEventListener('contextmenu', (e) => e.preventDefault());
   canvas.addEventListener('pointerdown', (e) => {
-    if (e.button !== 0) return;
-    last = {x: e.clientX, y: e.clientY};
+    if (e.button !== 0 && e.button !== 2) return;
+    last = {x: e.clientX, y: e.clientY, light: e.button === 2 || e.shiftKey, travelled: 0,
+            downX: e.offsetX, downY: e.offsetY};
     canvas.setPointerCapture(e.pointerId);
     canvas.focus();
   });
   canvas.addEventListener('pointermove', (e) => {
     if (!last) return;
-    api.drag(e.clientX - last.x, e.clientY - last.y);
-    last = {x: e.clientX, y: e.clientY};
+    const dx = e.clientX - last.x, dy = e.clientY - last.y;
+    last.travelled += Math.abs(dx) + Math.abs(dy);
+    (last.light ? api.dragLight : api.drag)(dx, dy);
+    last.x = e.clientX;
+    last.y = e.clientY;
     refresh();
   });
   const end = () => { last = null; };
+  // A left press and release that moved less than 3 px is a click: probe the point, in canvas pixels.
+  canvas.addEventListener('pointerup', (e) => {
+    if (last && !last.light && last.travelled < 3) {
+      const scale = canvas.width / canvas.clientWidth;
+      const error = api.probe(last.downX * scale, last.downY * scale);
+      if (error) showMessage(error);
+      refresh();
+    }
+  });
   canvas.addEventListener('pointerup', end);
   canvas.addEventListener('pointercancel', end);
   canvas.addEventListener('wheel', (e) => {
@@ -214,6 +230,9 @@ function refresh() {
   ui = api.ui();
   document.title = ui.title;
   $('status').textContent = ui.status;
+  $('probe').textContent = ui.probe ||
+      'Click a point of an object: its l, n, v and r or h are drawn there, and the terms of the current mode ' +
+      'show here beside the exact ones. Right-drag (or Shift + drag) moves the light; W shows the mesh.';
   $('renderer').textContent = 'WebGL 2 (OpenGL ES 3.0 to the renderer): ' + ui.renderer;
   $('panel').hidden = !ui.showPanel;
   $('help').hidden = !ui.showHelp;
@@ -230,6 +249,7 @@ function refresh() {
   $('auto').checked = ui.autoLevel;
   setIfIdle('projection', ui.orthographic ? 'orthographic' : 'perspective');
   setIfIdle('normals', scene.vertex_normals || 'averaged');
+  setIfIdle('overlay', ui.overlay);
   const object = ui.scene.objects[0];
   $('material').hidden = !object;
   if (object) {
@@ -322,6 +342,7 @@ function wireControls() {
     pressUntil(ui.level < target ? 61 : 45, (u) => u.level === target);
   });
   $('auto').addEventListener('change', (e) => pressUntil(65, (u) => u.autoLevel === e.target.checked, 1));
+  $('overlay').addEventListener('change', (e) => pressUntil(87, (u) => u.overlay === e.target.value, 2));
   $('projection').addEventListener('change',
       (e) => pressUntil(79, (u) => u.orthographic === (e.target.value === 'orthographic'), 1));
   $('normals').addEventListener('change',

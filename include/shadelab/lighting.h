@@ -6,6 +6,7 @@
 #include <optional>
 #include <span>
 #include <string_view>
+#include <utility>
 
 #include <glm/glm.hpp>
 
@@ -70,9 +71,26 @@ struct ShadeOptions {
     int toonBands = kToonBands;
 };
 
+// The three sums of DESIGN §3's equation, each over every light and not yet clamped: Σ k_a·I_a,
+// Σ att·spot·k_d·I_d·max(l·n,0) and Σ att·spot·[l·n > 0]·k_s·I_s·spec (toon: the quantized terms). The demo's
+// probe shows them one by one; shade() is their sum.
+struct LightTerms {
+    glm::dvec3 ambient{0.0}, diffuse{0.0}, specular{0.0};
+    glm::dvec3 total() const { return ambient + diffuse + specular; }
+};
+LightTerms shadeTerms(const SurfacePoint& point, const Material& material, std::span<const Light> lights,
+                      ShadeOptions options);
+
 // I = Σ_lights [k_a·I_a + att·spot·(k_d·I_d·max(l·n,0) + [l·n > 0]·k_s·I_s·spec)], not yet clamped.
 glm::dvec3 shade(const SurfacePoint& point, const Material& material, std::span<const Light> lights,
                  ShadeOptions options);
+
+// The unit vector from `point` towards `light` (for a directional light: against its direction) and the
+// distance to it (0 for directional and ambient lights): DESIGN §3's l and t.
+std::pair<glm::dvec3, double> toLight(const Light& light, const SurfacePoint& point);
+// The vector the specular term measures against: r = −l + 2(l·n)n (Phong) or h = normalize(v + l)
+// (Blinn-Phong).
+glm::dvec3 specularVector(const SurfacePoint& point, const glm::dvec3& l, LightingModel model);
 
 // Colours and intensities are capped at kMaxColorComponent before they are lit, in C++ and (on upload) in
 // GLSL alike: a product of two stays below 1e36, inside float's range, so no term becomes Inf and no

@@ -28,6 +28,13 @@ std::string_view toString(DepthMode mode); // "standard" | "reversed" | "reverse
 std::optional<DepthMode> parseDepthMode(std::string_view text);
 std::string_view toString(ProjectionType type); // "perspective" | "frustum" | "orthographic"
 
+// "overlay": lines drawn over the shaded surface for teaching (the demo's W key): none; wireframe (the mesh's
+// edges); normals (the edges, each face normal from its centroid and each vertex normal of the scene's
+// kind). The analytic reference ignores it: it shows the mesh, not the sphere.
+enum class Overlay { None, Wireframe, Normals };
+std::string_view toString(Overlay overlay); // "none" | "wireframe" | "normals"
+std::optional<Overlay> parseOverlay(std::string_view text);
+
 struct Projection {
     ProjectionType type = ProjectionType::Perspective;
     double fovyDeg = 40;                               // perspective
@@ -72,6 +79,7 @@ struct Scene {
     double tolerancePx = 0.5;   // "tolerance_px": the silhouette error "auto" subdivision allows, > 0
     DepthMode depth = DepthMode::Standard;
     VertexNormals vertexNormals = VertexNormals::Averaged; // "vertex_normals": "averaged" | "exact"
+    Overlay overlay = Overlay::None;                       // "overlay"
     std::vector<SceneObject> objects{SceneObject{}};
     std::vector<Light> lights{defaultLight()};
 

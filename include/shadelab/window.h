@@ -59,6 +59,10 @@ public:
     void onKeyPress(std::function<void(int key)> handler);
     // Cursor movement in window pixels while the left button is held.
     void onDrag(std::function<void(double dx, double dy)> handler);
+    // Cursor movement in window pixels while the right button is held.
+    void onRightDrag(std::function<void(double dx, double dy)> handler);
+    // A left press and release in (nearly) the same place, at framebuffer pixels from the top left.
+    void onClick(std::function<void(double x, double y)> handler);
     // Wheel steps: positive away from the user.
     void onScroll(std::function<void(double steps)> handler);
     Api api() const { return api_; }

@@ -37,6 +37,9 @@ void addSceneFlags(CLI::App& command, SceneOverrides& o) {
         "--depth", o.depth,
         "Depth mode: standard (DESIGN's [-1,1] convention), reversed (reversed-Z, 32-bit float "
         "depth) or reversed-infinite (reversed-Z with the far plane at infinity)");
+    command.add_option("--overlay", o.overlay,
+                       "Lines over the surface: none, wireframe (the mesh's edges) or normals (edges, face "
+                       "and vertex normals)");
     command.add_option("--size", o.size, "Image size WxH, e.g. 512x512 (overrides the scene)");
 }
 

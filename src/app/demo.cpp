@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include "app/commands.h"
+#include "app/demo_draw.h"
 #include "app/demo_state.h"
 #include "app/panel.h"
 #include "shadelab/errors.h"
@@ -59,6 +60,10 @@ public:
         window_.onDrag([this](double dx, double dy) {
             if (!panel_.wantsMouse()) state_.drag(dx, dy);
         });
+        window_.onRightDrag([this](double dx, double dy) {
+            if (!panel_.wantsMouse()) state_.dragLight(dx, dy);
+        });
+        window_.onClick([this](double x, double y) { onClick(x, y); });
         window_.onScroll([this](double steps) {
             if (!panel_.wantsMouse()) state_.zoom(steps);
         });
@@ -94,7 +99,7 @@ private:
         const int column = panelColumnWidth(width, state_.showPanel, uiScale_);
         const auto start = Clock::now();
         state_.setViewport(width - column, height);
-        renderer_.render(state_.drawn(), width - column, height, column);
+        drawDemo(renderer_, state_, width - column, height, column);
         gl::finish();
         timer_.add(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
         insidePanel_ = true;
@@ -103,6 +108,23 @@ private:
     }
 
     Scene sized(int width, int height) const { return state_.current(width, height); }
+
+    // A click on the picture probes the surface point there (on the panel it belongs to the panel).
+    void onClick(double x, double y) {
+        try {
+            if (panel_.wantsMouse()) return;
+            int width = 0, height = 0;
+            window_.framebufferSize(width, height);
+            const int column = panelColumnWidth(width, state_.showPanel, uiScale_);
+            if (x < column) return;
+            state_.probeAt(x - column, y);
+            if (const auto probe = state_.probe())
+                std::printf("%s", probeText(*probe, state_.drawn().shading, state_.drawn().lighting).c_str());
+            std::fflush(stdout);
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "shadelab: click not handled: %s\n", printable(e.what()).c_str());
+        }
+    }
 
     // Called from GLFW's C callback: nothing may escape it (it would end the demo), so a failure is
     // reported and the demo goes on.
@@ -148,7 +170,8 @@ private:
     void saveScreenshot() {
         int width = 0, height = 0;
         window_.framebufferSize(width, height);
-        width -= panelColumnWidth(width, state_.showPanel); // the picture, without the panel's column
+        width -=
+            panelColumnWidth(width, state_.showPanel, uiScale_); // the picture, without the panel's column
         if (width <= 0 || height <= 0) return;
         const Scene scene = sized(width, height);
         // Both files are written under temporary names in the folder, then linked to the first free

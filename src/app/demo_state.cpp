@@ -27,6 +27,7 @@ const std::vector<KeyBinding>& bindings() {
         {{'A'}, "A", "automatic level: silhouette error < tolerance_px", Command::AutoLevel},
         {{'O'}, "O", "perspective <-> orthographic", Command::ToggleProjection},
         {{'N'}, "N", "averaged <-> exact vertex normals", Command::ToggleNormals},
+        {{'W'}, "W", "overlay: wireframe, then face and vertex normals, then none", Command::ToggleOverlay},
         {{'M'}, "M", "next material preset", Command::NextMaterial},
         {{'L'}, "L", "next light set-up", Command::NextLights},
         {{'R'}, "R", "reset the view", Command::ResetView},
@@ -78,7 +79,9 @@ std::string keyHelpText() {
         label.resize(std::max<std::size_t>(label.size(), 8), ' ');
         text += label + " " + std::string(b.action) + "\n";
     }
-    text += "drag    orbit around the target\nwheel   zoom\n";
+    text += "drag    orbit around the target\nwheel   zoom\n"
+            "right-drag  move the light around the target\n"
+            "click   probe a surface point: l, n, v, r/h and the terms, mode vs exact\n";
     return text;
 }
 
@@ -250,6 +253,11 @@ bool DemoState::apply(Command command) {
         scene_.vertexNormals =
             scene_.vertexNormals == VertexNormals::Averaged ? VertexNormals::Exact : VertexNormals::Averaged;
         break;
+    case Command::ToggleOverlay:
+        scene_.overlay = scene_.overlay == Overlay::None        ? Overlay::Wireframe
+                         : scene_.overlay == Overlay::Wireframe ? Overlay::Normals
+                                                                : Overlay::None;
+        break;
     case Command::NextMaterial:
         material_ = (material_ + 1) % int(materialPresets().size() + 1);
         for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
@@ -314,6 +322,11 @@ std::string DemoState::describeChange(Command command) const {
     case Command::ToggleNormals:
         return scene.vertexNormals == VertexNormals::Exact ? "exact vertex normals"
                                                            : "averaged vertex normals";
+    case Command::ToggleOverlay:
+        return scene.overlay == Overlay::None ? "overlay off"
+               : scene.overlay == Overlay::Wireframe
+                   ? "overlay: wireframe"
+                   : "overlay: wireframe, face normals (amber), vertex normals (cyan)";
     case Command::NextMaterial:
         return "material: " + materialName();
     case Command::NextLights:
@@ -323,6 +336,92 @@ std::string DemoState::describeChange(Command command) const {
     default: // the panel and the help show themselves
         return lastChange_;
     }
+}
+
+namespace {
+
+// `v` turned by the rotation that takes unit `from` to unit `to` (about their common perpendicular).
+glm::dvec3 rotateLike(const glm::dvec3& v, const glm::dvec3& from, const glm::dvec3& to) {
+    const glm::dvec3 axis = glm::cross(from, to);
+    const double sine = glm::length(axis), cosine = glm::dot(from, to);
+    if (!(sine > 1e-15)) return v;
+    const glm::dvec3 k = axis / sine; // Rodrigues' formula
+    return v * cosine + glm::cross(k, v) * sine + k * glm::dot(k, v) * (1 - cosine);
+}
+
+std::string formatVector(const glm::dvec3& v) {
+    char text[96];
+    std::snprintf(text, sizeof text, "(%.2f, %.2f, %.2f)", v.x, v.y, v.z);
+    return text;
+}
+
+} // namespace
+
+void DemoState::dragLight(double dxPixels, double dyPixels) {
+    const auto light = std::find_if(scene_.lights.begin(), scene_.lights.end(),
+                                    [](const Light& l) { return l.type != LightType::Ambient; });
+    if (light == scene_.lights.end()) {
+        lastChange_ = "no light to move (only ambient light)";
+        return;
+    }
+    const std::size_t index = std::size_t(light - scene_.lights.begin());
+    const bool positional = light->type != LightType::Directional;
+    const glm::dvec3 target = camera_.target;
+    const glm::dvec3 offset = positional ? light->position - target : -unitDirection(light->direction);
+    if (!(glm::length(offset) > 0)) {
+        lastChange_ = "light " + std::to_string(index + 1) + " sits at the target: nothing to orbit";
+        return;
+    }
+    // The camera's orbit, the other way round: dragging right moves the light right on the screen.
+    OrbitCamera orbit = OrbitCamera::looking(target + offset, target);
+    orbit.drag(-dxPixels, -dyPixels);
+    const glm::dvec3 moved = orbit.eye() - target;
+    const glm::dvec3 from = glm::normalize(offset), to = glm::normalize(moved);
+    if (positional) {
+        light->position = target + moved;
+        if (light->type == LightType::Spot) light->direction = rotateLike(light->direction, from, to);
+        lastChange_ = "light " + std::to_string(index + 1) + " (" + std::string(toString(light->type)) +
+                      ") at " + formatVector(light->position);
+    } else {
+        light->direction = -to;
+        lastChange_ = "light " + std::to_string(index + 1) + " (directional) travelling " +
+                      formatVector(light->direction);
+    }
+}
+
+bool DemoState::probeAt(double x, double y) {
+    const Scene shown = drawn();
+    probePoint_ = pickSurfacePoint(shown, x, y);
+    if (!probePoint_) {
+        lastChange_ = "probe off";
+        return false;
+    }
+    if (const auto report = probe()) {
+        char text[160];
+        std::snprintf(text, sizeof text, "probe: %s differs from exact by %.2f/255",
+                      std::string(toString(shown.shading)).c_str(), probeError255(*report));
+        lastChange_ = text;
+    }
+    return true;
+}
+
+std::optional<ProbeReport> DemoState::probe() const {
+    if (!probePoint_ || probePoint_->object >= scene_.objects.size()) return std::nullopt;
+    const Scene shown = drawn();
+    const int level = subdivisionLevel(shown, shown.objects[probePoint_->object]);
+    char point[96];
+    std::snprintf(point, sizeof point, "%zu %.17g %.17g %.17g|", probePoint_->object,
+                  probePoint_->directionObject.x, probePoint_->directionObject.y,
+                  probePoint_->directionObject.z);
+    const std::string key = point + sceneToJson(shown);
+    if (key == probeKey_ && probeReport_) return probeReport_;
+    if (!probeMesh_ || probeMesh_->level != level || probeMeshNormals_ != shown.vertexNormals) {
+        probeMesh_ = buildSphere(level, shown.vertexNormals);
+        probeMeshNormals_ = shown.vertexNormals;
+    }
+    probeReport_ = probeSurface(shown, *probePoint_, *probeMesh_);
+    probeKey_ = key;
+    return probeReport_;
 }
 
 // Each object one level up or down from the level it is drawn at ("auto" resolved first).
@@ -401,6 +500,46 @@ std::string statusText(const DemoState& state) {
            (state.orthographic() ? "orthographic" : "perspective") + ", " +
            (scene.vertexNormals == VertexNormals::Averaged ? "averaged" : "exact") +
            " normals\nmaterial: " + state.materialName() + ", lights: " + state.lightsName();
+}
+
+double probeError255(const ProbeReport& probe) {
+    const glm::dvec3 d = glm::abs(probe.mode.color - probe.exact.color);
+    return 255 * std::max({d.x, d.y, d.z});
+}
+
+std::string probeText(const ProbeReport& probe, ShadingMode mode, LightingModel lighting) {
+    char line[200];
+    std::string text;
+    auto row = [&](const char* name, const glm::dvec3& a, const glm::dvec3& b) {
+        std::snprintf(line, sizeof line, "%-9s %6.3f %6.3f %6.3f | %6.3f %6.3f %6.3f\n", name, a.x, a.y, a.z,
+                      b.x, b.y, b.z);
+        text += line;
+    };
+    std::snprintf(line, sizeof line, "probe: object %zu, level %d, triangle %zu\n", probe.point.object + 1,
+                  probe.level, probe.triangle);
+    text += line;
+    std::snprintf(line, sizeof line, "%-9s %-20s | %s\n", "RGB", std::string(toString(mode)).c_str(),
+                  "exact");
+    text += line;
+    row("ambient", probe.mode.terms.ambient, probe.exact.terms.ambient);
+    row("diffuse", probe.mode.terms.diffuse, probe.exact.terms.diffuse);
+    row("specular", probe.mode.terms.specular, probe.exact.terms.specular);
+    row("pixel", probe.mode.color, probe.exact.color);
+    std::snprintf(line, sizeof line, "difference: %.2f/255 (largest of R, G, B)\n", probeError255(probe));
+    text += line;
+    const char* where = mode == ShadingMode::Flat ? "flat lights the triangle's centroid with its face normal"
+                        : mode == ShadingMode::Gouraud ? "Gouraud interpolates the vertices' terms"
+                                                       : "lit at the mesh point, interpolated normal";
+    text += std::string(where) + "\nview space, at the mode's point:\n";
+    const SurfacePoint& p = probe.mode.pointView;
+    text += "n (white)   " + formatVector(p.normal) + "\nv (green)   " + formatVector(p.toViewer) + "\n";
+    if (probe.light >= 0) {
+        text += "l (yellow)  " + formatVector(probe.mode.toLight) + ", light " +
+                std::to_string(probe.light + 1) + "\n" +
+                (lighting == LightingModel::Phong ? "r (magenta) " : "h (magenta) ") +
+                formatVector(probe.mode.specularVector) + "\n";
+    }
+    return text;
 }
 
 std::string presentationLabel(const DemoState& state) {

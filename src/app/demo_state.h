@@ -8,7 +8,9 @@
 #include <string_view>
 #include <vector>
 
+#include "shadelab/probe.h"
 #include "shadelab/scene.h"
+#include "shadelab/sphere.h"
 
 namespace shadelab::app {
 
@@ -31,6 +33,7 @@ enum class Command {
     LevelDown,
     ToggleProjection,
     ToggleNormals,
+    ToggleOverlay,
     AutoLevel,
     NextMaterial,
     NextLights,
@@ -101,6 +104,17 @@ public:
     // Mouse input: orbit and zoom, kept outside every object (and inside the far plane where both fit).
     void drag(double dxPixels, double dyPixels);
     void zoom(double wheelSteps);
+    // Right-button drag: orbits the first light that is not ambient around the camera target, 0.5° per
+    // pixel as the camera does (a spot's direction turns with it; a directional light's direction turns).
+    // An edit of the scene: S saves it and `shadelab render` draws it.
+    void dragLight(double dxPixels, double dyPixels);
+    // A click at (x, y) pixels of the drawn picture (top left origin) pins the probe to the surface point
+    // there; a click on the background removes it. Returns whether a point was hit.
+    bool probeAt(double x, double y);
+    void clearProbe() { probePoint_.reset(); }
+    // The probe evaluated for the drawn scene (it follows orbits, level and mode changes); nullopt
+    // without one.
+    std::optional<ProbeReport> probe() const;
 
     // Applies a command; returns false for the commands the window carries out itself (screenshot, quit).
     bool apply(Command command);
@@ -135,6 +149,13 @@ private:
     bool orthographic_ = false;
     int viewportWidth_ = 0, viewportHeight_ = 0;
     std::string lastChange_;
+    std::optional<ProbePoint> probePoint_;
+    // The last probe evaluated and what it was evaluated for: a level-10 mesh takes ~0.1 s to build and
+    // search, so the probe is recomputed only when the drawn scene or the point changes.
+    mutable std::string probeKey_;
+    mutable std::optional<ProbeReport> probeReport_;
+    mutable std::optional<SphereMesh> probeMesh_;
+    mutable VertexNormals probeMeshNormals_ = VertexNormals::Averaged;
     int material_ = 0; // 0: the scene's own, i: materialPresets()[i − 1]
     int lights_ = 0;   // 0: the scene's own, i: lightPresets()[i − 1]
 };
@@ -148,5 +169,10 @@ std::string statusText(const DemoState& state);
 // LIGHTING | LEVEL 5 | BETA = 96" (ALPHA under Phong lighting; the first object's exponent). ASCII: the
 // window's built-in font has no Greek letters.
 std::string presentationLabel(const DemoState& state);
+// The probe's table for the panel and the page: the ambient, diffuse and specular terms and the pixel for
+// the current mode beside the exact ones, their difference in 1/255, and the vectors n, v, l, r or h.
+std::string probeText(const ProbeReport& probe, ShadingMode mode, LightingModel lighting);
+// The largest difference of the mode's pixel from the exact one over R, G, B, in units of 1/255.
+double probeError255(const ProbeReport& probe);
 
 } // namespace shadelab::app

@@ -121,6 +121,18 @@ void Panel::draw(DemoState& state, const std::string& status, int columnWidth) {
         }
         if (ImGui::CollapsingHeader("lights"))
             for (std::size_t i = 0; i < scene.lights.size(); ++i) lightControls(scene.lights[i], int(i));
+        if (ImGui::CollapsingHeader("probe (click the sphere)", ImGuiTreeNodeFlags_DefaultOpen)) {
+            if (const auto probe = state.probe()) {
+                const Scene shown = state.drawn();
+                ImGui::TextUnformatted(probeText(*probe, shown.shading, shown.lighting).c_str());
+                if (ImGui::Button("remove the probe")) state.clearProbe();
+            } else {
+                ImGui::TextUnformatted(
+                    "Click a point of an object: its l, n, v and r or h are drawn there, and "
+                    "the ambient, diffuse and specular terms of the current mode show here "
+                    "beside the exact ones. Right-drag moves the light; W shows the mesh.");
+            }
+        }
         if (ImGui::CollapsingHeader("toon")) {
             int bands = scene.toonBands;
             if (ImGui::SliderInt("bands", &bands, kMinToonBands, kMaxToonBands))

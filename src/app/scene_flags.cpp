@@ -93,6 +93,13 @@ Scene applyOverrides(Scene scene, const SceneOverrides& o, const std::string& pa
                              "; expected one of standard, reversed, reversed-infinite");
         scene.depth = *mode;
     }
+    if (o.overlay) {
+        const auto overlay = parseOverlay(*o.overlay);
+        if (!overlay)
+            throw InputError("--overlay: unknown value " + quoted(*o.overlay) +
+                             "; expected one of none, wireframe, normals");
+        scene.overlay = *overlay;
+    }
     if (o.tolerancePx) scene.tolerancePx = parseTolerance(*o.tolerancePx);
     if (o.size) composeSize(scene, *o.size);
     try {

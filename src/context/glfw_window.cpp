@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -38,14 +39,19 @@ struct WindowedGeometry {
     int x = 0, y = 0, width = 0, height = 0;
 };
 
+// A press and release of the left button that moved less than this (in window coordinates) is a click,
+// not the start of an orbit.
+constexpr double kClickSlopPixels = 3;
+
 struct Window::State {
     GLFWwindow* window = nullptr;
     WindowedGeometry windowed;
     std::function<void(int)> keyHandler;
-    std::function<void(double, double)> dragHandler;
+    std::function<void(double, double)> dragHandler, rightDragHandler, clickHandler;
     std::function<void(double)> scrollHandler;
-    bool dragging = false;
+    bool dragging = false, rightDragging = false;
     double lastX = 0, lastY = 0;
+    double pressX = 0, pressY = 0, travelled = 0; // the left button's press, and how far it moved since
 };
 
 bool Window::displayNamed() {
@@ -124,13 +130,30 @@ Window::Window(int width, int height, const std::string& title, bool debugContex
     });
     glfwSetMouseButtonCallback(state_->window, [](GLFWwindow* w, int button, int action, int) {
         auto* state = static_cast<State*>(glfwGetWindowUserPointer(w));
+        glfwGetCursorPos(w, &state->lastX, &state->lastY);
+        if (button == GLFW_MOUSE_BUTTON_RIGHT) state->rightDragging = action == GLFW_PRESS;
         if (button != GLFW_MOUSE_BUTTON_LEFT) return;
         state->dragging = action == GLFW_PRESS;
-        glfwGetCursorPos(w, &state->lastX, &state->lastY);
+        if (action == GLFW_PRESS) {
+            state->pressX = state->lastX;
+            state->pressY = state->lastY;
+            state->travelled = 0;
+        } else if (state->travelled < kClickSlopPixels && state->clickHandler) {
+            // In framebuffer pixels, which differ from window coordinates on a scaled display.
+            int windowWidth = 0, windowHeight = 0, width = 0, height = 0;
+            glfwGetWindowSize(w, &windowWidth, &windowHeight);
+            glfwGetFramebufferSize(w, &width, &height);
+            const double sx = windowWidth > 0 ? double(width) / windowWidth : 1;
+            const double sy = windowHeight > 0 ? double(height) / windowHeight : 1;
+            state->clickHandler(state->pressX * sx, state->pressY * sy);
+        }
     });
     glfwSetCursorPosCallback(state_->window, [](GLFWwindow* w, double x, double y) {
         auto* state = static_cast<State*>(glfwGetWindowUserPointer(w));
+        if (state->dragging) state->travelled += std::abs(x - state->lastX) + std::abs(y - state->lastY);
         if (state->dragging && state->dragHandler) state->dragHandler(x - state->lastX, y - state->lastY);
+        if (state->rightDragging && state->rightDragHandler)
+            state->rightDragHandler(x - state->lastX, y - state->lastY);
         state->lastX = x;
         state->lastY = y;
     });
@@ -186,6 +209,12 @@ void Window::onKeyPress(std::function<void(int)> handler) {
 }
 void Window::onDrag(std::function<void(double, double)> handler) {
     state_->dragHandler = std::move(handler);
+}
+void Window::onRightDrag(std::function<void(double, double)> handler) {
+    state_->rightDragHandler = std::move(handler);
+}
+void Window::onClick(std::function<void(double, double)> handler) {
+    state_->clickHandler = std::move(handler);
 }
 void Window::onScroll(std::function<void(double)> handler) {
     state_->scrollHandler = std::move(handler);

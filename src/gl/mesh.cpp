@@ -59,6 +59,27 @@ void GpuMesh::draw() const {
     glBindVertexArray(0);
 }
 
+GpuLines::GpuLines() : vao_(genVertexArray()), vertices_(genBuffer()) {
+    glBindVertexArray(vao_.get());
+    glBindBuffer(GL_ARRAY_BUFFER, vertices_.get());
+    attribute(0, sizeof(LineVertex), offsetof(LineVertex, position));
+    attribute(1, sizeof(LineVertex), offsetof(LineVertex, color));
+    glBindVertexArray(0);
+}
+
+void GpuLines::set(std::span<const LineVertex> vertices) {
+    glBindBuffer(GL_ARRAY_BUFFER, vertices_.get());
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size_bytes()), vertices.data(), GL_DYNAMIC_DRAW);
+    vertexCount_ = int(vertices.size());
+}
+
+void GpuLines::draw() const {
+    if (vertexCount_ == 0) return;
+    glBindVertexArray(vao_.get());
+    glDrawArrays(GL_LINES, 0, vertexCount_);
+    glBindVertexArray(0);
+}
+
 void drawWith(const Program& program, const GpuMesh& mesh) {
     glUseProgram(program.get());
     mesh.draw();

@@ -35,11 +35,8 @@ std::string infoLog(GLuint object, bool isProgram) {
     return log;
 }
 
-Shader compileStage(GLenum stage, const char* file, const ProgramVariant& variant) {
-    const std::string source = glslHeader() + variant.defines() + "#line 1 " +
-                               std::to_string(kLightingSourceNumber) + "\n" +
-                               std::string(shaderText(kLightingFile)) + "#line 1 " +
-                               std::to_string(kStageSourceNumber) + "\n" + std::string(shaderText(file));
+// Compiles `source`; `where` names it in messages.
+Shader compileSource(GLenum stage, const std::string& source, const std::string& where) {
     Shader shader(glCreateShader(stage));
     const char* text = source.c_str();
     glShaderSource(shader.get(), 1, &text, nullptr);
@@ -47,11 +44,26 @@ Shader compileStage(GLenum stage, const char* file, const ProgramVariant& varian
     GLint ok = GL_FALSE;
     glGetShaderiv(shader.get(), GL_COMPILE_STATUS, &ok);
     const std::string log = infoLog(shader.get(), false);
-    const std::string where = std::string(file) + " (variant " + variant.name() +
-                              "; source 1 = " + kLightingFile + ", source 2 = " + file + ")";
     if (!ok) throw RuntimeError("compiling " + where + " failed:\n" + log);
     if (!log.empty()) std::fprintf(stderr, "shadelab: compile log of %s:\n%s\n", where.c_str(), log.c_str());
     return shader;
+}
+
+Shader compileStage(GLenum stage, const char* file, const ProgramVariant& variant) {
+    const std::string source = glslHeader() + variant.defines() + "#line 1 " +
+                               std::to_string(kLightingSourceNumber) + "\n" +
+                               std::string(shaderText(kLightingFile)) + "#line 1 " +
+                               std::to_string(kStageSourceNumber) + "\n" + std::string(shaderText(file));
+    return compileSource(stage, source,
+                         std::string(file) + " (variant " + variant.name() + "; source 1 = " + kLightingFile +
+                             ", source 2 = " + file + ")");
+}
+
+void linkOrThrow(const Program& program, const std::string& name) {
+    glLinkProgram(program.get());
+    GLint ok = GL_FALSE;
+    glGetProgramiv(program.get(), GL_LINK_STATUS, &ok);
+    if (!ok) throw RuntimeError("linking program " + name + " failed:\n" + infoLog(program.get(), true));
 }
 
 } // namespace
@@ -130,14 +142,26 @@ Program buildProgram(const ProgramVariant& variant) {
         geometry = compileStage(GL_GEOMETRY_SHADER, "surface.geom.glsl", variant);
         glAttachShader(program.get(), geometry.get());
     }
-    glLinkProgram(program.get());
-    GLint ok = GL_FALSE;
-    glGetProgramiv(program.get(), GL_LINK_STATUS, &ok);
-    if (!ok)
-        throw RuntimeError("linking program " + variant.name() + " failed:\n" + infoLog(program.get(), true));
+    linkOrThrow(program, variant.name());
     glDetachShader(program.get(), vertex.get());
     glDetachShader(program.get(), fragment.get());
     if (geometry) glDetachShader(program.get(), geometry.get());
+    return program;
+}
+
+Program buildLineProgram() {
+    auto stage = [](GLenum kind, const char* file) {
+        return compileSource(kind, glslHeader() + std::string("#line 1 1\n") + std::string(shaderText(file)),
+                             std::string(file) + " (source 1)");
+    };
+    const Shader vertex = stage(GL_VERTEX_SHADER, "lines.vert.glsl");
+    const Shader fragment = stage(GL_FRAGMENT_SHADER, "lines.frag.glsl");
+    Program program(glCreateProgram());
+    glAttachShader(program.get(), vertex.get());
+    glAttachShader(program.get(), fragment.get());
+    linkOrThrow(program, "lines");
+    glDetachShader(program.get(), vertex.get());
+    glDetachShader(program.get(), fragment.get());
     return program;
 }
 

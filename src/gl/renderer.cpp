@@ -193,7 +193,53 @@ void Renderer::render(const Scene& scene, int width, int height, int x) {
     }
     glUseProgram(0);
     glDisable(GL_CULL_FACE);
+    if (scene.overlay != Overlay::None) drawOverlay(sized, view);
     checkGlError("rendering the scene");
+}
+
+Id Renderer::lineProgram() {
+    if (!lineProgram_) lineProgram_ = buildLineProgram();
+    return lineProgram_.get();
+}
+
+void Renderer::drawOverlay(const Scene& sized, const SceneView& view) {
+    const GLuint prog = lineProgram();
+    glUseProgram(prog);
+    const GLint clipFromSpace = glGetUniformLocation(prog, "uClipFromSpace");
+    for (const SceneObject& object : sized.objects) {
+        const int level = subdivisionLevel(sized, object);
+        auto& lines = overlays_[{level, sized.vertexNormals, sized.overlay}];
+        if (!lines)
+            lines = std::make_unique<GpuLines>(
+                overlayLines(buildSphere(level, sized.vertexNormals), sized.overlay));
+        const glm::mat4 clipFromObject(view.clipFromView * view.viewFromWorld * worldFromObject(object));
+        glUniformMatrix4fv(clipFromSpace, 1, GL_FALSE, glm::value_ptr(clipFromObject));
+        lines->draw();
+    }
+    glUseProgram(0);
+}
+
+void Renderer::drawLinesOver(const Scene& scene, std::span<const LineVertex> linesView, int width, int height,
+                             int x) {
+    if (width <= 0 || height <= 0 || linesView.empty()) return;
+    Scene sized = scene;
+    sized.width = width;
+    sized.height = height;
+    const SceneView view = sceneView(sized);
+    glViewport(x, 0, width, height);
+    setClipDepthZeroToOne(view.depth != DepthMode::Standard, toString(view.depth));
+    glDisable(GL_DEPTH_TEST);
+    if (!streamedLines_) streamedLines_ = std::make_unique<GpuLines>();
+    streamedLines_->set(linesView);
+    const GLuint prog = lineProgram();
+    glUseProgram(prog);
+    const glm::mat4 clipFromView(view.clipFromView);
+    glUniformMatrix4fv(glGetUniformLocation(prog, "uClipFromSpace"), 1, GL_FALSE,
+                       glm::value_ptr(clipFromView));
+    streamedLines_->draw();
+    glUseProgram(0);
+    glEnable(GL_DEPTH_TEST);
+    checkGlError("drawing lines over the scene");
 }
 
 } // namespace shadelab::gl

@@ -39,6 +39,8 @@ constexpr Command kAllCommands[] = {
     Command::LevelDown,
     Command::ToggleProjection,
     Command::ToggleNormals,
+    Command::ToggleOverlay,
+    Command::AutoLevel,
     Command::NextMaterial,
     Command::NextLights,
     Command::ResetView,
@@ -186,6 +188,7 @@ const std::vector<std::pair<int, Command>>& issueKeys() {
         {GLFW_KEY_ESCAPE, Command::Quit},
         {GLFW_KEY_C, Command::TogglePanel},
         {GLFW_KEY_F2, Command::TogglePresentation}, // issue 15: presentation mode
+        {GLFW_KEY_W, Command::ToggleOverlay},       // wireframe and normals overlay
         {GLFW_KEY_F11, Command::ToggleFullScreen},
     };
     return kKeys;
@@ -469,6 +472,7 @@ TEST(DemoTitle, SaysWhatTheLastKeyChanged) {
                                                      {Command::ToggleNormals, "averaged vertex normals"},
                                                      {Command::NextMaterial, "material: matte"},
                                                      {Command::NextLights, "lights: point"},
+                                                     {Command::ToggleOverlay, "overlay: wireframe"},
                                                      {Command::Flat, "flat shading"},
                                                      {Command::ResetView, "view reset"}};
     for (const auto& [command, words] : steps) {
@@ -1023,6 +1027,107 @@ TEST(DemoStateRandom, RandomCommandsDragsAndZoomsAlwaysGiveAValidScene) {
             ASSERT_EQ(s.objects.size(), scene.objects.size());
         }
     }
+}
+
+} // namespace
+} // namespace shadelab::app
+
+namespace shadelab::app {
+namespace {
+
+// Issue 15, teaching instruments: W cycles the overlay through the scene (so S saves it and `render`
+// draws it): none, wireframe, wireframe with face and vertex normals, none.
+TEST(DemoOverlay, WCyclesWireframeNormalsNoneAndTheSceneCarriesIt) {
+    DemoState state{Scene{}};
+    EXPECT_EQ(commandForKey('W'), Command::ToggleOverlay);
+    const Overlay expected[] = {Overlay::Wireframe, Overlay::Normals, Overlay::None};
+    for (Overlay overlay : expected) {
+        EXPECT_TRUE(state.apply(Command::ToggleOverlay));
+        EXPECT_EQ(state.drawn().overlay, overlay);
+        EXPECT_EQ(parseScene(sceneToJson(state.drawn())).overlay, overlay) << "the saved scene keeps it";
+    }
+}
+
+Scene sceneWithLight(const Light& light) {
+    Scene scene;
+    scene.lights = {light};
+    return scene;
+}
+
+// Right-drag orbits a point light around the target: its distance to the target stays, dragging right
+// moves it towards the camera's right (+x seen from +z), dragging up raises it.
+TEST(DemoLightDrag, PointLightOrbitsTheTargetKeepingItsDistance) {
+    Light light = Scene::defaultLight(); // at (3, 3, 5)
+    DemoState state{sceneWithLight(light)};
+    const double distance = glm::length(light.position);
+    state.dragLight(40, 0);
+    const glm::dvec3 right = state.drawn().lights[0].position;
+    EXPECT_NEAR(glm::length(right), distance, 1e-9);
+    EXPECT_GT(right.x, light.position.x);
+    EXPECT_NEAR(right.y, light.position.y, 1e-9) << "a horizontal drag keeps the height";
+    state.dragLight(0, -40);
+    EXPECT_GT(state.drawn().lights[0].position.y, right.y) << "dragging up raises the light";
+    EXPECT_NE(windowTitle(state, 0).find("light 1 (point) at ("), std::string::npos) << windowTitle(state, 0);
+    // The moved light is part of the scene the screenshot saves.
+    EXPECT_EQ(parseScene(sceneToJson(state.drawn())).lights[0].position, state.drawn().lights[0].position);
+}
+
+// A spot's direction turns with its position, so it keeps lighting the same side of the target; a
+// directional light's direction turns as if its source orbited.
+TEST(DemoLightDrag, SpotDirectionTurnsWithItAndDirectionalLightTurns) {
+    Light spot;
+    spot.type = LightType::Spot;
+    spot.position = {0, 0, 5};
+    spot.direction = {0, 0, -1};
+    spot.cutoffDeg = 20;
+    DemoState state{sceneWithLight(spot)};
+    state.dragLight(180, 0); // 90° around +y
+    const Light moved = state.drawn().lights[0];
+    EXPECT_NEAR(moved.position.x, 5, 1e-9);
+    EXPECT_NEAR(moved.position.z, 0, 1e-9);
+    EXPECT_NEAR(glm::dot(glm::normalize(moved.direction), glm::dvec3(-1, 0, 0)), 1, 1e-12)
+        << "still aimed at the target";
+
+    Light directional;
+    directional.type = LightType::Directional;
+    directional.direction = {0, 0, -2};
+    DemoState sun{sceneWithLight(directional)};
+    sun.dragLight(180, 0);
+    EXPECT_NEAR(glm::dot(sun.drawn().lights[0].direction, glm::dvec3(-1, 0, 0)), 1, 1e-12);
+}
+
+TEST(DemoLightDrag, OnlyAmbientLightSaysThereIsNothingToMove) {
+    Light ambient;
+    ambient.type = LightType::Ambient;
+    ambient.ambient = {0.3, 0.3, 0.3};
+    DemoState state{sceneWithLight(ambient)};
+    state.dragLight(10, 10);
+    EXPECT_EQ(state.lastChange(), "no light to move (only ambient light)");
+    EXPECT_EQ(state.drawn().lights[0].ambient, ambient.ambient);
+}
+
+// A click on the sphere pins the probe; it follows the drawn scene (a mode change re-evaluates it) and a
+// click on the background removes it.
+TEST(DemoProbe, ClickPinsTheProbeAndTheBackgroundRemovesIt) {
+    Scene scene;
+    scene.width = scene.height = 200;
+    DemoState state{scene};
+    state.setViewport(200, 200);
+    EXPECT_FALSE(state.probe().has_value());
+    ASSERT_TRUE(state.probeAt(100, 100));
+    const auto phong = state.probe();
+    ASSERT_TRUE(phong.has_value());
+    EXPECT_NEAR(phong->exact.pointView.normal.z, 1, 1e-3) << "the centre of the sphere faces the camera";
+    EXPECT_NE(state.lastChange().find("probe: phong differs from exact by "), std::string::npos);
+    state.apply(Command::Flat);
+    const auto flat = state.probe();
+    ASSERT_TRUE(flat.has_value());
+    EXPECT_NE(flat->mode.pointView.position, phong->mode.pointView.position) << "flat lights the centroid";
+    const std::string text = probeText(*flat, ShadingMode::Flat, LightingModel::BlinnPhong);
+    for (const char* word : {"ambient", "diffuse", "specular", "pixel", "exact", "n (white)", "h (magenta)"})
+        EXPECT_NE(text.find(word), std::string::npos) << word << " in\n" << text;
+    EXPECT_FALSE(state.probeAt(2, 2));
+    EXPECT_FALSE(state.probe().has_value());
 }
 
 } // namespace

@@ -3,6 +3,9 @@
 #pragma once
 
 #include "shadelab/gl/handles.h"
+#include <span>
+
+#include "shadelab/overlay.h"
 #include "shadelab/sphere.h"
 
 namespace shadelab::gl {
@@ -26,6 +29,21 @@ private:
     int triangles_ = 0;
     VertexArray vao_;
     Buffer vertices_, indices_;
+};
+
+// Line segments (GL_LINES) of position and colour (attribute locations 0 and 1 of shaders/lines.vert.glsl):
+// the overlay's edges and normals, uploaded once, or the probe's vectors, replaced with set().
+class GpuLines {
+public:
+    GpuLines();
+    explicit GpuLines(std::span<const LineVertex> vertices) : GpuLines() { set(vertices); }
+    void set(std::span<const LineVertex> vertices);
+    void draw() const;
+
+private:
+    int vertexCount_ = 0;
+    VertexArray vao_;
+    Buffer vertices_;
 };
 
 // Draws `mesh` with `program` and its uniforms as they are (for timing a program's first draw).

@@ -42,4 +42,8 @@ struct ProgramVariant {
 // variant name and the driver log; a non-empty log of a successful compile is printed to stderr.
 Program buildProgram(const ProgramVariant& variant);
 
+// The overlay's line program (shaders/lines.*.glsl): position and colour attributes (locations 0 and 1),
+// uniform uClipFromSpace. Throws RuntimeError as buildProgram does.
+Program buildLineProgram();
+
 } // namespace shadelab::gl

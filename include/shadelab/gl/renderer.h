@@ -4,6 +4,7 @@
 
 #include <map>
 #include <memory>
+#include <span>
 #include <tuple>
 
 #include "shadelab/gl/mesh.h"
@@ -19,7 +20,13 @@ public:
     // the scene's image size, e.g. a resized window; the aspect comes from the viewport). A 0×0 viewport
     // draws nothing.
     // `x` moves the viewport right (the demo's picture beside its panel); the clear covers the whole target.
+    // With scene.overlay, the objects' edges (and normals) are drawn over them, depth-tested.
     void render(const Scene& scene, int width, int height, int x = 0);
+
+    // Lines given in view space drawn over what render() drew into the same viewport, never hidden (the
+    // demo's probe vectors).
+    void drawLinesOver(const Scene& scene, std::span<const LineVertex> linesView, int width, int height,
+                       int x = 0);
 
     // Specialized programs (the default) or the uber program of each mode (the baseline they are measured
     // and cross-checked against).
@@ -34,12 +41,17 @@ public:
 private:
     const GpuMesh& mesh(int level, VertexNormals normals, MeshLayout layout);
     Id program(const ProgramVariant& variant);
+    Id lineProgram();
+    void drawOverlay(const Scene& sized, const SceneView& view);
 
     bool specialize_ = true;
     bool flatGeometryShader_ = false;
     int programsBuilt_ = 0;
     std::map<ProgramVariant, Program> programs_;
     std::map<std::tuple<int, VertexNormals, MeshLayout>, std::unique_ptr<GpuMesh>> meshes_;
+    Program lineProgram_;
+    std::map<std::tuple<int, VertexNormals, Overlay>, std::unique_ptr<GpuLines>> overlays_;
+    std::unique_ptr<GpuLines> streamedLines_;
 };
 
 } // namespace shadelab::gl

@@ -1,0 +1,14 @@
+// What the demo's window and page draw each frame: the drawn scene through the one Renderer (so a
+// screenshot is `shadelab render` of its JSON) and, over it, the probe's vectors, which are not part of
+// the scene.
+#pragma once
+
+#include "app/demo_state.h"
+#include "shadelab/gl/renderer.h"
+
+namespace shadelab::app {
+
+// Into the bound framebuffer, over a viewport of width × height moved `x` to the right.
+void drawDemo(gl::Renderer& renderer, const DemoState& state, int width, int height, int x = 0);
+
+} // namespace shadelab::app
