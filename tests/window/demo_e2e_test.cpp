@@ -314,6 +314,54 @@ void DemoWindow::everyModeKeyShowsWhatRenderGives(const std::string& api) {
     expectCleanQuit(demo);
 }
 
+// The teaching instruments: W draws the wireframe (part of the scene: S saves it and `render` draws the
+// same picture); right-drag moves the light (saved too); a click probes the point under the pointer, says
+// so in the title and draws the probe's vectors over the picture, which S leaves out (they are not part of
+// the scene). Each step changes the window's picture.
+TEST_F(DemoWindow, OverlayLightDragAndProbeShowWhatRenderGives) {
+    const fs::path scene = writeScene("scene.json", sceneJson(kWidth, kHeight, 3, "phong", "phong"));
+    DemoProcess& demo = startDemo("demo", {scene.string(), "--size", kSize, "--hide-panel", "--gl-debug"});
+    demo.window().waitForTitle("shadelab — phong shading");
+    auto savedAndRendered = [&](const std::string& label) {
+        const fs::path stem = demo.screenshot();
+        const Image rendered =
+            renderWithCli(stem.string() + ".json", scratch() / (label + ".png"), scratch());
+        EXPECT_TRUE(
+            matches(settledCapture(demo.window(), rendered), rendered, kWindowTolerance, label + ".window"));
+        EXPECT_TRUE(
+            matches(readPng(stem.string() + ".png"), rendered, kWindowTolerance, label + ".screenshot"));
+        return std::pair{loadScene(stem.string() + ".json"), rendered};
+    };
+    const auto [plainScene, plain] = savedAndRendered("plain");
+    EXPECT_EQ(plainScene.overlay, Overlay::None);
+
+    demo.window().key("w");
+    pollUntil([&] { return demo.window().title().ends_with("| overlay: wireframe"); });
+    const auto [wireScene, wire] = savedAndRendered("wireframe");
+    EXPECT_EQ(wireScene.overlay, Overlay::Wireframe);
+    EXPECT_FALSE(compareImages(wire, plain, kWindowTolerance).passed) << "W drew no edges";
+
+    demo.window().rightDrag(kWidth / 2, kHeight / 2, -80, 0);
+    pollUntil([&] { return demo.window().title().find("| light 1 (point) at (") != std::string::npos; });
+    const auto [litScene, lit] = savedAndRendered("light");
+    EXPECT_LT(litScene.lights[0].position.x, wireScene.lights[0].position.x) << "dragged left";
+    EXPECT_NEAR(glm::length(litScene.lights[0].position), glm::length(wireScene.lights[0].position), 1e-6);
+    EXPECT_FALSE(compareImages(lit, wire, kWindowTolerance).passed) << "the light did not move";
+
+    demo.window().click(kWidth / 2, kHeight / 2);
+    EXPECT_TRUE(pollUntil([&] {
+        return demo.window().title().find("| probe: phong differs from exact by ") != std::string::npos;
+    })) << demo.window().title();
+    // The vectors are drawn over the picture, so the window now differs from the render near the centre.
+    bool vectorsShown =
+        pollUntil([&] { return !compareImages(demo.window().capture(), lit, kWindowTolerance).passed; });
+    EXPECT_TRUE(vectorsShown) << "the probe's vectors are not drawn";
+    const fs::path stem = demo.screenshot();
+    EXPECT_TRUE(matches(readPng(stem.string() + ".png"), lit, kWindowTolerance, "probe.screenshot"))
+        << "S saves the scene's picture, without the probe's vectors";
+    expectCleanQuit(demo);
+}
+
 TEST_F(DemoWindow, EveryModeKeyShowsWhatRenderGives) {
     everyModeKeyShowsWhatRenderGives("gl");
 }

@@ -127,6 +127,20 @@ void XWindow::key(const std::string& key) const {
     run({tools_.xdotool.string(), "key", "--window", id_, key});
 }
 
+void XWindow::click(int x, int y) const {
+    run({tools_.xdotool.string(), "mousemove", "--window", id_, std::to_string(x), std::to_string(y), "click",
+         "1"});
+}
+
+void XWindow::rightDrag(int x, int y, int dx, int dy, int steps) const {
+    run({tools_.xdotool.string(), "mousemove", "--window", id_, std::to_string(x), std::to_string(y),
+         "mousedown", "3"});
+    for (int i = 0; i < steps; ++i)
+        run({tools_.xdotool.string(), "mousemove_relative", "--", std::to_string(dx / steps),
+             std::to_string(dy / steps)});
+    run({tools_.xdotool.string(), "mouseup", "3"});
+}
+
 void XWindow::resize(int width, int height) const {
     run({tools_.xdotool.string(), "windowsize", "--sync", id_, std::to_string(width),
          std::to_string(height)});

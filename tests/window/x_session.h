@@ -51,6 +51,9 @@ public:
     void focus() const;                       // xdotool windowfocus --sync (no window manager needed)
     void key(const std::string& key) const;   // xdotool key --window W <key>
     void resize(int width, int height) const; // xdotool windowsize --sync
+    void click(int x, int y) const;           // left button at (x, y) of the window
+    // Right button held from (x, y) while the pointer moves by (dx, dy) in `steps` steps.
+    void rightDrag(int x, int y, int dx, int dy, int steps = 8) const;
     std::string title() const;
     // Polls the title until it starts with `prefix`; throws with the last title after kWaitLimit.
     std::string waitForTitle(const std::string& prefix) const;
