@@ -88,6 +88,29 @@ class Page:
         finally:
             self.server.shutdown()
 
+    def pointer(self, request):
+        """A click, or a drag by (dx, dy) in steps, at (x, y) CSS pixels from the canvas's centre, with
+        Shift held when asked (Shift + drag moves the light)."""
+        from selenium.webdriver.common.action_chains import ActionChains
+        from selenium.webdriver.common.keys import Keys
+        canvas = self.browser.find_element('id', 'canvas')
+        chain = ActionChains(self.browser).move_to_element_with_offset(canvas, request.get('x', 0),
+                                                                       request.get('y', 0))
+        if request.get('shift'):
+            chain = chain.key_down(Keys.SHIFT)
+        if request['action'] == 'click':
+            chain = chain.click()
+        else:
+            steps = request.get('steps', 8)
+            chain = chain.click_and_hold()
+            for _ in range(steps):
+                chain = chain.move_by_offset(request['dx'] // steps, request['dy'] // steps)
+            chain = chain.release()
+        if request.get('shift'):
+            chain = chain.key_up(Keys.SHIFT)
+        chain.perform()
+        time.sleep(0.2)
+
     def load(self, text, name):
         return self.js('return window.shadelab.loadText(arguments[0], arguments[1])', text, name)
 
@@ -200,8 +223,8 @@ def render(argv):
 
 
 def session():
-    """Requests: {"op": "open", "query": "?…", "args": [...]} first, then load, flags, key, ui, capture,
-    message, resize, screenshot, console, quit."""
+    """Requests: {"op": "open", "query": "?…", "args": [...]} first, then load, flags, key, pointer, ui,
+    capture, message, resize, screenshot, console, quit."""
     page = None
     for line in sys.stdin:
         request = json.loads(line)
@@ -228,6 +251,9 @@ def session():
                 answer = {'element': page.js(
                     'const e = document.querySelector(arguments[0]);'
                     'return e ? {hidden: e.hidden, text: e.textContent} : null;', request['selector'])}
+            elif op == 'pointer':  # real mouse input through WebDriver, offsets from the canvas's centre
+                answer = {}
+                page.pointer(request)
             elif op == 'ui':
                 answer = {'ui': page.js('return window.shadelab.ui()')}
             elif op == 'message':

@@ -21,6 +21,7 @@
 #include "cli/run_process.h"
 #include "gl/gl_test_support.h"
 #include "gl/projected_mesh.h"
+#include "shadelab/probe.h"
 #include "shadelab/window.h"
 
 namespace shadelab::test {
@@ -76,6 +77,13 @@ public:
     }
     std::size_t key(int code) { return add({{"op", "key"}, {"code", code}}); }
     std::size_t ui() { return add({{"op", "ui"}}); }
+    // Real mouse input at (x, y) CSS pixels from the canvas's centre.
+    std::size_t click(int x = 0, int y = 0) {
+        return add({{"op", "pointer"}, {"action", "click"}, {"x", x}, {"y", y}});
+    }
+    std::size_t drag(int dx, int dy, bool shift) {
+        return add({{"op", "pointer"}, {"action", "drag"}, {"dx", dx}, {"dy", dy}, {"shift", shift}});
+    }
     std::size_t element(const std::string& selector) {
         return add({{"op", "element"}, {"selector", selector}});
     }
@@ -347,6 +355,100 @@ TEST_F(Browser, MatchesTheNativeOpenGlEsRender) {
         EXPECT_LT(interiorSum / double(interiorPixels), 0.1);
         EXPECT_LE(double(overTwo), 0.015 * 192 * 192);
     }
+}
+
+// The teaching instruments in the page, with real mouse input: W draws the wireframe (its edges where
+// native render draws them for the state the page reports, within a pixel); Shift + drag moves the light
+// around the target; a click probes the point under the pointer, and the page's table holds the values the
+// native probe computes there.
+TEST_F(Browser, OverlayLightDragAndProbeAsInTheWindow) {
+    Scene scene = litSphereScene(160, LightType::Point);
+    scene.objects[0].subdivisions = 3;
+    Session session;
+    session.open();
+    session.load(scene);
+    const std::size_t plain = session.capture();
+    const std::size_t press = session.key('W');
+    const std::size_t wired = session.ui();
+    const std::size_t wire = session.capture();
+    session.drag(-60, 0, true);
+    const std::size_t moved = session.ui();
+    session.click();
+    const std::size_t probed = session.ui();
+    const std::size_t console = session.console();
+    if (!session.run(dir_)) return;
+
+    EXPECT_EQ(session.answer(press).at("result"), 1);
+    const Scene wireState = parseScene(session.answer(wired).at("ui").at("atImageSize").dump(), "page state");
+    EXPECT_EQ(wireState.overlay, Overlay::Wireframe);
+    // Lines are one pixel wide and SwiftShader rasterizes them by its own rule: the page's edge pixels
+    // (those the overlay changed) must lie within a pixel of native's, and be about as many.
+    const Image browser = session.image(wire), browserPlain = session.image(plain);
+    Scene plainState = wireState;
+    plainState.overlay = Overlay::None;
+    const Image native = nativeGles().render(wireState), nativePlain = nativeGles().render(plainState);
+    auto linePixels = [](const Image& over, const Image& under) {
+        std::vector<bool> mask(std::size_t(over.width) * std::size_t(over.height));
+        for (std::size_t i = 0; i < mask.size(); ++i)
+            for (int k = 0; k < 3; ++k)
+                mask[i] = mask[i] || std::abs(int(over.rgba[i * 4 + std::size_t(k)]) -
+                                              int(under.rgba[i * 4 + std::size_t(k)])) > 30;
+        return mask;
+    };
+    const std::vector<bool> pageLines = linePixels(browser, browserPlain),
+                            nativeLines = linePixels(native, nativePlain);
+    std::size_t pageCount = 0, nativeCount = 0, nearNative = 0;
+    const int w = browser.width, h = browser.height;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            nativeCount += nativeLines[std::size_t(y * w + x)];
+            if (!pageLines[std::size_t(y * w + x)]) continue;
+            ++pageCount;
+            bool near = false;
+            for (int dy = -1; dy <= 1 && !near; ++dy)
+                for (int dx = -1; dx <= 1 && !near; ++dx)
+                    near = x + dx >= 0 && y + dy >= 0 && x + dx < w && y + dy < h &&
+                           nativeLines[std::size_t((y + dy) * w + x + dx)];
+            nearNative += near;
+        }
+    std::printf(
+        "wireframe: %zu edge pixels in the page, %zu native, %zu of the page's within 1 px of native's\n",
+        pageCount, nativeCount, nearNative);
+    EXPECT_GT(nativeCount, 300u);
+    EXPECT_NEAR(double(pageCount), double(nativeCount), 0.15 * double(nativeCount));
+    EXPECT_GE(double(nearNative), 0.97 * double(pageCount));
+    // Away from the lines the picture is native's.
+    const Comparison c = compareImages(browserPlain, nativePlain, swiftShaderTolerance(browserPlain));
+    EXPECT_TRUE(c.passed) << c.summary();
+
+    const json afterDrag = session.answer(moved).at("ui");
+    const Scene dragged = parseScene(afterDrag.at("current").dump(), "page state");
+    EXPECT_LT(dragged.lights[0].position.x, scene.lights[0].position.x) << "dragged left";
+    EXPECT_NEAR(glm::length(dragged.lights[0].position), glm::length(scene.lights[0].position), 1e-6);
+    EXPECT_NE(afterDrag.at("title").get<std::string>().find("light 1 (point) at ("), std::string::npos);
+
+    const json afterClick = session.answer(probed).at("ui");
+    const std::string title = afterClick.at("title"), table = afterClick.at("probe");
+    EXPECT_NE(title.find("probe: phong differs from exact by "), std::string::npos) << title;
+    ASSERT_EQ(table.rfind("probe: object 1, level 3", 0), 0u) << table;
+    // The table's exact pixel against the native probe at the canvas's centre (where the click landed,
+    // give or take the rounding of CSS pixels: 0.02 covers a pixel's change there).
+    const Scene shown = parseScene(afterClick.at("current").dump(), "page state");
+    const auto point = pickSurfacePoint(shown, shown.width / 2.0, shown.height / 2.0);
+    ASSERT_TRUE(point.has_value());
+    const ProbeReport expected = probeSurface(shown, *point, buildSphere(3));
+    const std::size_t row = table.find("pixel");
+    ASSERT_NE(row, std::string::npos) << table;
+    double values[6] = {};
+    ASSERT_EQ(std::sscanf(table.c_str() + row, "pixel %lf %lf %lf | %lf %lf %lf", &values[0], &values[1],
+                          &values[2], &values[3], &values[4], &values[5]),
+              6)
+        << table;
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_NEAR(values[k], expected.mode.color[k], 0.02) << "phong, channel " << k << "\n" << table;
+        EXPECT_NEAR(values[3 + k], expected.exact.color[k], 0.02) << "exact, channel " << k << "\n" << table;
+    }
+    expectCleanConsole(session.answer(console).at("console"));
 }
 
 // Keys 1–4, B, +, −, O change the page's picture as they change the window's: after each, the picture
