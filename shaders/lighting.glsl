@@ -10,6 +10,7 @@
 //     HAS_ATTENUATION   some point or spot light has attenuation other than (1, 0, 0)
 //     HAS_SPECULAR      some object's k_s and some light's I_s are non-zero
 //     NEEDS_NORMAL      some light is not ambient (ambient-only scenes read no normal attribute)
+//     VIEWER_AT_INFINITY  an orthographic projection: v = +z everywhere, a constant (else the local viewer)
 //   Without SPECIALIZED: the uber program — counts and types as uniforms, one loop over all lights.
 
 const int LIGHT_AMBIENT = 0;
@@ -55,7 +56,9 @@ uniform vec3 uMaterialAmbient;
 uniform vec3 uMaterialDiffuse;
 uniform vec3 uMaterialSpecular;
 uniform float uShininess;    // >= 1: pow(0, 0) is undefined in GLSL
+#ifndef SPECIALIZED
 uniform bool uOrthographic;  // parallel projection: the viewer direction is +z everywhere
+#endif
 uniform float uToonBands;    // SHADING_TOON only
 
 // normalize(v), or the fallback where v is too short to normalize (DESIGN §3 guards). Scaling by the
@@ -68,7 +71,13 @@ vec3 safeNormalize(vec3 v, vec3 fallback) {
 }
 
 vec3 toViewer(vec3 positionView, vec3 normalView) {
+#if defined(VIEWER_AT_INFINITY)
+    return vec3(0.0, 0.0, 1.0);
+#elif defined(SPECIALIZED)
+    return safeNormalize(-positionView, normalView);
+#else
     return uOrthographic ? vec3(0.0, 0.0, 1.0) : safeNormalize(-positionView, normalView);
+#endif
 }
 
 float specularTerm(vec3 normalView, vec3 toViewerView, vec3 toLightView, float lDotN) {

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -36,6 +37,26 @@ std::size_t sphereMemoryBytes(int level);
 void checkSubdivisionLevel(int level, const char* field = "subdivisions");
 
 SphereMesh buildSphere(int level, VertexNormals normals = VertexNormals::Averaged);
+
+// Builds spheres into arrays it keeps: building again (another level, or the same one in a benchmark)
+// writes into memory already mapped instead of asking the kernel for fresh pages, which on some kernels
+// costs more than the generation itself. The same mesh as buildSphere, bit for bit.
+class SphereBuilder {
+public:
+    SphereBuilder();
+    ~SphereBuilder();
+    SphereBuilder(SphereBuilder&&) noexcept;
+    SphereBuilder& operator=(SphereBuilder&&) noexcept;
+    // Throws as buildSphere does; the reference stays valid until the next build or take.
+    const SphereMesh& build(int level, VertexNormals normals = VertexNormals::Averaged);
+    SphereMesh take() { return std::move(mesh_); }
+
+private:
+    struct Scratch;
+    void buildInto(int level, VertexNormals normals);
+    SphereMesh mesh_;
+    std::unique_ptr<Scratch> scratch_;
+};
 
 // GPU-ready vertex layouts (float, converted once from the double mesh).
 struct SmoothVertex {

@@ -90,6 +90,7 @@ ProgramVariant ProgramVariant::forScene(const Scene& scene, bool specialize) {
     for (const SceneObject& object : scene.objects)
         objectSpecular |= object.material.specular != glm::dvec3(0);
     v.specular = lightSpecular && objectSpecular;
+    v.viewerAtInfinity = scene.projection.type == ProjectionType::Orthographic;
     return v;
 }
 
@@ -101,6 +102,7 @@ std::string ProgramVariant::name() const {
     if (!ambient) text += "-ambient";
     if (!attenuation) text += "-attenuation";
     if (!specular) text += "-specular";
+    if (viewerAtInfinity) text += "+ortho";
     return text;
 }
 
@@ -124,6 +126,7 @@ std::string ProgramVariant::defines() const {
     text += "#define HAS_ATTENUATION " + std::to_string(int(attenuation)) + "\n";
     text += "#define HAS_SPECULAR " + std::to_string(int(specular)) + "\n";
     text += "#define NEEDS_NORMAL " + std::to_string(int(directional + point + spot > 0)) + "\n";
+    if (viewerAtInfinity) text += "#define VIEWER_AT_INFINITY\n";
     return text;
 }
 
@@ -147,6 +150,53 @@ Program buildProgram(const ProgramVariant& variant) {
     glDetachShader(program.get(), fragment.get());
     if (geometry) glDetachShader(program.get(), geometry.get());
     return program;
+}
+
+SurfaceProgram::SurfaceProgram(Program linked, const ProgramVariant& variant) : program(std::move(linked)) {
+    const GLuint id = program.get();
+    auto find = [id](const std::string& name) { return glGetUniformLocation(id, name.c_str()); };
+    at.clipFromObject = find("uClipFromObject");
+    if (at.clipFromObject < 0)
+        throw RuntimeError("program " + variant.name() +
+                           " has no uniform uClipFromObject: the shaders and "
+                           "src/gl/program.cpp disagree on its name");
+    at.viewFromObject = find("uViewFromObject");
+    at.normalViewFromObject = find("uNormalViewFromObject");
+    at.handedness = find("uHandedness");
+    at.materialAmbient = find("uMaterialAmbient");
+    at.materialDiffuse = find("uMaterialDiffuse");
+    at.materialSpecular = find("uMaterialSpecular");
+    at.shininess = find("uShininess");
+    at.orthographic = find("uOrthographic");
+    at.toonBands = find("uToonBands");
+    at.lightCount = find("uLightCount");
+    at.ambientLight = find("uAmbientLight");
+    auto lightsOf = [&](const std::string& array, int count, bool uber) {
+        std::vector<LightLocations> out(std::size_t(std::max(count, 0)));
+        for (int i = 0; i < count; ++i) {
+            const std::string prefix = array + "[" + std::to_string(i) + "].";
+            LightLocations& l = out[std::size_t(i)];
+            if (uber) {
+                l.type = find(prefix + "type");
+                l.ambient = find(prefix + "ambient");
+            }
+            l.diffuse = find(prefix + "diffuse");
+            l.specular = find(prefix + "specular");
+            l.positionView = find(prefix + "positionView");
+            l.directionView = find(prefix + "directionView");
+            l.cosCutoff = find(prefix + "cosCutoff");
+            l.exponent = find(prefix + "exponent");
+            l.attenuation = find(prefix + "attenuation");
+        }
+        return out;
+    };
+    if (!variant.specialized) {
+        at.lights[0] = lightsOf("uLights", kMaxLights, true);
+    } else {
+        at.lights[1] = lightsOf("uDirectionalLights", variant.directional, false);
+        at.lights[2] = lightsOf("uPointLights", variant.point, false);
+        at.lights[3] = lightsOf("uSpotLights", variant.spot, false);
+    }
 }
 
 Program buildLineProgram() {

@@ -16,19 +16,6 @@
 namespace shadelab::gl {
 namespace {
 
-void setVec3(GLuint program, const std::string& name, const glm::dvec3& value) {
-    const glm::vec3 v(value);
-    glUniform3fv(glGetUniformLocation(program, name.c_str()), 1, glm::value_ptr(v));
-}
-
-void setFloat(GLuint program, const std::string& name, double value) {
-    glUniform1f(glGetUniformLocation(program, name.c_str()), float(value));
-}
-
-void setInt(GLuint program, const std::string& name, int value) {
-    glUniform1i(glGetUniformLocation(program, name.c_str()), value);
-}
-
 int lightTypeCode(LightType type) {
     switch (type) { // the LIGHT_* constants of shaders/lighting.glsl
     case LightType::Ambient:
@@ -43,53 +30,58 @@ int lightTypeCode(LightType type) {
     return 0;
 }
 
+void setVec3(GLint location, const glm::dvec3& value) {
+    const glm::vec3 v(value);
+    glUniform3fv(location, 1, glm::value_ptr(v));
+}
+
 // One light's uniforms; `light` is already in view space.
-void setLight(GLuint program, const std::string& prefix, const Light& light) {
-    setVec3(program, prefix + "diffuse", capColor(light.diffuse));
-    setVec3(program, prefix + "specular", capColor(light.specular));
-    setVec3(program, prefix + "positionView", light.position);
-    setVec3(program, prefix + "directionView", safeNormalize(light.direction, glm::dvec3(0, 0, -1)));
-    setFloat(program, prefix + "cosCutoff", std::cos(light.cutoffDeg * std::numbers::pi / 180));
-    setFloat(program, prefix + "exponent", light.exponent);
-    setVec3(program, prefix + "attenuation", light.attenuation);
+void setLight(const LightLocations& at, const Light& light) {
+    setVec3(at.diffuse, capColor(light.diffuse));
+    setVec3(at.specular, capColor(light.specular));
+    setVec3(at.positionView, light.position);
+    setVec3(at.directionView, safeNormalize(light.direction, glm::dvec3(0, 0, -1)));
+    glUniform1f(at.cosCutoff, float(std::cos(light.cutoffDeg * std::numbers::pi / 180)));
+    glUniform1f(at.exponent, float(light.exponent));
+    setVec3(at.attenuation, light.attenuation);
 }
 
 // The uber program: every light in one array, its type a uniform.
-void setUberLights(GLuint program, const std::vector<Light>& lightsView) {
+void setUberLights(const SurfaceLocations& at, const std::vector<Light>& lightsView) {
     const int count = std::min<int>(int(lightsView.size()), kMaxLights); // validateScene rejects more
-    setInt(program, "uLightCount", count);
+    glUniform1i(at.lightCount, count);
     for (int i = 0; i < count; ++i) {
         const Light& light = lightsView[std::size_t(i)];
-        const std::string prefix = "uLights[" + std::to_string(i) + "].";
-        setInt(program, prefix + "type", lightTypeCode(light.type));
-        setVec3(program, prefix + "ambient", capColor(light.ambient));
-        setLight(program, prefix, light);
+        const LightLocations& l = at.lights[0][std::size_t(i)];
+        glUniform1i(l.type, lightTypeCode(light.type));
+        setVec3(l.ambient, capColor(light.ambient));
+        setLight(l, light);
     }
 }
 
 // A specialized program: one array per light type, in scene order within a type, and the ambient terms
 // of all lights summed (k_a·ΣI_a = Σk_a·I_a).
-void setSpecializedLights(GLuint program, const std::vector<Light>& lightsView) {
+void setSpecializedLights(const SurfaceLocations& at, const std::vector<Light>& lightsView) {
     glm::dvec3 ambient(0);
-    int counts[4] = {0, 0, 0, 0};
-    static constexpr const char* kArrays[4] = {"", "uDirectionalLights[", "uPointLights[", "uSpotLights["};
+    std::size_t counts[4] = {0, 0, 0, 0};
     for (const Light& light : lightsView) {
         ambient += capColor(light.ambient);
         const int type = lightTypeCode(light.type);
         if (type == 0) continue;
-        setLight(program, kArrays[type] + std::to_string(counts[type]++) + "].", light);
+        setLight(at.lights[std::size_t(type)].at(counts[type]++), light);
     }
-    setVec3(program, "uAmbientLight", capColor(ambient));
+    setVec3(at.ambientLight, capColor(ambient));
 }
 
-void setMaterial(GLuint program, const Material& material) {
-    setVec3(program, "uMaterialAmbient", capColor(material.ambient));
-    setVec3(program, "uMaterialDiffuse", capColor(material.diffuse));
-    setVec3(program, "uMaterialSpecular", capColor(material.specular));
-    setFloat(program, "uShininess", std::max(material.shininess, 1.0));
+void setMaterial(const SurfaceLocations& at, const Material& material) {
+    setVec3(at.materialAmbient, capColor(material.ambient));
+    setVec3(at.materialDiffuse, capColor(material.diffuse));
+    setVec3(at.materialSpecular, capColor(material.specular));
+    glUniform1f(at.shininess, float(std::max(material.shininess, 1.0)));
 }
 
-void setTransforms(GLuint program, const glm::dmat4& clipFromView, const glm::dmat4& viewFromObject) {
+void setTransforms(const SurfaceLocations& at, const glm::dmat4& clipFromView,
+                   const glm::dmat4& viewFromObject) {
     // Composed in double; only the camera-relative products are rounded to float.
     const glm::mat4 clipFromObject(clipFromView * viewFromObject);
     const glm::mat4 viewFromObjectF(viewFromObject);
@@ -100,12 +92,9 @@ void setTransforms(GLuint program, const glm::dmat4& clipFromView, const glm::dm
     for (int c = 0; c < 3; ++c)
         for (int r = 0; r < 3; ++r) largest = std::max(largest, std::abs(normal[c][r]));
     const glm::mat3 normalViewFromObject(largest > 0 ? normal / largest : normal);
-    glUniformMatrix4fv(glGetUniformLocation(program, "uClipFromObject"), 1, GL_FALSE,
-                       glm::value_ptr(clipFromObject));
-    glUniformMatrix4fv(glGetUniformLocation(program, "uViewFromObject"), 1, GL_FALSE,
-                       glm::value_ptr(viewFromObjectF));
-    glUniformMatrix3fv(glGetUniformLocation(program, "uNormalViewFromObject"), 1, GL_FALSE,
-                       glm::value_ptr(normalViewFromObject));
+    glUniformMatrix4fv(at.clipFromObject, 1, GL_FALSE, glm::value_ptr(clipFromObject));
+    glUniformMatrix4fv(at.viewFromObject, 1, GL_FALSE, glm::value_ptr(viewFromObjectF));
+    glUniformMatrix3fv(at.normalViewFromObject, 1, GL_FALSE, glm::value_ptr(normalViewFromObject));
 }
 
 // Back faces of a closed mesh lie behind its front faces: culling them halves the fragments shaded
@@ -141,13 +130,13 @@ const GpuMesh& Renderer::mesh(int level, VertexNormals normals, MeshLayout layou
     return *slot;
 }
 
-Id Renderer::program(const ProgramVariant& variant) {
+const SurfaceProgram& Renderer::program(const ProgramVariant& variant) {
     auto& slot = programs_[variant];
     if (!slot) {
-        slot = buildProgram(variant);
+        slot = std::make_unique<SurfaceProgram>(buildProgram(variant), variant);
         ++programsBuilt_;
     }
-    return slot.get();
+    return *slot;
 }
 
 void Renderer::render(const Scene& scene, int width, int height, int x) {
@@ -169,26 +158,28 @@ void Renderer::render(const Scene& scene, int width, int height, int x) {
 
     ProgramVariant variant = ProgramVariant::forScene(scene, specialize_);
     variant.flatGeometryShader = flatGeometryShader_ && scene.shading == ShadingMode::Flat;
-    const GLuint prog = program(variant);
-    glUseProgram(prog);
+    const SurfaceProgram& surface = program(variant);
+    const SurfaceLocations& at = surface.at;
+    glUseProgram(surface.program.get());
     std::vector<Light> lightsView;
+    lightsView.reserve(scene.lights.size());
     for (const Light& light : scene.lights) lightsView.push_back(transformLight(light, view.viewFromWorld));
     if (variant.specialized)
-        setSpecializedLights(prog, lightsView);
+        setSpecializedLights(at, lightsView);
     else
-        setUberLights(prog, lightsView);
-    setInt(prog, "uOrthographic", view.orthographic ? 1 : 0);
-    if (scene.shading == ShadingMode::Toon) setFloat(prog, "uToonBands", scene.toonBands);
+        setUberLights(at, lightsView);
+    glUniform1i(at.orthographic, view.orthographic ? 1 : 0); // uber programs (specialized: a define)
+    if (scene.shading == ShadingMode::Toon) glUniform1f(at.toonBands, float(scene.toonBands));
     const MeshLayout layout = scene.shading == ShadingMode::Flat && !variant.flatGeometryShader
                                   ? MeshLayout::Flat
                                   : MeshLayout::Smooth;
     for (const SceneObject& object : scene.objects) {
-        setMaterial(prog, object.material);
+        setMaterial(at, object.material);
         const glm::dmat4 viewFromObject = view.viewFromWorld * worldFromObject(object);
-        setTransforms(prog, view.clipFromView, viewFromObject);
+        setTransforms(at, view.clipFromView, viewFromObject);
         cullBackFaces(object, viewFromObject, view.volume.near);
         if (variant.flatGeometryShader)
-            setFloat(prog, "uHandedness", glm::determinant(glm::dmat3(viewFromObject)) < 0 ? -1 : 1);
+            glUniform1f(at.handedness, glm::determinant(glm::dmat3(viewFromObject)) < 0 ? -1.0f : 1.0f);
         mesh(subdivisionLevel(sized, object), scene.vertexNormals, layout).draw();
     }
     glUseProgram(0);

@@ -5,7 +5,9 @@
 // scene has none (DESIGN §3 unchanged: the same equation with the absent terms left out).
 #pragma once
 
+#include <array>
 #include <string>
+#include <vector>
 
 #include "shadelab/gl/handles.h"
 #include "shadelab/lighting.h"
@@ -24,18 +26,45 @@ struct ProgramVariant {
     bool ambient = true;                      // some light's I_a is non-zero
     bool attenuation = true;                  // some point or spot light's attenuation is not (1, 0, 0)
     bool specular = true;                     // some object's k_s and some light's I_s are non-zero
+    bool viewerAtInfinity = false;            // an orthographic projection: v is the constant +z
 
     static ProgramVariant uber(ShadingMode shading, LightingModel lighting);
     // The scene's specialized variant, or its uber variant when `specialize` is false.
     static ProgramVariant forScene(const Scene& scene, bool specialize);
 
     // "phong/blinn-phong" (uber) or "phong/blinn-phong+d1p2s0-ambient-attenuation" (specialized; the
-    // terms left out are listed): the spelling of logs, benchmarks and test names.
+    // terms left out are listed, "+ortho" for a viewer at infinity): the spelling of logs, benchmarks
+    // and test names.
     std::string name() const;
     std::string defines() const; // the #define lines the variant compiles with
     bool operator==(const ProgramVariant&) const = default;
     // NOLINTNEXTLINE(modernize-use-nullptr): clang-tidy 14 misreads the defaulted comparison's own 0
     auto operator<=>(const ProgramVariant&) const = default;
+};
+
+// Where a surface program keeps its uniforms, looked up once when it is built (not by name every frame).
+// −1 marks a uniform the variant does not declare (an absent light type, the ambient sum of an
+// ambient-free variant) or that the compiler removed as unused; glUniform* ignores −1.
+struct LightLocations {
+    int type = -1, ambient = -1; // uber program only
+    int diffuse = -1, specular = -1, positionView = -1, directionView = -1, cosCutoff = -1, exponent = -1,
+        attenuation = -1;
+};
+struct SurfaceLocations {
+    int clipFromObject = -1, viewFromObject = -1, normalViewFromObject = -1, handedness = -1;
+    int materialAmbient = -1, materialDiffuse = -1, materialSpecular = -1, shininess = -1;
+    int orthographic = -1, toonBands = -1, lightCount = -1, ambientLight = -1;
+    // Uber program: lights[0] holds uLights[0..MAX_LIGHTS). Specialized: lights[1], [2], [3] hold the
+    // directional, point and spot arrays (indexed by the LIGHT_* codes of shaders/lighting.glsl).
+    std::array<std::vector<LightLocations>, 4> lights;
+};
+
+// A linked surface program and its uniform locations. Throws RuntimeError naming the uniform when one that
+// every variant uses (the clip transform) is missing: a misspelt name is a loud failure, not a no-op.
+struct SurfaceProgram {
+    SurfaceProgram(Program linked, const ProgramVariant& variant);
+    Program program;
+    SurfaceLocations at;
 };
 
 // Compiles and links the variant. A failed compile or link throws RuntimeError with the stage, the

@@ -40,14 +40,14 @@ public:
 
 private:
     const GpuMesh& mesh(int level, VertexNormals normals, MeshLayout layout);
-    Id program(const ProgramVariant& variant);
+    const SurfaceProgram& program(const ProgramVariant& variant);
     Id lineProgram();
     void drawOverlay(const Scene& sized, const SceneView& view);
 
     bool specialize_ = true;
     bool flatGeometryShader_ = false;
     int programsBuilt_ = 0;
-    std::map<ProgramVariant, Program> programs_;
+    std::map<ProgramVariant, std::unique_ptr<SurfaceProgram>> programs_;
     std::map<std::tuple<int, VertexNormals, MeshLayout>, std::unique_ptr<GpuMesh>> meshes_;
     Program lineProgram_;
     std::map<std::tuple<int, VertexNormals, Overlay>, std::unique_ptr<GpuLines>> overlays_;
