@@ -540,5 +540,49 @@ TEST(SphereArrays, FlatVerticesCarryTheirTrianglesCentroidAndFaceNormal) {
     }
 }
 
+// FNV-1a over an array's bytes, continuing from `hash`.
+template <typename T> std::uint64_t fnv1a(const std::vector<T>& values, std::uint64_t hash) {
+    const auto* bytes = reinterpret_cast<const unsigned char*>(values.data());
+    for (std::size_t i = 0; i < values.size() * sizeof(T); ++i) {
+        hash ^= bytes[i];
+        hash *= 1099511628211ull;
+    }
+    return hash;
+}
+
+// The seed's generator (an edge-midpoint hash map) was replaced by numbered edges for speed; the geometry
+// must not move by a bit. These checksums of positions, triangles and averaged vertex normals are what the
+// hash-map generator produced (recorded from it at -O0 and -O2 alike when it was replaced): a change in
+// vertex order, a rounding or a summation order fails here.
+TEST(SphereGeometry, BitForBitTheSeedsGenerator) {
+    const std::pair<int, std::uint64_t> expected[] = {
+        {0, 0xcbb1936a59a76addull}, {3, 0xa9608b6300b20601ull}, {7, 0x2178c2d45810b174ull}};
+    for (const auto& [level, checksum] : expected) {
+        const SphereMesh mesh = buildSphere(level);
+        std::uint64_t hash = 14695981039346656037ull;
+        hash = fnv1a(mesh.positions, hash);
+        hash = fnv1a(mesh.triangles, hash);
+        hash = fnv1a(mesh.vertexNormals, hash);
+        EXPECT_EQ(hash, checksum) << "level " << level;
+    }
+}
+
+// A builder reuses its arrays: whatever it built before, the next mesh is buildSphere's, bit for bit (the
+// large levels also take the two-thread paths).
+TEST(SphereBuilder, ReusedArraysGiveTheFreshMesh) {
+    SphereBuilder builder;
+    for (const auto& [level, normals] : {std::pair{8, VertexNormals::Averaged}, std::pair{2, VertexNormals::Exact},
+                                         std::pair{8, VertexNormals::Exact}, std::pair{5, VertexNormals::Averaged}}) {
+        const SphereMesh& built = builder.build(level, normals);
+        const SphereMesh fresh = buildSphere(level, normals);
+        EXPECT_EQ(built.level, level);
+        EXPECT_TRUE(built.positions == fresh.positions) << "level " << level;
+        EXPECT_TRUE(built.triangles == fresh.triangles) << "level " << level;
+        EXPECT_TRUE(built.faceNormals == fresh.faceNormals) << "level " << level;
+        EXPECT_TRUE(built.vertexNormals == fresh.vertexNormals) << "level " << level;
+    }
+    EXPECT_THROW(builder.build(kMaxSubdivisions + 1), InputError);
+}
+
 } // namespace
 } // namespace shadelab
