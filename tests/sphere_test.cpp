@@ -571,8 +571,9 @@ TEST(SphereGeometry, BitForBitTheSeedsGenerator) {
 // large levels also take the two-thread paths).
 TEST(SphereBuilder, ReusedArraysGiveTheFreshMesh) {
     SphereBuilder builder;
-    for (const auto& [level, normals] : {std::pair{8, VertexNormals::Averaged}, std::pair{2, VertexNormals::Exact},
-                                         std::pair{8, VertexNormals::Exact}, std::pair{5, VertexNormals::Averaged}}) {
+    for (const auto& [level, normals] :
+         {std::pair{8, VertexNormals::Averaged}, std::pair{2, VertexNormals::Exact},
+          std::pair{8, VertexNormals::Exact}, std::pair{5, VertexNormals::Averaged}}) {
         const SphereMesh& built = builder.build(level, normals);
         const SphereMesh fresh = buildSphere(level, normals);
         EXPECT_EQ(built.level, level);
