@@ -4,7 +4,7 @@
 //   MAX_LIGHTS            size of the uber program's light array (always defined by the loader)
 //   LIGHTING_BLINN_PHONG  Blinn-Phong specular max(n·h,0)^β; otherwise Phong max(v·r,0)^α
 //   SHADING_TOON          diffuse quantized into uToonBands bands, highlight thresholded at TOON_HIGHLIGHT
-//   SPECIALIZED           a program for one scene's light set-up (gl/program_key.h), with
+//   SPECIALIZED           a program for one scene's light set-up (ProgramVariant in gl/program.h), with
 //     NUM_DIRECTIONAL, NUM_POINT, NUM_SPOT  light counts per type as compile-time constants
 //     HAS_AMBIENT       some light has a non-zero ambient term (summed on the CPU: uAmbientLight)
 //     HAS_ATTENUATION   some point or spot light has attenuation other than (1, 0, 0)

@@ -199,20 +199,25 @@ SurfaceProgram::SurfaceProgram(Program linked, const ProgramVariant& variant) : 
     }
 }
 
-Program buildLineProgram() {
-    auto stage = [](GLenum kind, const char* file) {
-        return compileSource(kind, glslHeader() + std::string("#line 1 1\n") + std::string(shaderText(file)),
-                             std::string(file) + " (source 1)");
+Program buildProgramFromBodies(const std::string& name, std::string_view vertexBody,
+                               std::string_view fragmentBody) {
+    auto stage = [&](GLenum kind, std::string_view body, const char* which) {
+        return compileSource(kind, glslHeader() + std::string("#line 1 1\n") + std::string(body),
+                             "the " + std::string(which) + " stage of program " + name + " (source 1)");
     };
-    const Shader vertex = stage(GL_VERTEX_SHADER, "lines.vert.glsl");
-    const Shader fragment = stage(GL_FRAGMENT_SHADER, "lines.frag.glsl");
+    const Shader vertex = stage(GL_VERTEX_SHADER, vertexBody, "vertex");
+    const Shader fragment = stage(GL_FRAGMENT_SHADER, fragmentBody, "fragment");
     Program program(glCreateProgram());
     glAttachShader(program.get(), vertex.get());
     glAttachShader(program.get(), fragment.get());
-    linkOrThrow(program, "lines");
+    linkOrThrow(program, name);
     glDetachShader(program.get(), vertex.get());
     glDetachShader(program.get(), fragment.get());
     return program;
+}
+
+Program buildLineProgram() {
+    return buildProgramFromBodies("lines", shaderText("lines.vert.glsl"), shaderText("lines.frag.glsl"));
 }
 
 } // namespace shadelab::gl

@@ -1,4 +1,4 @@
-// Shader sources embedded at build time (cmake/embed_shaders.cmake generates the definition).
+// Shader sources embedded at build time (cmake/embed_files.cmake generates the definition).
 #pragma once
 
 #include <optional>

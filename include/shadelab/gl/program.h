@@ -7,6 +7,7 @@
 
 #include <array>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "shadelab/gl/handles.h"
@@ -70,6 +71,12 @@ struct SurfaceProgram {
 // Compiles and links the variant. A failed compile or link throws RuntimeError with the stage, the
 // variant name and the driver log; a non-empty log of a successful compile is printed to stderr.
 Program buildProgram(const ProgramVariant& variant);
+
+// A program from two GLSL bodies with the context's version line prepended (gl::glslHeader) and
+// attribute locations given in the source (layout(location = N)); `name` labels its messages. Throws
+// RuntimeError with the stage and the driver log, as buildProgram does.
+Program buildProgramFromBodies(const std::string& name, std::string_view vertexBody,
+                               std::string_view fragmentBody);
 
 // The overlay's line program (shaders/lines.*.glsl): position and colour attributes (locations 0 and 1),
 // uniform uClipFromSpace. Throws RuntimeError as buildProgram does.
