@@ -46,6 +46,9 @@ std::vector<LineVertex> probeLines(const ProbeReport& probe, double length) {
         segment(lines, p.position, p.position + length * probe.mode.toLight, kToLightColor);
         segment(lines, p.position, p.position + length * probe.mode.specularVector, kSpecularVectorColor);
     }
+    const double arm = 0.1 * length;
+    segment(lines, p.position - glm::dvec3(arm, 0, 0), p.position + glm::dvec3(arm, 0, 0), kProbeMarkColor);
+    segment(lines, p.position - glm::dvec3(0, arm, 0), p.position + glm::dvec3(0, arm, 0), kProbeMarkColor);
     return lines;
 }
 

@@ -197,7 +197,7 @@ TEST(OverlayLines, ProbeLinesFollowTheVectors) {
     const Scene scene = probeScene(ShadingMode::Flat, LightingModel::Phong, 3);
     const ProbeReport probe = probeAtPixel(scene, 48, 48);
     const auto lines = probeLines(probe, 0.5);
-    ASSERT_EQ(lines.size(), 8u);
+    ASSERT_EQ(lines.size(), 12u); // four vectors and the two arms of the cross
     const glm::dvec3 vectors[] = {probe.mode.pointView.normal, probe.mode.pointView.toViewer,
                                   probe.mode.toLight, probe.mode.specularVector};
     for (std::size_t k = 0; k < 4; ++k) {

@@ -26,6 +26,8 @@ inline constexpr glm::vec3 kToLightColor{1.0f, 0.95f, 0.1f};
 inline constexpr glm::vec3 kNormalColor{1.0f, 1.0f, 1.0f};
 inline constexpr glm::vec3 kToViewerColor{0.2f, 1.0f, 0.3f};
 inline constexpr glm::vec3 kSpecularVectorColor{1.0f, 0.2f, 1.0f};
+inline constexpr glm::vec3 kProbeMarkColor{1.0f, 0.35f, 0.1f}; // a cross at the point: n and v often face
+                                                               // the camera and show as dots
 
 // Edges are drawn this much outside the unit sphere's mesh, so that the depth test keeps the front ones
 // and hides those behind the object without fighting the faces they lie on.
@@ -36,7 +38,8 @@ inline constexpr float kOverlayLift = 1.003f;
 std::vector<LineVertex> overlayLines(const SphereMesh& mesh, Overlay overlay);
 
 // In view space: the probe's n, v, l and r/h from the point where the mode evaluates the lighting, each
-// `length` long (l and r/h only where a light is not ambient).
+// `length` long (l and r/h only where a light is not ambient), then a cross of two segments across the
+// point in the view plane, `length`/5 wide.
 std::vector<LineVertex> probeLines(const ProbeReport& probe, double length);
 
 } // namespace shadelab
