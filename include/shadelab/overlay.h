@@ -26,8 +26,8 @@ inline constexpr glm::vec3 kToLightColor{1.0f, 0.95f, 0.1f};
 inline constexpr glm::vec3 kNormalColor{1.0f, 1.0f, 1.0f};
 inline constexpr glm::vec3 kToViewerColor{0.2f, 1.0f, 0.3f};
 inline constexpr glm::vec3 kSpecularVectorColor{1.0f, 0.2f, 1.0f};
-inline constexpr glm::vec3 kProbeMarkColor{1.0f, 0.35f, 0.1f}; // a cross at the point: n and v often face
-                                                               // the camera and show as dots
+// An orange cross marks the point: n and v often face the camera and show as dots.
+inline constexpr glm::vec3 kProbeMarkColor{1.0f, 0.35f, 0.1f};
 
 // Edges are drawn this much outside the unit sphere's mesh, so that the depth test keeps the front ones
 // and hides those behind the object without fighting the faces they lie on.
