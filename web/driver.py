@@ -264,9 +264,19 @@ def session():
                 answer = {'width': width, 'height': height, 'data': base64.b64encode(data).decode()}
             elif op == 'resize':
                 page.browser.set_window_size(request['width'], request['height'])
+                # The page refits its canvas on the resize event, which a loaded machine delivers late: wait
+                # (at most 5 s) until the drawing buffer matches the CSS size, then report both, so a page
+                # that never refits still fails the test.
+                measure = ('const c = document.getElementById("canvas"); const r = window.devicePixelRatio || 1;'
+                           'return [c.width, c.height, c.clientWidth, c.clientHeight, r]')
+                deadline = time.time() + 5
                 time.sleep(0.3)
-                answer = {'canvas': page.js('const c = document.getElementById("canvas");'
-                                            'return [c.width, c.height, c.clientWidth, c.clientHeight]')}
+                canvas = page.js(measure)
+                while time.time() < deadline and (canvas[0] != round(canvas[2] * canvas[4]) or
+                                                  canvas[1] != round(canvas[3] * canvas[4])):
+                    time.sleep(0.1)
+                    canvas = page.js(measure)
+                answer = {'canvas': canvas[:4]}
             elif op == 'wait-files':  # downloads land asynchronously
                 deadline = time.time() + request.get('seconds', 20)
                 paths = request['paths']
