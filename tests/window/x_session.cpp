@@ -119,8 +119,21 @@ std::string XWindow::run(const std::vector<std::string>& argv) const {
     return result.out;
 }
 
+// A window found by its name may not be mapped yet: X refuses focus to an unviewable window (BadMatch in
+// X_SetInputFocus, seen under load). Retried until it is viewable, within kWaitLimit; the last failure is
+// thrown.
 void XWindow::focus() const {
-    run({tools_.xdotool.string(), "windowfocus", "--sync", id_});
+    std::string failure;
+    const bool focused = pollUntil([&] {
+        try {
+            run({tools_.xdotool.string(), "windowfocus", "--sync", id_});
+            return true;
+        } catch (const std::exception& e) {
+            failure = e.what();
+            return false;
+        }
+    });
+    if (!focused) throw std::runtime_error(failure);
 }
 
 void XWindow::key(const std::string& key) const {
