@@ -110,13 +110,6 @@ template <typename Read> bool captureInto(int width, int height, gl::ColorFormat
     }
 }
 
-std::string probeTextOf(const DemoState& state) {
-    const auto probe = state.probe();
-    if (!probe) return "";
-    const Scene shown = state.drawn();
-    return app::probeText(*probe, shown.shading, shown.lighting);
-}
-
 } // namespace
 
 extern "C" {
@@ -232,7 +225,7 @@ EMSCRIPTEN_KEEPALIVE const char* shadelab_ui() {
         {"material", s.materialName()},
         {"lights", s.lightsName()},
         {"overlay", toString(s.drawn().overlay)},
-        {"probe", probeTextOf(s)},
+        {"probe", app::probeText(s)},
         {"scene", nlohmann::json::parse(sceneToJson(p.state->scene()))},
         {"current", nlohmann::json::parse(sceneToJson(s.current(width, height)))},
         {"atImageSize", nlohmann::json::parse(sceneToJson(s.current()))}, // what a capture at 0 × 0 draws

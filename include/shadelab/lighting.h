@@ -40,6 +40,7 @@ struct Material {
     glm::dvec3 diffuse{0.7, 0.2, 0.2};
     glm::dvec3 specular{1, 1, 1};
     double shininess = 32; // α for Phong, β for Blinn-Phong; >= 1
+    bool operator==(const Material&) const = default;
 };
 
 struct Light {
@@ -52,6 +53,7 @@ struct Light {
     double cutoffDeg = 90;           // spot
     double exponent = 0;             // spot
     glm::dvec3 attenuation{1, 0, 0}; // a, b, c of 1/(a + b·t + c·t²); point, spot
+    bool operator==(const Light&) const = default;
 };
 
 // Moves a light's position and direction into the space `m` maps to (positions by m, directions by its

@@ -40,6 +40,7 @@ struct Projection {
     double fovyDeg = 40;                               // perspective
     double left = -1, right = 1, bottom = -1, top = 1; // frustum (at the near plane), orthographic
     double near = 0.5, far = 20;                       // positive distances
+    bool operator==(const Projection&) const = default;
 };
 
 // "subdivisions": "auto": the smallest level whose silhouette error stays below the scene's tolerance for
@@ -52,6 +53,7 @@ struct SceneObject {
     glm::dvec3 scale{1, 1, 1}; // non-uniform scale: an ellipsoid; negative components mirror
     int subdivisions = 5;      // 0..kMaxSubdivisions, or kAutoSubdivisions
     Material material;
+    bool operator==(const SceneObject&) const = default;
 };
 
 inline constexpr int kMaxImageSize = 16384;
@@ -82,6 +84,8 @@ struct Scene {
     Overlay overlay = Overlay::None;                       // "overlay"
     std::vector<SceneObject> objects{SceneObject{}};
     std::vector<Light> lights{defaultLight()};
+
+    bool operator==(const Scene&) const = default; // every value, e.g. to tell a changed view
 
     static Light defaultLight();
 };

@@ -118,8 +118,7 @@ private:
             const int column = panelColumnWidth(width, state_.showPanel, uiScale_);
             if (x < column) return;
             state_.probeAt(x - column, y);
-            if (const auto probe = state_.probe())
-                std::printf("%s", probeText(*probe, state_.drawn().shading, state_.drawn().lighting).c_str());
+            std::printf("%s", probeText(state_).c_str());
             std::fflush(stdout);
         } catch (const std::exception& e) {
             std::fprintf(stderr, "shadelab: click not handled: %s\n", printable(e.what()).c_str());

@@ -407,20 +407,17 @@ bool DemoState::probeAt(double x, double y) {
 
 std::optional<ProbeReport> DemoState::probe() const {
     if (!probePoint_ || probePoint_->object >= scene_.objects.size()) return std::nullopt;
-    const Scene shown = drawn();
+    Scene shown = drawn();
+    if (probeReport_ && probeScene_ == shown && probeReport_->point.object == probePoint_->object &&
+        probeReport_->point.directionObject == probePoint_->directionObject)
+        return probeReport_;
     const int level = subdivisionLevel(shown, shown.objects[probePoint_->object]);
-    char point[96];
-    std::snprintf(point, sizeof point, "%zu %.17g %.17g %.17g|", probePoint_->object,
-                  probePoint_->directionObject.x, probePoint_->directionObject.y,
-                  probePoint_->directionObject.z);
-    const std::string key = point + sceneToJson(shown);
-    if (key == probeKey_ && probeReport_) return probeReport_;
     if (!probeMesh_ || probeMesh_->level != level || probeMeshNormals_ != shown.vertexNormals) {
         probeMesh_ = buildSphere(level, shown.vertexNormals);
         probeMeshNormals_ = shown.vertexNormals;
     }
     probeReport_ = probeSurface(shown, *probePoint_, *probeMesh_);
-    probeKey_ = key;
+    probeScene_ = std::move(shown);
     return probeReport_;
 }
 
@@ -540,6 +537,13 @@ std::string probeText(const ProbeReport& probe, ShadingMode mode, LightingModel 
                 formatVector(probe.mode.specularVector) + "\n";
     }
     return text;
+}
+
+std::string probeText(const DemoState& state) {
+    const auto probe = state.probe();
+    if (!probe) return "";
+    const Scene shown = state.drawn();
+    return probeText(*probe, shown.shading, shown.lighting);
 }
 
 std::string presentationLabel(const DemoState& state) {

@@ -150,9 +150,9 @@ private:
     int viewportWidth_ = 0, viewportHeight_ = 0;
     std::string lastChange_;
     std::optional<ProbePoint> probePoint_;
-    // The last probe evaluated and what it was evaluated for: a level-10 mesh takes ~0.1 s to build and
-    // search, so the probe is recomputed only when the drawn scene or the point changes.
-    mutable std::string probeKey_;
+    // The last probe evaluated and the scene it was evaluated for: a level-10 mesh takes ~0.1 s to build
+    // and search, so the probe is recomputed only when the drawn scene or the point changes.
+    mutable std::optional<Scene> probeScene_;
     mutable std::optional<ProbeReport> probeReport_;
     mutable std::optional<SphereMesh> probeMesh_;
     mutable VertexNormals probeMeshNormals_ = VertexNormals::Averaged;
@@ -172,6 +172,8 @@ std::string presentationLabel(const DemoState& state);
 // The probe's table for the panel and the page: the ambient, diffuse and specular terms and the pixel for
 // the current mode beside the exact ones, their difference in 1/255, and the vectors n, v, l, r or h.
 std::string probeText(const ProbeReport& probe, ShadingMode mode, LightingModel lighting);
+// The same for the state's probe in its drawn mode and lighting model; "" without a probe.
+std::string probeText(const DemoState& state);
 // The largest difference of the mode's pixel from the exact one over R, G, B, in units of 1/255.
 double probeError255(const ProbeReport& probe);
 

@@ -122,9 +122,8 @@ void Panel::draw(DemoState& state, const std::string& status, int columnWidth) {
         if (ImGui::CollapsingHeader("lights"))
             for (std::size_t i = 0; i < scene.lights.size(); ++i) lightControls(scene.lights[i], int(i));
         if (ImGui::CollapsingHeader("probe (click the sphere)", ImGuiTreeNodeFlags_DefaultOpen)) {
-            if (const auto probe = state.probe()) {
-                const Scene shown = state.drawn();
-                ImGui::TextUnformatted(probeText(*probe, shown.shading, shown.lighting).c_str());
+            if (const std::string text = probeText(state); !text.empty()) {
+                ImGui::TextUnformatted(text.c_str());
                 if (ImGui::Button("remove the probe")) state.clearProbe();
             } else {
                 ImGui::TextUnformatted(

@@ -188,24 +188,28 @@ void Renderer::render(const Scene& scene, int width, int height, int x) {
     checkGlError("rendering the scene");
 }
 
-Id Renderer::lineProgram() {
-    if (!lineProgram_) lineProgram_ = buildLineProgram();
-    return lineProgram_.get();
+const Renderer::LineProgram& Renderer::lineProgram() {
+    if (!lineProgram_) {
+        Program program = buildLineProgram();
+        const GLint clipFromSpace = glGetUniformLocation(program.get(), "uClipFromSpace");
+        if (clipFromSpace < 0) throw RuntimeError("the line program has no uniform uClipFromSpace");
+        lineProgram_ = std::make_unique<LineProgram>(LineProgram{std::move(program), clipFromSpace});
+    }
+    return *lineProgram_;
 }
 
 void Renderer::drawOverlay(const Scene& sized, const SceneView& view) {
-    const GLuint prog = lineProgram();
-    glUseProgram(prog);
-    const GLint clipFromSpace = glGetUniformLocation(prog, "uClipFromSpace");
+    const LineProgram& lines = lineProgram();
+    glUseProgram(lines.program.get());
     for (const SceneObject& object : sized.objects) {
         const int level = subdivisionLevel(sized, object);
-        auto& lines = overlays_[{level, sized.vertexNormals, sized.overlay}];
-        if (!lines)
-            lines = std::make_unique<GpuLines>(
+        auto& edges = overlays_[{level, sized.vertexNormals, sized.overlay}];
+        if (!edges)
+            edges = std::make_unique<GpuLines>(
                 overlayLines(buildSphere(level, sized.vertexNormals), sized.overlay));
         const glm::mat4 clipFromObject(view.clipFromView * view.viewFromWorld * worldFromObject(object));
-        glUniformMatrix4fv(clipFromSpace, 1, GL_FALSE, glm::value_ptr(clipFromObject));
-        lines->draw();
+        glUniformMatrix4fv(lines.clipFromSpace, 1, GL_FALSE, glm::value_ptr(clipFromObject));
+        edges->draw();
     }
     glUseProgram(0);
 }
@@ -222,11 +226,10 @@ void Renderer::drawLinesOver(const Scene& scene, std::span<const LineVertex> lin
     glDisable(GL_DEPTH_TEST);
     if (!streamedLines_) streamedLines_ = std::make_unique<GpuLines>();
     streamedLines_->set(linesView);
-    const GLuint prog = lineProgram();
-    glUseProgram(prog);
+    const LineProgram& lines = lineProgram();
+    glUseProgram(lines.program.get());
     const glm::mat4 clipFromView(view.clipFromView);
-    glUniformMatrix4fv(glGetUniformLocation(prog, "uClipFromSpace"), 1, GL_FALSE,
-                       glm::value_ptr(clipFromView));
+    glUniformMatrix4fv(lines.clipFromSpace, 1, GL_FALSE, glm::value_ptr(clipFromView));
     streamedLines_->draw();
     glUseProgram(0);
     glEnable(GL_DEPTH_TEST);

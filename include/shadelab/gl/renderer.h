@@ -41,7 +41,11 @@ public:
 private:
     const GpuMesh& mesh(int level, VertexNormals normals, MeshLayout layout);
     const SurfaceProgram& program(const ProgramVariant& variant);
-    Id lineProgram();
+    struct LineProgram {
+        Program program;
+        int clipFromSpace = -1; // uClipFromSpace, looked up once
+    };
+    const LineProgram& lineProgram();
     void drawOverlay(const Scene& sized, const SceneView& view);
 
     bool specialize_ = true;
@@ -49,7 +53,7 @@ private:
     int programsBuilt_ = 0;
     std::map<ProgramVariant, std::unique_ptr<SurfaceProgram>> programs_;
     std::map<std::tuple<int, VertexNormals, MeshLayout>, std::unique_ptr<GpuMesh>> meshes_;
-    Program lineProgram_;
+    std::unique_ptr<LineProgram> lineProgram_;
     std::map<std::tuple<int, VertexNormals, Overlay>, std::unique_ptr<GpuLines>> overlays_;
     std::unique_ptr<GpuLines> streamedLines_;
 };
