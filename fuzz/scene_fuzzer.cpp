@@ -1,6 +1,7 @@
 // libFuzzer target for the scene parser (DESIGN §4). For any bytes, parseScene either returns a scene or
 // throws InputError; anything else (another exception, a sanitizer report, a hang) is a crash. A scene it
-// returns must pass validateScene (the two share their range checks) and survive sceneToJson →
+// returns must pass validateSceneValues (the two share their range checks; the scene-wide limits are
+// validateScene's alone, checked after the command line's overrides) and survive sceneToJson →
 // parseScene unchanged (the demo saves scenes that way beside its screenshots).
 //
 // SHADELAB_FUZZ_STRICT=1 adds two checks that known open bugs still fail (fuzz/README.md), so they are off
@@ -89,9 +90,9 @@ bool allFinite(const glm::dmat4& m) {
 
 void checkAccepted(const Scene& scene) {
     try {
-        validateScene(scene);
+        validateSceneValues(scene);
     } catch (const InputError& e) {
-        crash("parseScene accepted a scene that validateScene rejects", e.what());
+        crash("parseScene accepted a scene that validateSceneValues rejects", e.what());
     }
     const std::string json = sceneToJson(scene);
     Scene again;

@@ -990,6 +990,11 @@ Scene loadScene(const std::filesystem::path& path) {
 }
 
 void validateScene(const Scene& scene) {
+    validateSceneValues(scene);
+    checkSceneLimits(scene);
+}
+
+void validateSceneValues(const Scene& scene) {
     checkImage(scene);
     checkIntRange(scene.toonBands, kToonBandRange, "toon_bands");
     checkFinite(scene.tolerancePx, "tolerance_px");
@@ -1002,6 +1007,9 @@ void validateScene(const Scene& scene) {
     for (std::size_t i = 0; i < scene.lights.size(); ++i) checkLight(scene.lights[i], indexPath("lights", i));
     (void)sceneView(scene); // the derived matrices must be finite too
     checkObjectCount(scene.objects.size());
+}
+
+void checkSceneLimits(const Scene& scene) {
     checkWork(scene);
     checkStandardDepthRange(scene);
 }

@@ -847,5 +847,20 @@ TEST(SceneJson, SaveSceneWritesAFileThatLoadsBack) {
     std::filesystem::remove_all(dir);
 }
 
+// The scene-wide limits are validateScene's, not parseScene's: a file may exceed them and a flag applied
+// after parsing (--depth reversed here) bring it within. Its values alone pass (the fuzzer's contract:
+// fuzz/scene_fuzzer.cpp, which found this scene's shape).
+TEST(SceneLimits, ParsedValuesPassAndTheLimitsWaitForTheComposedScene) {
+    const Scene scene = parseScene(R"({"projection": {"near": 1e-4, "far": 1e7},
+                                       "objects": [{"center": [2e6, 0, 0], "subdivisions": 0}]})",
+                                   "deep.json");
+    EXPECT_NO_THROW(validateSceneValues(scene));
+    EXPECT_THROW(checkSceneLimits(scene), InputError);
+    EXPECT_THROW(validateScene(scene), InputError);
+    Scene reversed = scene;
+    reversed.depth = DepthMode::Reversed;
+    EXPECT_NO_THROW(validateScene(reversed));
+}
+
 } // namespace
 } // namespace shadelab

@@ -109,6 +109,12 @@ void saveScene(const Scene& scene, const std::filesystem::path& path);
 
 // Checks the ranges of DESIGN §4 on a scene built in code or changed by flags (parseScene already does).
 void validateScene(const Scene& scene);
+// validateScene in two parts. The values: every range parseScene checks as it reads, and the camera. The
+// limits: what depends on the whole composed scene (the work it asks for, README "Limits", and the depth
+// range standard depth resolves); parseScene leaves them to validateScene, because flags applied after
+// parsing (--subdivisions, --depth) may bring a scene within them.
+void validateSceneValues(const Scene& scene);
+void checkSceneLimits(const Scene& scene);
 
 // Matrices derived from a scene, in double.
 struct SceneView {
