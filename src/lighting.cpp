@@ -71,6 +71,8 @@ std::string_view toString(ShadingMode mode) {
         return "phong";
     case ShadingMode::Toon:
         return "toon";
+    case ShadingMode::Exact:
+        return "exact";
     }
     return "?";
 }
@@ -94,7 +96,7 @@ std::string_view toString(LightType type) {
 }
 
 std::optional<ShadingMode> parseShadingMode(std::string_view text) {
-    return parseEnum(text, kShadingModes);
+    return parseEnum(text, kAllShadingModes);
 }
 std::optional<LightingModel> parseLightingModel(std::string_view text) {
     return parseEnum(text, kLightingModels);

@@ -145,6 +145,9 @@ ProbeReport probeSurface(const Scene& scene, const ProbePoint& point, const Sphe
         report.mode =
             sampleAt(surface(meshPoint, interpolatedNormal), object.material, lightsView, light, options);
         break;
+    case ShadingMode::Exact: // the ray-cast sphere itself: no mesh between it and the exact value
+        report.mode = report.exact;
+        break;
     }
     return report;
 }

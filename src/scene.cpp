@@ -773,7 +773,7 @@ Scene readScene(const Json& root) {
     if (const Json* camera = member(root, "camera")) readCamera(*camera, scene);
     if (const Json* projection = member(root, "projection")) scene.projection = readProjection(*projection);
     if (const Json* shading = member(root, "shading"))
-        scene.shading = readEnum(*shading, "shading", kShadingModes);
+        scene.shading = readEnum(*shading, "shading", kAllShadingModes);
     if (const Json* lighting = member(root, "lighting"))
         scene.lighting = readEnum(*lighting, "lighting", kLightingModels);
     readIntField(root, "", "toon_bands", kToonBandRange, scene.toonBands);

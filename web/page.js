@@ -333,7 +333,7 @@ function pressUntil(code, done, limit = 12) {
 
 function wireControls() {
   wireMouse();
-  const keyOf = {flat: 49, gouraud: 50, phong: 51, toon: 52};
+  const keyOf = {flat: 49, gouraud: 50, phong: 51, toon: 52, exact: 53};
   $('shading').addEventListener('change', (e) => press(keyOf[e.target.value]));
   $('lighting').addEventListener('change', (e) => pressUntil(66, (u) => u.current.lighting === e.target.value, 1));
   $('match').addEventListener('change', (e) => { api.setMatch(e.target.checked ? 1 : 0); refresh(); });

@@ -13,17 +13,23 @@
 namespace shadelab {
 
 // Modes are typed enums with one spelling everywhere: CLI, scene files, keys, test names, report rows.
-enum class ShadingMode { Flat, Gouraud, Phong, Toon };
+// Exact is no mesh: each sphere or ellipsoid ray-cast per pixel and lit like Phong shading, the n → ∞ limit
+// the mesh modes are measured against (the analytic reference, drawn in real time).
+enum class ShadingMode { Flat, Gouraud, Phong, Toon, Exact };
 enum class LightingModel { Phong, BlinnPhong };
 enum class LightType { Ambient, Directional, Point, Spot };
 
+// The modes that shade the subdivided mesh: what the report, the showcase and the error view compare.
 inline constexpr std::array kShadingModes = {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong,
                                              ShadingMode::Toon};
+// Every spelling `shading` accepts.
+inline constexpr std::array kAllShadingModes = {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong,
+                                                ShadingMode::Toon, ShadingMode::Exact};
 inline constexpr std::array kLightingModels = {LightingModel::Phong, LightingModel::BlinnPhong};
 inline constexpr std::array kLightTypes = {LightType::Ambient, LightType::Directional, LightType::Point,
                                            LightType::Spot};
 
-std::string_view toString(ShadingMode mode);    // "flat" | "gouraud" | "phong" | "toon"
+std::string_view toString(ShadingMode mode);    // "flat" | "gouraud" | "phong" | "toon" | "exact"
 std::string_view toString(LightingModel model); // "phong" | "blinn-phong"
 std::string_view toString(LightType type);      // "ambient" | "directional" | "point" | "spot"
 std::optional<ShadingMode> parseShadingMode(std::string_view text);

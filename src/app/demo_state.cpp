@@ -21,6 +21,7 @@ const std::vector<KeyBinding>& bindings() {
         {{'2', 'G'}, "2 / G", "Gouraud shading", Command::Gouraud},
         {{'3', 'P'}, "3 / P", "Phong shading", Command::Phong},
         {{'4', 'T'}, "4 / T", "toon shading", Command::Toon},
+        {{'5', 'X'}, "5 / X", "exact: the sphere ray-cast per pixel", Command::Exact},
         {{'B'}, "B", "Phong <-> Blinn-Phong lighting", Command::ToggleLighting},
         {{kKeyEqual, kKeyKeypadAdd}, "+", "subdivision level up", Command::LevelUp},
         {{kKeyMinus, kKeyKeypadSubtract}, "-", "subdivision level down", Command::LevelDown},
@@ -231,6 +232,9 @@ bool DemoState::apply(Command command) {
     case Command::Toon:
         scene_.shading = ShadingMode::Toon;
         break;
+    case Command::Exact:
+        scene_.shading = ShadingMode::Exact;
+        break;
     case Command::ToggleLighting:
         toggleLighting();
         break;
@@ -308,6 +312,7 @@ std::string DemoState::describeChange(Command command) const {
     case Command::Gouraud:
     case Command::Phong:
     case Command::Toon:
+    case Command::Exact:
         return std::string(toString(scene.shading)) + " shading";
     case Command::ToggleLighting:
         return std::string(toString(scene.lighting)) + " lighting";
@@ -526,6 +531,7 @@ std::string probeText(const ProbeReport& probe, ShadingMode mode, LightingModel 
     text += line;
     const char* where = mode == ShadingMode::Flat ? "flat lights the triangle's centroid with its face normal"
                         : mode == ShadingMode::Gouraud ? "Gouraud interpolates the vertices' terms"
+                        : mode == ShadingMode::Exact   ? "exact: the ray-cast sphere, its own normal"
                                                        : "lit at the mesh point, interpolated normal";
     text += std::string(where) + "\nview space, at the mode's point:\n";
     const SurfacePoint& p = probe.mode.pointView;

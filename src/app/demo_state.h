@@ -28,6 +28,7 @@ enum class Command {
     Gouraud,
     Phong,
     Toon,
+    Exact,
     ToggleLighting,
     LevelUp,
     LevelDown,

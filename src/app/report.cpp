@@ -523,6 +523,8 @@ constexpr const char* modeColor(ShadingMode shading) {
         return "#d62728";
     case ShadingMode::Toon:
         return "#9467bd";
+    case ShadingMode::Exact:
+        return "#000000";
     }
     return "#000000";
 }

@@ -72,7 +72,7 @@ Scene applyOverrides(Scene scene, const SceneOverrides& o, const std::string& pa
         const auto mode = parseShadingMode(*o.shading);
         if (!mode)
             throw InputError("--shading: unknown value " + quoted(*o.shading) +
-                             "; expected one of flat, gouraud, phong, toon");
+                             "; expected one of flat, gouraud, phong, toon, exact");
         scene.shading = *mode;
     }
     if (o.lighting) {

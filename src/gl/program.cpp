@@ -112,8 +112,8 @@ std::string ProgramVariant::defines() const {
     std::snprintf(highlight, sizeof highlight, "%.9g", kToonHighlight); // shadelab never sets a locale: "."
     text += std::string("#define TOON_HIGHLIGHT ") + highlight + "\n";
     static constexpr const char* kShadingDefines[] = {"SHADING_FLAT", "SHADING_GOURAUD", "SHADING_PHONG",
-                                                      "SHADING_TOON"};
-    static_assert(std::size(kShadingDefines) == kShadingModes.size());
+                                                      "SHADING_TOON", "SHADING_EXACT"};
+    static_assert(std::size(kShadingDefines) == kAllShadingModes.size());
     text += std::string("#define ") + kShadingDefines[int(shading)] + "\n";
     if (lighting == LightingModel::BlinnPhong) text += "#define LIGHTING_BLINN_PHONG\n";
     if (flatGeometryShader) text += "#define FLAT_GEOMETRY_SHADER\n";
@@ -135,8 +135,11 @@ Program buildProgram(const ProgramVariant& variant) {
         throw RuntimeError("flat shading through a geometry shader (program " + variant.name() +
                            ") needs desktop OpenGL: " + std::string(displayName(capabilities().api)) +
                            " has no geometry stage; use the default flat layout");
-    const Shader vertex = compileStage(GL_VERTEX_SHADER, "surface.vert.glsl", variant);
-    const Shader fragment = compileStage(GL_FRAGMENT_SHADER, "surface.frag.glsl", variant);
+    const bool exact = variant.shading == ShadingMode::Exact;
+    const Shader vertex =
+        compileStage(GL_VERTEX_SHADER, exact ? "exact.vert.glsl" : "surface.vert.glsl", variant);
+    const Shader fragment =
+        compileStage(GL_FRAGMENT_SHADER, exact ? "exact.frag.glsl" : "surface.frag.glsl", variant);
     Shader geometry;
     Program program(glCreateProgram());
     glAttachShader(program.get(), vertex.get());
@@ -155,11 +158,21 @@ Program buildProgram(const ProgramVariant& variant) {
 SurfaceProgram::SurfaceProgram(Program linked, const ProgramVariant& variant) : program(std::move(linked)) {
     const GLuint id = program.get();
     auto find = [id](const std::string& name) { return glGetUniformLocation(id, name.c_str()); };
+    // Every variant uses its transform into clip space: a mesh's uClipFromObject, exact shading's uNdcRect.
+    const bool exact = variant.shading == ShadingMode::Exact;
+    const char* required = exact ? "uNdcRect" : "uClipFromObject";
+    if (find(required) < 0)
+        throw RuntimeError("program " + variant.name() + " has no uniform " + required +
+                           ": the shaders and src/gl/program.cpp disagree on its name");
     at.clipFromObject = find("uClipFromObject");
-    if (at.clipFromObject < 0)
-        throw RuntimeError("program " + variant.name() +
-                           " has no uniform uClipFromObject: the shaders and "
-                           "src/gl/program.cpp disagree on its name");
+    at.ndcRect = find("uNdcRect");
+    at.viewport = find("uViewport");
+    at.nearRect = find("uNearRect");
+    at.nearFar = find("uNearFar");
+    at.objectFromView = find("uObjectFromView");
+    at.centerView = find("uCenterView");
+    at.clipFromView = find("uClipFromView");
+    at.depthZeroToOne = find("uDepthZeroToOne");
     at.viewFromObject = find("uViewFromObject");
     at.normalViewFromObject = find("uNormalViewFromObject");
     at.handedness = find("uHandedness");

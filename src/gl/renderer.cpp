@@ -11,6 +11,7 @@
 
 #include "shadelab/errors.h"
 #include "shadelab/gl/loader.h"
+#include "shadelab/ray_cast.h"
 #include "shadelab/subdivision.h"
 
 namespace shadelab::gl {
@@ -114,6 +115,28 @@ void cullBackFaces(const SceneObject& object, const glm::dmat4& viewFromObject, 
     glFrontFace(glm::determinant(glm::dmat3(viewFromObject)) < 0 ? GL_CW : GL_CCW);
 }
 
+// The screen-space rectangle, in NDC, that holds the object's projection: the projected corners of its
+// bounding box, widened by two pixels, clipped to the viewport. Where the box reaches the near plane (the
+// object may be cut open) or behind the eye, the whole viewport. Empty (x0 > x1) when nothing is visible.
+glm::vec4 proxyRectangle(const glm::dmat4& clipFromView, const glm::dmat4& viewFromObject, double near,
+                         bool orthographic, int width, int height) {
+    glm::dvec2 lo(1e300), hi(-1e300);
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::dvec4 view =
+            viewFromObject * glm::dvec4(corner & 1 ? 1 : -1, corner & 2 ? 1 : -1, corner & 4 ? 1 : -1, 1);
+        if (!orthographic && !(view.z < -near)) return {-1, -1, 1, 1};
+        const glm::dvec4 clip = clipFromView * view;
+        const glm::dvec2 ndc = glm::dvec2(clip) / clip.w;
+        lo = glm::min(lo, ndc);
+        hi = glm::max(hi, ndc);
+    }
+    const glm::dvec2 pad(4.0 / width, 4.0 / height); // two pixels
+    lo = glm::max(lo - pad, glm::dvec2(-1));
+    hi = glm::min(hi + pad, glm::dvec2(1));
+    if (!(lo.x < hi.x && lo.y < hi.y)) return {1, 1, -1, -1};
+    return {float(lo.x), float(lo.y), float(hi.x), float(hi.y)};
+}
+
 } // namespace
 
 Renderer::Renderer() = default;
@@ -170,22 +193,66 @@ void Renderer::render(const Scene& scene, int width, int height, int x) {
         setUberLights(at, lightsView);
     glUniform1i(at.orthographic, view.orthographic ? 1 : 0); // uber programs (specialized: a define)
     if (scene.shading == ShadingMode::Toon) glUniform1f(at.toonBands, float(scene.toonBands));
-    const MeshLayout layout = scene.shading == ShadingMode::Flat && !variant.flatGeometryShader
+    if (scene.shading == ShadingMode::Exact) {
+        drawExact(sized, view, at, x);
+    } else {
+        drawMeshes(sized, view, variant, at);
+    }
+    glUseProgram(0);
+    glDisable(GL_CULL_FACE);
+    if (scene.overlay != Overlay::None) drawOverlay(sized, view);
+    checkGlError("rendering the scene");
+}
+
+void Renderer::drawMeshes(const Scene& sized, const SceneView& view, const ProgramVariant& variant,
+                          const SurfaceLocations& at) {
+    const MeshLayout layout = sized.shading == ShadingMode::Flat && !variant.flatGeometryShader
                                   ? MeshLayout::Flat
                                   : MeshLayout::Smooth;
-    for (const SceneObject& object : scene.objects) {
+    for (const SceneObject& object : sized.objects) {
         setMaterial(at, object.material);
         const glm::dmat4 viewFromObject = view.viewFromWorld * worldFromObject(object);
         setTransforms(at, view.clipFromView, viewFromObject);
         cullBackFaces(object, viewFromObject, view.volume.near);
         if (variant.flatGeometryShader)
             glUniform1f(at.handedness, glm::determinant(glm::dmat3(viewFromObject)) < 0 ? -1.0f : 1.0f);
-        mesh(subdivisionLevel(sized, object), scene.vertexNormals, layout).draw();
+        mesh(subdivisionLevel(sized, object), sized.vertexNormals, layout).draw();
     }
-    glUseProgram(0);
+}
+
+// Exact shading: one proxy rectangle per object, its rays cast in shaders/exact.frag.glsl with what
+// ray_cast.cpp's prepareObject and PixelRays give the analytic reference.
+void Renderer::drawExact(const Scene& sized, const SceneView& view, const SurfaceLocations& at, int x) {
+    if (!emptyVertexArray_) { // the core profile draws only with a vertex array bound, even an empty one
+        Id id = 0;
+        glGenVertexArrays(1, &id);
+        emptyVertexArray_ = VertexArray(id);
+    }
     glDisable(GL_CULL_FACE);
-    if (scene.overlay != Overlay::None) drawOverlay(sized, view);
-    checkGlError("rendering the scene");
+    const ViewVolume& v = view.volume;
+    glUniform4f(at.viewport, float(x), 0.0f, float(sized.width), float(sized.height));
+    glUniform4f(at.nearRect, float(v.left), float(v.right), float(v.bottom), float(v.top));
+    // An infinite far plane clips nothing behind (as the reference): the largest float's order stands for it.
+    glUniform2f(at.nearFar, float(v.near), sized.depth == DepthMode::ReversedInfinite ? 3e38f : float(v.far));
+    glUniformMatrix4fv(at.clipFromView, 1, GL_FALSE, glm::value_ptr(glm::mat4(view.clipFromView)));
+    glUniform1f(at.depthZeroToOne, view.depth != DepthMode::Standard ? 1.0f : 0.0f);
+    glBindVertexArray(emptyVertexArray_.get());
+    for (const SceneObject& object : sized.objects) {
+        const glm::dmat4 viewFromObject = view.viewFromWorld * worldFromObject(object);
+        const glm::vec4 rect = proxyRectangle(view.clipFromView, viewFromObject, v.near, view.orthographic,
+                                              sized.width, sized.height);
+        if (!(rect.x < rect.z)) continue;
+        const ObjectInView prepared = prepareObject(object, view.viewFromWorld);
+        setMaterial(at, object.material);
+        glUniform4fv(at.ndcRect, 1, glm::value_ptr(rect));
+        glUniformMatrix3fv(at.objectFromView, 1, GL_FALSE,
+                           glm::value_ptr(glm::mat3(prepared.objectFromView3)));
+        glUniform3fv(at.centerView, 1, glm::value_ptr(glm::vec3(prepared.originView)));
+        glUniformMatrix3fv(at.normalViewFromObject, 1, GL_FALSE,
+                           glm::value_ptr(glm::mat3(prepared.normalViewFromObject)));
+        glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+    }
+    glBindVertexArray(0);
 }
 
 const Renderer::LineProgram& Renderer::lineProgram() {

@@ -34,6 +34,7 @@ constexpr Command kAllCommands[] = {
     Command::Gouraud,
     Command::Phong,
     Command::Toon,
+    Command::Exact,
     Command::ToggleLighting,
     Command::LevelUp,
     Command::LevelDown,
@@ -172,6 +173,8 @@ const std::vector<std::pair<int, Command>>& issueKeys() {
         {GLFW_KEY_P, Command::Phong},
         {GLFW_KEY_4, Command::Toon},
         {GLFW_KEY_T, Command::Toon},
+        {GLFW_KEY_5, Command::Exact},
+        {GLFW_KEY_X, Command::Exact},
         {GLFW_KEY_B, Command::ToggleLighting},
         {GLFW_KEY_EQUAL, Command::LevelUp}, // '+' is Shift + '=' (US layout); GLFW reports the key, '='
         {GLFW_KEY_KP_ADD, Command::LevelUp},
@@ -242,7 +245,7 @@ TEST(DemoKeys, EveryCommandHasExactlyOneBinding) {
 }
 
 TEST(DemoKeys, UnboundKeysGiveNoCommand) {
-    for (int key : {GLFW_KEY_Q, GLFW_KEY_Z, GLFW_KEY_X, GLFW_KEY_SPACE, GLFW_KEY_5, GLFW_KEY_F3,
+    for (int key : {GLFW_KEY_Q, GLFW_KEY_Z, GLFW_KEY_J, GLFW_KEY_SPACE, GLFW_KEY_6, GLFW_KEY_F3,
                     GLFW_KEY_ENTER, GLFW_KEY_UNKNOWN, 0})
         EXPECT_FALSE(commandForKey(key).has_value()) << "key " << key;
 }
@@ -281,11 +284,10 @@ TEST(DemoKeys, HelpLabelsNameTheIssuesKeys) {
 
 TEST(DemoApply, DigitsSetTheShadingModes) {
     DemoState state(Scene{});
-    const std::pair<Command, ShadingMode> cases[] = {{Command::Flat, ShadingMode::Flat},
-                                                     {Command::Toon, ShadingMode::Toon},
-                                                     {Command::Gouraud, ShadingMode::Gouraud},
-                                                     {Command::Phong, ShadingMode::Phong},
-                                                     {Command::Flat, ShadingMode::Flat}};
+    const std::pair<Command, ShadingMode> cases[] = {
+        {Command::Flat, ShadingMode::Flat},       {Command::Toon, ShadingMode::Toon},
+        {Command::Gouraud, ShadingMode::Gouraud}, {Command::Phong, ShadingMode::Phong},
+        {Command::Exact, ShadingMode::Exact},     {Command::Flat, ShadingMode::Flat}};
     for (const auto& [command, mode] : cases) {
         EXPECT_TRUE(state.apply(command));
         EXPECT_EQ(state.current().shading, mode);
@@ -474,6 +476,7 @@ TEST(DemoTitle, SaysWhatTheLastKeyChanged) {
                                                      {Command::NextLights, "lights: point"},
                                                      {Command::ToggleOverlay, "overlay: wireframe"},
                                                      {Command::Flat, "flat shading"},
+                                                     {Command::Exact, "exact shading"},
                                                      {Command::ResetView, "view reset"}};
     for (const auto& [command, words] : steps) {
         state.apply(command);

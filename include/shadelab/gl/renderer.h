@@ -47,6 +47,9 @@ private:
     };
     const LineProgram& lineProgram();
     void drawOverlay(const Scene& sized, const SceneView& view);
+    void drawMeshes(const Scene& sized, const SceneView& view, const ProgramVariant& variant,
+                    const SurfaceLocations& at);
+    void drawExact(const Scene& sized, const SceneView& view, const SurfaceLocations& at, int x);
 
     bool specialize_ = true;
     bool flatGeometryShader_ = false;
@@ -56,6 +59,7 @@ private:
     std::unique_ptr<LineProgram> lineProgram_;
     std::map<std::tuple<int, VertexNormals, Overlay>, std::unique_ptr<GpuLines>> overlays_;
     std::unique_ptr<GpuLines> streamedLines_;
+    VertexArray emptyVertexArray_; // exact shading's proxies have no attributes
 };
 
 } // namespace shadelab::gl
