@@ -15,6 +15,7 @@ uniform vec3 uCenterView;     // the object's centre in view space (camera-relat
 uniform mat3 uNormalViewFromObject; // cofactor matrix, rescaled: normals need renormalizing
 uniform mat4 uClipFromView;
 uniform float uDepthZeroToOne; // 1 under glClipControl's [0, 1] clip range (reversed-Z), else 0
+uniform float uAlpha;          // coverage: 1, or the object's index + 1 for the error view's compare pass
 
 #if defined(VIEWER_AT_INFINITY)
 const bool kParallelRays = true;
@@ -72,5 +73,5 @@ void main() {
     gl_FragDepth = mix(0.5 * depthNdc + 0.5, depthNdc, uDepthZeroToOne);
 
     vec3 color = shade(positionView, normalView, toViewer(positionView, normalView));
-    fragColor = vec4(clamp(color, 0.0, 1.0), 1.0);
+    fragColor = vec4(clamp(color, 0.0, 1.0), uAlpha);
 }

@@ -203,6 +203,12 @@ void checkSubdivisions(int level, const std::string& path) {
     checkIntRange(level, kSubdivisionRange, path);
 }
 
+void checkViewAt(double at) {
+    checkFinite(at, "view_at");
+    if (!(at >= 0 && at <= 1)) fail("view_at", "must be between 0 and 1 (a fraction of the picture), got " +
+                                                   formatNumber(at));
+}
+
 void checkImageSize(const Scene& scene) {
     checkIntRange(scene.width, kImageSizeRange, "image.width");
     checkIntRange(scene.height, kImageSizeRange, "image.height");
@@ -763,9 +769,9 @@ std::vector<Light> readLights(const Json& json) {
 }
 
 Scene readScene(const Json& root) {
-    static constexpr std::array<std::string_view, 12> kKeys = {
-        "image",        "camera", "projection",     "shading", "lighting", "toon_bands",
-        "tolerance_px", "depth",  "vertex_normals", "overlay", "objects",  "lights"};
+    static constexpr std::array<std::string_view, 14> kKeys = {
+        "image",   "camera",  "projection", "shading",        "lighting", "toon_bands", "tolerance_px",
+        "depth",   "overlay", "view",       "vertex_normals", "view_at",  "objects",    "lights"};
     requireObject(root, "");
     checkKeys(root, "", kKeys);
     Scene scene;
@@ -785,6 +791,16 @@ Scene readScene(const Json& root) {
         scene.vertexNormals = readEnum(*normals, "vertex_normals", kVertexNormals);
     if (const Json* overlay = member(root, "overlay"))
         scene.overlay = readEnum(*overlay, "overlay", kOverlays);
+    if (const Json* view = member(root, "view")) {
+        const std::string& text = readString(*view, "view");
+        ViewParse parsed = parseView(text);
+        if (!parsed.view) fail("view", "\"" + printable(text) + "\": " + parsed.error);
+        scene.view = *parsed.view;
+    }
+    if (const Json* at = member(root, "view_at")) {
+        scene.view.at = readNumber(*at, "view_at");
+        checkViewAt(*scene.view.at);
+    }
     if (const Json* objects = member(root, "objects")) scene.objects = readObjects(*objects);
     if (const Json* lights = member(root, "lights")) scene.lights = readLights(*lights);
     return scene;
@@ -960,7 +976,7 @@ std::string sceneToJson(const Scene& scene) {
     Json objects = Json::array(), lights = Json::array();
     for (const SceneObject& o : scene.objects) objects.push_back(toJson(o));
     for (const Light& l : scene.lights) lights.push_back(toJson(l));
-    const Json root = {
+    Json root = {
         {"image",
          {{"width", scene.width}, {"height", scene.height}, {"background", toJson(scene.background)}}},
         {"camera", {{"eye", toJson(scene.eye)}, {"target", toJson(scene.target)}, {"up", toJson(scene.up)}}},
@@ -972,8 +988,10 @@ std::string sceneToJson(const Scene& scene) {
         {"depth", toString(scene.depth)},
         {"vertex_normals", toString(scene.vertexNormals)},
         {"overlay", toString(scene.overlay)},
+        {"view", toString(scene.view)},
         {"objects", objects},
         {"lights", lights}};
+    if (scene.view.at) root["view_at"] = *scene.view.at;
     return root.dump(2) + "\n";
 }
 
@@ -1005,6 +1023,7 @@ void validateSceneValues(const Scene& scene) {
         checkObject(scene.objects[i], indexPath("objects", i));
     checkLightCount(scene.lights.size());
     for (std::size_t i = 0; i < scene.lights.size(); ++i) checkLight(scene.lights[i], indexPath("lights", i));
+    if (scene.view.at) checkViewAt(*scene.view.at);
     (void)sceneView(scene); // the derived matrices must be finite too
     checkObjectCount(scene.objects.size());
 }

@@ -25,7 +25,7 @@ import time
 import zlib
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'build-web')
-FLAGS = ['shading', 'lighting', 'subdivisions', 'size', 'depth', 'tolerance-px']
+FLAGS = ['shading', 'lighting', 'subdivisions', 'size', 'depth', 'tolerance-px', 'overlay', 'view']
 CHROME_ARGS = ['--headless=new', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--no-sandbox',
                '--disable-dev-shm-usage', '--window-size=1280,800', '--force-device-scale-factor=1']
 

@@ -141,6 +141,7 @@ EMSCRIPTEN_KEEPALIVE const char* shadelab_apply_flags(const char* flags) {
         take("tolerance-px", o.tolerancePx);
         take("depth", o.depth);
         take("overlay", o.overlay);
+        take("view", o.view);
         const Scene scene = app::applyOverrides(page().state->scene(), o, page().sceneName);
         page().state = std::make_unique<DemoState>(scene);
         page().dirty = true;

@@ -14,6 +14,7 @@
 
 #include "shadelab/camera.h"
 #include "shadelab/lighting.h"
+#include "shadelab/view.h"
 #include "shadelab/sphere.h"
 
 namespace shadelab {
@@ -82,6 +83,7 @@ struct Scene {
     DepthMode depth = DepthMode::Standard;
     VertexNormals vertexNormals = VertexNormals::Averaged; // "vertex_normals": "averaged" | "exact"
     Overlay overlay = Overlay::None;                       // "overlay"
+    View view;                                             // "view", "view_at" (view.h)
     std::vector<SceneObject> objects{SceneObject{}};
     std::vector<Light> lights{defaultLight()};
 

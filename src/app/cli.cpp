@@ -40,6 +40,10 @@ void addSceneFlags(CLI::App& command, SceneOverrides& o) {
     command.add_option("--overlay", o.overlay,
                        "Lines over the surface: none, wireframe (the mesh's edges) or normals (edges, face "
                        "and vertex normals)");
+    command.add_option("--view", o.view,
+                       "What the picture shows: scene, error (|mode - exact| heatmap), profile (intensity "
+                       "along a row) or split:A,B (A, B each shading[/lighting][@level], e.g. "
+                       "split:gouraud,phong or split:phong@4,phong@6)");
     command.add_option("--size", o.size, "Image size WxH, e.g. 512x512 (overrides the scene)");
 }
 

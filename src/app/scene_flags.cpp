@@ -100,6 +100,13 @@ Scene applyOverrides(Scene scene, const SceneOverrides& o, const std::string& pa
                              "; expected one of none, wireframe, normals");
         scene.overlay = *overlay;
     }
+    if (o.view) {
+        ViewParse parsed = parseView(*o.view);
+        if (!parsed.view) throw InputError("--view: " + quoted(*o.view) + ": " + parsed.error);
+        const std::optional<double> at = scene.view.at;
+        scene.view = *parsed.view;
+        if (scene.view.kind == ViewKind::Split || scene.view.kind == ViewKind::Profile) scene.view.at = at;
+    }
     if (o.tolerancePx) scene.tolerancePx = parseTolerance(*o.tolerancePx);
     if (o.size) composeSize(scene, *o.size);
     try {

@@ -1,5 +1,5 @@
 // The flags that override a scene (--shading, --lighting, --subdivisions, --tolerance-px, --depth, --overlay,
-// --size):
+// --view, --size):
 // one parser for the command line, the demo and the browser page, so a flag means the same everywhere.
 #pragma once
 
@@ -17,6 +17,7 @@ struct SceneOverrides {
     std::optional<std::string> tolerancePx;  // a decimal number, parsed by composeScene
     std::optional<std::string> depth;        // standard | reversed | reversed-infinite
     std::optional<std::string> overlay;      // none | wireframe | normals
+    std::optional<std::string> view;         // scene | error | profile | split:A,B (view.h)
 };
 
 // The scene file (or the DESIGN §4 defaults when `path` is empty) with the overrides applied and the

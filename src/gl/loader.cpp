@@ -183,5 +183,8 @@ void deleteFramebuffer(Id id) {
 void deleteRenderbuffer(Id id) {
     glDeleteRenderbuffers(1, &id);
 }
+void deleteTexture(Id id) {
+    glDeleteTextures(1, &id);
+}
 
 } // namespace shadelab::gl

@@ -173,6 +173,7 @@ SurfaceProgram::SurfaceProgram(Program linked, const ProgramVariant& variant) : 
     at.centerView = find("uCenterView");
     at.clipFromView = find("uClipFromView");
     at.depthZeroToOne = find("uDepthZeroToOne");
+    at.alpha = find("uAlpha");
     at.viewFromObject = find("uViewFromObject");
     at.normalViewFromObject = find("uNormalViewFromObject");
     at.handedness = find("uHandedness");

@@ -163,6 +163,20 @@ const SurfaceProgram& Renderer::program(const ProgramVariant& variant) {
 }
 
 void Renderer::render(const Scene& scene, int width, int height, int x) {
+    if (scene.view.kind == ViewKind::Scene) {
+        renderScene(scene, width, height, x);
+        return;
+    }
+    if (!views_) views_ = std::make_unique<Views>(*this);
+    views_->draw(scene, width, height, x);
+}
+
+const ViewFigures& Renderer::viewFigures() const {
+    static const ViewFigures kNone;
+    return views_ ? views_->figures() : kNone;
+}
+
+void Renderer::renderScene(const Scene& scene, int width, int height, int x) {
     if (width <= 0 || height <= 0) return; // a minimized window: nothing to draw, no NaN aspect
     Scene sized = scene;
     sized.width = width;
@@ -237,7 +251,9 @@ void Renderer::drawExact(const Scene& sized, const SceneView& view, const Surfac
     glUniformMatrix4fv(at.clipFromView, 1, GL_FALSE, glm::value_ptr(glm::mat4(view.clipFromView)));
     glUniform1f(at.depthZeroToOne, view.depth != DepthMode::Standard ? 1.0f : 0.0f);
     glBindVertexArray(emptyVertexArray_.get());
-    for (const SceneObject& object : sized.objects) {
+    for (std::size_t index = 0; index < sized.objects.size(); ++index) {
+        const SceneObject& object = sized.objects[index];
+        glUniform1f(at.alpha, exactObjectIds_ ? float(index + 1) : 1.0f);
         const glm::dmat4 viewFromObject = view.viewFromWorld * worldFromObject(object);
         const glm::vec4 rect = proxyRectangle(view.clipFromView, viewFromObject, v.near, view.orthographic,
                                               sized.width, sized.height);

@@ -40,6 +40,7 @@ void deleteShader(Id id);
 void deleteProgram(Id id);
 void deleteFramebuffer(Id id);
 void deleteRenderbuffer(Id id);
+void deleteTexture(Id id);
 
 using Buffer = Handle<deleteBuffer>;
 using VertexArray = Handle<deleteVertexArray>;
@@ -47,5 +48,6 @@ using Shader = Handle<deleteShader>;
 using Program = Handle<deleteProgram>;
 using Framebuffer = Handle<deleteFramebuffer>;
 using Renderbuffer = Handle<deleteRenderbuffer>;
+using Texture = Handle<deleteTexture>;
 
 } // namespace shadelab::gl

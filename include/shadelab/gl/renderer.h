@@ -9,6 +9,7 @@
 
 #include "shadelab/gl/mesh.h"
 #include "shadelab/gl/program.h"
+#include "shadelab/gl/views.h"
 #include "shadelab/scene.h"
 
 namespace shadelab::gl {
@@ -21,7 +22,14 @@ public:
     // draws nothing.
     // `x` moves the viewport right (the demo's picture beside its panel); the clear covers the whole target.
     // With scene.overlay, the objects' edges (and normals) are drawn over them, depth-tested.
+    // scene.view other than "scene" draws that view (gl/views.h) from renders of the scene's parts.
     void render(const Scene& scene, int width, int height, int x = 0);
+    // The scene itself, whatever its view says (what the views draw their parts with).
+    void renderScene(const Scene& scene, int width, int height, int x = 0);
+    // What the last view measured (the error view's mean and max, the profile's row).
+    const ViewFigures& viewFigures() const;
+    // Exact shading writes each object's index + 1 as alpha instead of 1 (the error view's compare pass).
+    void setExactObjectIds(bool enabled) { exactObjectIds_ = enabled; }
 
     // Lines given in view space drawn over what render() drew into the same viewport, never hidden (the
     // demo's probe vectors).
@@ -60,6 +68,8 @@ private:
     std::map<std::tuple<int, VertexNormals, Overlay>, std::unique_ptr<GpuLines>> overlays_;
     std::unique_ptr<GpuLines> streamedLines_;
     VertexArray emptyVertexArray_; // exact shading's proxies have no attributes
+    bool exactObjectIds_ = false;
+    std::unique_ptr<Views> views_;
 };
 
 } // namespace shadelab::gl

@@ -1,0 +1,66 @@
+// The teaching views of issue 11 (view.h): the error heatmap, the split view and the intensity profile,
+// each drawn by the one Renderer into whatever framebuffer is bound, legends and plots included, so the
+// window, the page and a headless render show the same picture. The error view's figures are computed on
+// the GPU (a compare pass and a reduction over float targets the views own).
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "shadelab/gl/handles.h"
+#include "shadelab/scene.h"
+
+namespace shadelab::gl {
+
+class Renderer;
+
+// What the last view drawn measured, for the panel, the title and the tests.
+struct ViewFigures {
+    // Error view: over the interior as `shadelab report` counts it (both renders cover the 5×5 square around
+    // the pixel, same object), in 1/255 units: the mean of |ΔR|, |ΔG|, |ΔB| and the largest of them.
+    double interiorMean = 0, interiorMax = 0;
+    std::size_t interiorPixels = 0;
+    double scale = 0; // the heatmap's top, in 1/255
+    // Profile view: the row (from the top) and its intensity, (R + G + B)/3 per pixel, for the current mode
+    // and for exact; the columns where a mesh edge crosses the row.
+    int row = -1;
+    std::vector<float> modeRow, exactRow;
+    std::vector<int> edgeColumns;
+};
+
+class Views {
+public:
+    explicit Views(Renderer& renderer);
+    ~Views();
+    Views(const Views&) = delete;
+    Views& operator=(const Views&) = delete;
+
+    // Draws scene.view (not ViewKind::Scene) over the viewport (x, 0, width, height) of the bound
+    // framebuffer. Throws RuntimeError where the context lacks float colour targets (error and profile
+    // views measure unrounded values; DESIGN §7: refused, never silently replaced).
+    void draw(const Scene& scene, int width, int height, int x);
+    const ViewFigures& figures() const { return figures_; }
+
+private:
+    struct Targets;
+    struct Programs;
+    void drawError(const Scene& scene, int width, int height, int x, unsigned destination);
+    void drawSplit(const Scene& scene, int width, int height, int x);
+    void drawProfile(const Scene& scene, int width, int height, int x, unsigned destination);
+    void renderModeAndExact(const Scene& scene, int width, int height);
+
+    Renderer& renderer_;
+    std::unique_ptr<Targets> targets_;
+    std::unique_ptr<Programs> programs_;
+    ViewFigures figures_;
+};
+
+// The scene one side of a split view draws: the scene with the side's shading, lighting and level.
+Scene splitSideScene(const Scene& scene, const SplitSide& side);
+// The profile's row, from the top: view.at of the height, or the row through the first object's centre
+// (the middle row without objects or with the centre outside the picture).
+int profileRow(const Scene& scene, int height);
+// Labels for the views, in the picture's 5×7 font: "GOURAUD", "PHONG L6 BLINN-PHONG".
+std::string sideLabel(const Scene& scene, const SplitSide& side);
+
+} // namespace shadelab::gl

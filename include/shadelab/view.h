@@ -1,0 +1,54 @@
+// What the picture shows of a scene (issue 11, "see the error"): the scene itself, or one of three teaching
+// views that set the current shading against the exact ray-cast sphere. A scene value ("view", "view_at"),
+// so the demo's S saves it and `shadelab render` draws the same picture; views, legends and plots are
+// drawn into the GL picture itself (src/gl/views.cpp), so a headless render carries them.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "shadelab/lighting.h"
+
+namespace shadelab {
+
+enum class ViewKind {
+    Scene,   // "scene": the scene as it is
+    Error,   // "error": |mode − exact| per pixel as a heatmap, with its legend and interior mean and max
+    Split,   // "split:A,B": two configurations side by side under one camera, a divider between them
+    Profile, // "profile": intensity along one row, the mode's and exact, mesh-edge crossings marked
+};
+
+// One side of a split view: what it changes of the scene (unset = the scene's own).
+struct SplitSide {
+    std::optional<ShadingMode> shading;
+    std::optional<LightingModel> lighting;
+    std::optional<int> level; // subdivisions of every object, 0..kMaxSubdivisions
+    bool operator==(const SplitSide&) const = default;
+};
+
+struct View {
+    ViewKind kind = ViewKind::Scene;
+    SplitSide left, right; // split only
+    // "view_at": split — the divider, as a fraction of the width from the left (default 0.5); profile — the
+    // row, as a fraction of the height from the top (default: the row through the first object's centre).
+    std::optional<double> at;
+    bool operator==(const View&) const = default;
+};
+
+// "scene", "error", "profile", or "split:A,B" with each side written as shading[/lighting][@level] (or the
+// lighting model alone): "split:gouraud,phong", "split:phong@4,phong@6", "split:phong,blinn-phong".
+std::string toString(const View& view);
+std::string toString(const SplitSide& side);
+
+// Parses the spelling above. A side is `name[/name][@level]`: one name is a shading mode, or a lighting
+// model where it can only be one ("blinn-phong") — and then "phong" on the other side also means the
+// lighting model, so "split:phong,blinn-phong" compares the two lighting models. Returns the reason on
+// failure (for a message that names the field, the value and the fix).
+struct ViewParse {
+    std::optional<View> view;
+    std::string error;
+};
+ViewParse parseView(std::string_view text);
+
+} // namespace shadelab
