@@ -11,7 +11,8 @@
 namespace shadelab {
 namespace gl {
 class Renderer;
-}
+struct ViewFigures;
+} // namespace gl
 
 class HeadlessRenderer {
 public:
@@ -33,6 +34,8 @@ public:
     // Flat shading through shared vertices and a geometry shader (see gl/renderer.h).
     void setFlatGeometryShader(bool enabled);
     int programsBuilt() const;
+    // What the last render's view measured (gl/views.h): the error view's figures, the profile's samples.
+    const gl::ViewFigures& viewFigures() const;
     const std::string& rendererString() const { return rendererString_; }
 
 private:

@@ -63,6 +63,9 @@ void HeadlessRenderer::setSpecialize(bool specialize) {
 void HeadlessRenderer::setFlatGeometryShader(bool enabled) {
     renderer_->setFlatGeometryShader(enabled);
 }
+const gl::ViewFigures& HeadlessRenderer::viewFigures() const {
+    return renderer_->viewFigures();
+}
 int HeadlessRenderer::programsBuilt() const {
     return renderer_->programsBuilt();
 }

@@ -95,7 +95,8 @@ ProgramVariant ProgramVariant::forScene(const Scene& scene, bool specialize) {
 }
 
 std::string ProgramVariant::name() const {
-    std::string text = std::string(toString(shading)) + (flatGeometryShader ? "(gs)" : "") + "/" +
+    std::string text = std::string(toString(shading)) + (flatGeometryShader ? "(gs)" : "") +
+                       (exactToon ? "(toon)" : "") + "/" +
                        std::string(toString(lighting));
     if (!specialized) return text;
     text += "+d" + std::to_string(directional) + "p" + std::to_string(point) + "s" + std::to_string(spot);
@@ -115,6 +116,7 @@ std::string ProgramVariant::defines() const {
                                                       "SHADING_TOON", "SHADING_EXACT"};
     static_assert(std::size(kShadingDefines) == kAllShadingModes.size());
     text += std::string("#define ") + kShadingDefines[int(shading)] + "\n";
+    if (exactToon) text += "#define SHADING_TOON\n";
     if (lighting == LightingModel::BlinnPhong) text += "#define LIGHTING_BLINN_PHONG\n";
     if (flatGeometryShader) text += "#define FLAT_GEOMETRY_SHADER\n";
     if (!specialized) return text;

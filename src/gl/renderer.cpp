@@ -195,6 +195,7 @@ void Renderer::renderScene(const Scene& scene, int width, int height, int x) {
 
     ProgramVariant variant = ProgramVariant::forScene(scene, specialize_);
     variant.flatGeometryShader = flatGeometryShader_ && scene.shading == ShadingMode::Flat;
+    variant.exactToon = exactToon_ && scene.shading == ShadingMode::Exact;
     const SurfaceProgram& surface = program(variant);
     const SurfaceLocations& at = surface.at;
     glUseProgram(surface.program.get());
@@ -206,7 +207,8 @@ void Renderer::renderScene(const Scene& scene, int width, int height, int x) {
     else
         setUberLights(at, lightsView);
     glUniform1i(at.orthographic, view.orthographic ? 1 : 0); // uber programs (specialized: a define)
-    if (scene.shading == ShadingMode::Toon) glUniform1f(at.toonBands, float(scene.toonBands));
+    if (scene.shading == ShadingMode::Toon || variant.exactToon)
+        glUniform1f(at.toonBands, float(scene.toonBands));
     if (scene.shading == ShadingMode::Exact) {
         drawExact(sized, view, at, x);
     } else {

@@ -115,19 +115,21 @@ struct TextureTarget {
             glGenRenderbuffers(1, &rb);
             depth = Renderbuffer(rb);
             glBindRenderbuffer(GL_RENDERBUFFER, rb);
-            glRenderbufferStorage(GL_RENDERBUFFER,
-                                  format == DepthFormat::Depth24 ? GL_DEPTH_COMPONENT24 : GL_DEPTH_COMPONENT32F,
-                                  w, h);
+            glRenderbufferStorage(
+                GL_RENDERBUFFER,
+                format == DepthFormat::Depth24 ? GL_DEPTH_COMPONENT24 : GL_DEPTH_COMPONENT32F, w, h);
             glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, rb);
         }
         const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
         if (status != GL_FRAMEBUFFER_COMPLETE)
             throw RuntimeError("a view's float target " + std::to_string(w) + "x" + std::to_string(h) +
-                               " is incomplete (status 0x" + [&] {
+                               " is incomplete (status 0x" +
+                               [&] {
                                    char hex[16];
                                    std::snprintf(hex, sizeof hex, "%x", status);
                                    return std::string(hex);
-                               }() + ")");
+                               }() +
+                               ")");
     }
     void bind() const { glBindFramebuffer(GL_FRAMEBUFFER, fbo.get()); }
 
@@ -166,7 +168,8 @@ void drawLine(Image& image, int x0, int y0, int x1, int y1, glm::u8vec4 color) {
     const int steps = std::max(std::abs(x1 - x0), std::abs(y1 - y0));
     for (int i = 0; i <= steps; ++i) {
         const double t = steps ? double(i) / steps : 0;
-        fillRect(image, int(std::lround(x0 + t * (x1 - x0))), int(std::lround(y0 + t * (y1 - y0))), 1, 1, color);
+        fillRect(image, int(std::lround(x0 + t * (x1 - x0))), int(std::lround(y0 + t * (y1 - y0))), 1, 1,
+                 color);
     }
 }
 
@@ -250,7 +253,8 @@ void Views::draw(const Scene& scene, int width, int height, int x) {
 // covers.
 void Views::renderModeAndExact(const Scene& scene, int width, int height) {
     if (!capabilities().floatColorTargets)
-        throw RuntimeError("the " + toString(scene.view) + " view measures unrounded colours in float (RGBA32F) "
+        throw RuntimeError("the " + toString(scene.view) +
+                           " view measures unrounded colours in float (RGBA32F) "
                            "targets, which need EXT_color_buffer_float; this " +
                            std::string(displayName(capabilities().api)) + " context lacks it");
     const DepthFormat depth = depthFormatFor(scene.depth);
@@ -265,9 +269,13 @@ void Views::renderModeAndExact(const Scene& scene, int width, int height) {
     targets_->mode.bind();
     renderer_.renderScene(mode, width, height, 0);
     targets_->exact.bind();
+    // Toon is measured against the exact sphere quantized the same way, as `shadelab report` does: its bands
+    // are the mode's design, not its error.
     renderer_.setExactObjectIds(true);
+    renderer_.setExactToon(scene.shading == ShadingMode::Toon);
     renderer_.renderScene(exact, width, height, 0);
     renderer_.setExactObjectIds(false);
+    renderer_.setExactToon(false);
 }
 
 void Views::drawError(const Scene& scene, int width, int height, int x, unsigned destination) {
@@ -344,11 +352,11 @@ void Views::drawError(const Scene& scene, int width, int height, int x, unsigned
     std::string mode = upper(std::string(toString(scene.shading)));
     if (scene.shading != ShadingMode::Exact && !scene.objects.empty())
         mode += " L" + std::to_string(subdivisionLevel(scene, scene.objects[0]));
-    p.drawImage(labelImage({"ERROR: " + mode + " - EXACT",
-                            "MEAN " + formatError(figures_.interiorMean) + "  MAX " +
-                                formatError(figures_.interiorMax) + " (1/255)"},
-                           scale),
-                scale * 4, scale * 4, x, width, height);
+    p.drawImage(
+        labelImage({"ERROR: " + mode + " - EXACT", "MEAN " + formatError(figures_.interiorMean) + "  MAX " +
+                                                       formatError(figures_.interiorMax) + " (1/255)"},
+                   scale),
+        scale * 4, scale * 4, x, width, height);
 }
 
 Scene splitSideScene(const Scene& scene, const SplitSide& side) {
@@ -366,7 +374,8 @@ std::string sideLabel(const Scene& scene, const SplitSide& side) {
     std::string label = upper(std::string(toString(s.shading)));
     if (s.shading != ShadingMode::Exact && !s.objects.empty())
         label += " L" + std::to_string(subdivisionLevel(s, s.objects[0]));
-    if (side.lighting || (!side.shading && !side.level)) label += " " + upper(std::string(toString(s.lighting)));
+    if (side.lighting || (!side.shading && !side.level))
+        label += " " + upper(std::string(toString(s.lighting)));
     return label;
 }
 
@@ -426,7 +435,8 @@ void Views::drawProfile(const Scene& scene, int width, int height, int x, unsign
     const int row = profileRow(scene, height);
     figures_.row = row;
     const int glRow = height - 1 - row;
-    const std::vector<float> m = t.mode.readRow(glRow), e = t.exact.readRow(glRow), w = t.edges.readRow(glRow);
+    const std::vector<float> m = t.mode.readRow(glRow), e = t.exact.readRow(glRow),
+                             w = t.edges.readRow(glRow);
     figures_.modeRow.resize(std::size_t(width));
     figures_.exactRow.resize(std::size_t(width));
     for (int i = 0; i < width; ++i) {
@@ -461,10 +471,10 @@ void Views::drawProfile(const Scene& scene, int width, int height, int x, unsign
     }
     // The key: each name in its curve's colour.
     int textX = margin;
-    for (const auto& [word, colour] : {std::pair{"ROW " + std::to_string(row), kLabelText},
-                                       std::pair{upper(std::string(toString(scene.shading))), kModeCurve},
-                                       std::pair{std::string("EXACT"), kExactCurve},
-                                       std::pair{std::string("EDGES"), kEdgeTick}}) {
+    for (const auto& [word, colour] :
+         {std::pair{"ROW " + std::to_string(row), kLabelText},
+          std::pair{upper(std::string(toString(scene.shading))), kModeCurve},
+          std::pair{std::string("EXACT"), kExactCurve}, std::pair{std::string("EDGES"), kEdgeTick}}) {
         drawText(plot, textX, margin, word, scale, colour);
         textX += textWidth(word + "  ", scale);
     }

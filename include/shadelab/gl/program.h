@@ -28,6 +28,8 @@ struct ProgramVariant {
     bool attenuation = true;                  // some point or spot light's attenuation is not (1, 0, 0)
     bool specular = true;                     // some object's k_s and some light's I_s are non-zero
     bool viewerAtInfinity = false;            // an orthographic projection: v is the constant +z
+    // Exact shading only: toon's quantized lighting on the exact sphere (the error view's answer for toon).
+    bool exactToon = false;
 
     static ProgramVariant uber(ShadingMode shading, LightingModel lighting);
     // The scene's specialized variant, or its uber variant when `specialize` is false.

@@ -30,6 +30,8 @@ public:
     const ViewFigures& viewFigures() const;
     // Exact shading writes each object's index + 1 as alpha instead of 1 (the error view's compare pass).
     void setExactObjectIds(bool enabled) { exactObjectIds_ = enabled; }
+    // Exact shading quantizes the lighting as toon shading does (the error view's exact answer for toon).
+    void setExactToon(bool enabled) { exactToon_ = enabled; }
 
     // Lines given in view space drawn over what render() drew into the same viewport, never hidden (the
     // demo's probe vectors).
@@ -68,7 +70,7 @@ private:
     std::map<std::tuple<int, VertexNormals, Overlay>, std::unique_ptr<GpuLines>> overlays_;
     std::unique_ptr<GpuLines> streamedLines_;
     VertexArray emptyVertexArray_; // exact shading's proxies have no attributes
-    bool exactObjectIds_ = false;
+    bool exactObjectIds_ = false, exactToon_ = false;
     std::unique_ptr<Views> views_;
 };
 

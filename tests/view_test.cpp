@@ -1,0 +1,110 @@
+// The "view" scene value (view.h): its spellings, how a split side reads, round trips through the scene
+// JSON, and the messages for what it refuses.
+#include <gtest/gtest.h>
+
+#include "shadelab/errors.h"
+#include "shadelab/scene.h"
+#include "shadelab/view.h"
+
+namespace shadelab {
+namespace {
+
+View parsed(std::string_view text) {
+    const ViewParse p = parseView(text);
+    EXPECT_TRUE(p.view) << text << ": " << p.error;
+    return p.view.value_or(View{});
+}
+
+TEST(ViewSpelling, TheIssuesExamplesReadAsMeant) {
+    EXPECT_EQ(parsed("scene").kind, ViewKind::Scene);
+    EXPECT_EQ(parsed("error").kind, ViewKind::Error);
+    EXPECT_EQ(parsed("profile").kind, ViewKind::Profile);
+
+    const View modes = parsed("split:gouraud,phong");
+    EXPECT_EQ(modes.kind, ViewKind::Split);
+    EXPECT_EQ(modes.left, (SplitSide{ShadingMode::Gouraud, std::nullopt, std::nullopt}));
+    EXPECT_EQ(modes.right, (SplitSide{ShadingMode::Phong, std::nullopt, std::nullopt}));
+
+    const View levels = parsed("split:phong@4,phong@6");
+    EXPECT_EQ(levels.left, (SplitSide{ShadingMode::Phong, std::nullopt, 4}));
+    EXPECT_EQ(levels.right, (SplitSide{ShadingMode::Phong, std::nullopt, 6}));
+
+    // "phong" beside "blinn-phong" is the lighting model: the split compares the two lighting models.
+    const View lighting = parsed("split:phong,blinn-phong");
+    EXPECT_EQ(lighting.left, (SplitSide{std::nullopt, LightingModel::Phong, std::nullopt}));
+    EXPECT_EQ(lighting.right, (SplitSide{std::nullopt, LightingModel::BlinnPhong, std::nullopt}));
+
+    // ... but a name that is only a shading mode stays one, and shading/lighting names both.
+    const View mixed = parsed("split:gouraud,blinn-phong");
+    EXPECT_EQ(mixed.left, (SplitSide{ShadingMode::Gouraud, std::nullopt, std::nullopt}));
+    EXPECT_EQ(mixed.right, (SplitSide{std::nullopt, LightingModel::BlinnPhong, std::nullopt}));
+    const View both = parsed("split:phong/phong@5,exact/blinn-phong");
+    EXPECT_EQ(both.left, (SplitSide{ShadingMode::Phong, LightingModel::Phong, 5}));
+    EXPECT_EQ(both.right, (SplitSide{ShadingMode::Exact, LightingModel::BlinnPhong, std::nullopt}));
+    EXPECT_EQ(parsed("split:@3,@7").left.level, 3);
+}
+
+TEST(ViewSpelling, EveryParsedViewWritesBackToItself) {
+    for (const char* text : {"scene", "error", "profile", "split:gouraud,phong", "split:phong@4,phong@6",
+                             "split:phong,blinn-phong", "split:gouraud,blinn-phong",
+                             "split:flat/phong@2,exact", "split:@3,@7", "split:toon,exact"}) {
+        const View view = parsed(text);
+        EXPECT_EQ(toString(view), text);
+        EXPECT_EQ(parsed(toString(view)), view) << text;
+    }
+}
+
+TEST(ViewSpelling, RefusalsSayWhatIsWrongAndWhatIsExpected) {
+    struct Case {
+        const char* text;
+        const char* says;
+    };
+    for (const Case& c :
+         {Case{"errors", "expected scene, error, profile or split:A,B"},
+          Case{"split:phong", "two sides separated by one comma"},
+          Case{"split:a,b,c", "two sides separated by one comma"},
+          Case{"split:phong,phongg", "unknown shading \"phongg\""},
+          Case{"split:phong/blin,phong", "unknown lighting \"blin\""}, Case{"split:phong@11,phong", "0..10"},
+          Case{"split:phong@x,phong", "0..10"}, Case{"split:phong@-1,phong", "0..10"},
+          Case{"split:,phong", "a split side is empty"},
+          Case{"split:phong,phong", "both sides of the split are the same"}}) {
+        const ViewParse p = parseView(c.text);
+        EXPECT_FALSE(p.view) << c.text;
+        EXPECT_NE(p.error.find(c.says), std::string::npos) << c.text << ": " << p.error;
+    }
+}
+
+TEST(ViewScene, SavedAndReadBackWithItsPosition) {
+    Scene scene;
+    scene.view = parsed("split:phong@3,exact");
+    scene.view.at = 0.25;
+    EXPECT_EQ(parseScene(sceneToJson(scene)), scene);
+    scene.view = parsed("error");
+    scene.view.at.reset();
+    EXPECT_EQ(parseScene(sceneToJson(scene)), scene);
+    EXPECT_EQ(parseScene(R"({"view": "profile", "view_at": 0.5})").view.at, 0.5);
+}
+
+TEST(ViewScene, BadValuesNameTheKey) {
+    auto message = [](const char* json) {
+        try {
+            parseScene(json, "s.json");
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("accepted");
+    };
+    EXPECT_EQ(
+        message(R"({"view": "split:x,phong"})"),
+        "s.json: view: \"split:x,phong\": unknown shading \"x\" in a split side; expected flat, gouraud, "
+        "phong, toon or exact");
+    EXPECT_EQ(message(R"({"view": 3})").find("s.json: view: "), 0u);
+    EXPECT_EQ(message(R"({"view_at": 1.5})"),
+              "s.json: view_at: must be between 0 and 1 (a fraction of the picture), got 1.5");
+    Scene scene;
+    scene.view.at = -0.1;
+    EXPECT_THROW(validateScene(scene), InputError);
+}
+
+} // namespace
+} // namespace shadelab
