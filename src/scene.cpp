@@ -205,8 +205,8 @@ void checkSubdivisions(int level, const std::string& path) {
 
 void checkViewAt(double at) {
     checkFinite(at, "view_at");
-    if (!(at >= 0 && at <= 1)) fail("view_at", "must be between 0 and 1 (a fraction of the picture), got " +
-                                                   formatNumber(at));
+    if (!(at >= 0 && at <= 1))
+        fail("view_at", "must be between 0 and 1 (a fraction of the picture), got " + formatNumber(at));
 }
 
 void checkImageSize(const Scene& scene) {
@@ -770,8 +770,8 @@ std::vector<Light> readLights(const Json& json) {
 
 Scene readScene(const Json& root) {
     static constexpr std::array<std::string_view, 14> kKeys = {
-        "image",   "camera",  "projection", "shading",        "lighting", "toon_bands", "tolerance_px",
-        "depth",   "overlay", "view",       "vertex_normals", "view_at",  "objects",    "lights"};
+        "image", "camera",         "projection", "shading", "lighting", "toon_bands", "tolerance_px",
+        "depth", "vertex_normals", "overlay",    "view",    "view_at",  "objects",    "lights"};
     requireObject(root, "");
     checkKeys(root, "", kKeys);
     Scene scene;

@@ -25,10 +25,11 @@ void centredText(Image& canvas, int x, int y, int width, const std::string& text
 } // namespace
 
 // Rows: one per lighting model, headed by a banner naming it; columns: one per shading mode, each tile
-// headed by the mode's name.
+// headed by the mode's name, and under it the mode's error view (|mode − exact| as a heatmap, labelled
+// with its interior mean and max).
 Image renderShowcase(HeadlessRenderer& renderer, const Scene& scene, int tileSize) {
     const int columns = int(kShadingModes.size()), rows = int(kLightingModels.size());
-    const int rowHeight = 2 * kStripHeight + tileSize;
+    const int rowHeight = 2 * kStripHeight + 2 * tileSize;
     Image canvas(columns * tileSize, rows * rowHeight);
     fillRect(canvas, 0, 0, canvas.width, canvas.height, kPanelColor);
 
@@ -43,7 +44,10 @@ Image renderShowcase(HeadlessRenderer& renderer, const Scene& scene, int tileSiz
             tile.shading = kShadingModes[std::size_t(column)];
             const int x = column * tileSize;
             centredText(canvas, x, y + kStripHeight, tileSize, upper(toString(tile.shading)) + " SHADING");
+            tile.view = View{};
             blit(canvas, renderer.render(tile), x, y + 2 * kStripHeight);
+            tile.view.kind = ViewKind::Error;
+            blit(canvas, renderer.render(tile), x, y + 2 * kStripHeight + tileSize);
         }
     }
     return canvas;

@@ -331,7 +331,7 @@ const std::vector<ErrorCase> kErrorCases = {
     {"UnknownTopLevelKey",
      R"({"shadding": "phong"})",
      {"scene.json: shadding: unknown key; expected one of image, camera, projection, shading, lighting, "
-      "toon_bands, tolerance_px, depth, vertex_normals, overlay, objects, lights"}},
+      "toon_bands, tolerance_px, depth, vertex_normals, overlay, view, view_at, objects, lights"}},
     {"OverlayUnknown",
      R"({"overlay": "wires"})",
      {"scene.json: overlay: unknown value \"wires\"; expected one of none, wireframe, normals"}},

@@ -176,6 +176,13 @@ EMSCRIPTEN_KEEPALIVE void shadelab_drag(double dx, double dy) {
     page().dirty = true;
 }
 
+// The pointer at canvas pixel (x, y), top left origin, on every move and left-button change: the profile
+// view's row, the split view's divider (DemoState::pointer, as in the window).
+EMSCRIPTEN_KEEPALIVE void shadelab_pointer(double x, double y, int leftHeld) {
+    page().state->pointer(x, y, leftHeld != 0);
+    page().dirty = true;
+}
+
 // Right-drag (or Shift + drag): the first light that is not ambient orbits the target.
 EMSCRIPTEN_KEEPALIVE void shadelab_drag_light(double dx, double dy) {
     page().state->dragLight(dx, dy);
@@ -226,6 +233,8 @@ EMSCRIPTEN_KEEPALIVE const char* shadelab_ui() {
         {"material", s.materialName()},
         {"lights", s.lightsName()},
         {"overlay", toString(s.drawn().overlay)},
+        {"view", toString(s.drawn().view)},
+        {"viewReport", s.viewReport},
         {"probe", app::probeText(s)},
         {"scene", nlohmann::json::parse(sceneToJson(p.state->scene()))},
         {"current", nlohmann::json::parse(sceneToJson(s.current(width, height)))},

@@ -62,6 +62,7 @@ function bind() {
     zoom: c('shadelab_zoom', null, ['number']),
     dragLight: c('shadelab_drag_light', null, ['number', 'number']),
     probe: c('shadelab_probe', 'string', ['number', 'number']),
+    pointer: c('shadelab_pointer', null, ['number', 'number', 'number']),
     setMatch: c('shadelab_set_match_highlight', null, ['number']),
     redraw: c('shadelab_redraw', null, []),
     ui: () => JSON.parse(Module.ccall('shadelab_ui', 'string', [], [])),
@@ -182,7 +183,14 @@ function wireMouse() {
   const canvas = $('canvas');
   let last = null;
   canvas.addEventListener('contextmenu', (e) => e.preventDefault());
+  // Every move and left-button change, in canvas pixels: the profile's row, the split's divider. Sent
+  // before the drag, as the window does, so a press on the divider moves it instead of the camera.
+  const toPointer = (e, held) => {
+    const scale = canvas.width / canvas.clientWidth;
+    api.pointer(e.offsetX * scale, e.offsetY * scale, held ? 1 : 0);
+  };
   canvas.addEventListener('pointerdown', (e) => {
+    if (e.button === 0) toPointer(e, true);
     if (e.button !== 0 && e.button !== 2) return;
     last = {x: e.clientX, y: e.clientY, light: e.button === 2 || e.shiftKey, travelled: 0,
             downX: e.offsetX, downY: e.offsetY};
@@ -190,7 +198,11 @@ function wireMouse() {
     canvas.focus();
   });
   canvas.addEventListener('pointermove', (e) => {
-    if (!last) return;
+    toPointer(e, last && !last.light);
+    if (!last) {
+      if (ui && (ui.view === 'profile' || ui.view.startsWith('split:'))) refresh();
+      return;
+    }
     const dx = e.clientX - last.x, dy = e.clientY - last.y;
     last.travelled += Math.abs(dx) + Math.abs(dy);
     (last.light ? api.dragLight : api.drag)(dx, dy);
@@ -201,6 +213,7 @@ function wireMouse() {
   const end = () => { last = null; };
   // A left press and release that moved less than 3 px is a click: probe the point, in canvas pixels.
   canvas.addEventListener('pointerup', (e) => {
+    if (e.button === 0) toPointer(e, false);
     if (last && !last.light && last.travelled < 3) {
       const scale = canvas.width / canvas.clientWidth;
       const error = api.probe(last.downX * scale, last.downY * scale);
@@ -250,6 +263,7 @@ function refresh() {
   setIfIdle('projection', ui.orthographic ? 'orthographic' : 'perspective');
   setIfIdle('normals', scene.vertex_normals || 'averaged');
   setIfIdle('overlay', ui.overlay);
+  setIfIdle('view', viewName(ui.view));
   const object = ui.scene.objects[0];
   $('material').hidden = !object;
   if (object) {
@@ -263,6 +277,9 @@ function refresh() {
   $('bands-out').textContent = ui.scene.toon_bands;
   showLights(ui.scene.lights);
 }
+
+// "split:gouraud,exact" is the select's "split".
+const viewName = (view) => (view.startsWith('split:') ? 'split' : view);
 
 function setIfIdle(id, value) {
   const element = $(id);
@@ -342,6 +359,13 @@ function wireControls() {
     pressUntil(ui.level < target ? 61 : 45, (u) => u.level === target);
   });
   $('auto').addEventListener('change', (e) => pressUntil(65, (u) => u.autoLevel === e.target.checked, 1));
+  // E, V and I each switch their view on (from any other) and off again, as in the window.
+  $('view').addEventListener('change', (e) => {
+    const keyOf = {error: 69, split: 86, profile: 73};
+    const shown = viewName(ui.view);
+    if (e.target.value !== shown) press(keyOf[e.target.value === 'scene' ? shown : e.target.value]);
+    refresh();
+  });
   $('overlay').addEventListener('change', (e) => pressUntil(87, (u) => u.overlay === e.target.value, 2));
   $('projection').addEventListener('change',
       (e) => pressUntil(79, (u) => u.orthographic === (e.target.value === 'orthographic'), 1));

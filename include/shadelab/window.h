@@ -63,6 +63,9 @@ public:
     void onRightDrag(std::function<void(double dx, double dy)> handler);
     // A left press and release in (nearly) the same place, at framebuffer pixels from the top left.
     void onClick(std::function<void(double x, double y)> handler);
+    // Every cursor move and left-button change: the position in framebuffer pixels from the top left, and
+    // whether the left button is held (before the drag handler of the same move).
+    void onPointer(std::function<void(double x, double y, bool leftHeld)> handler);
     // Wheel steps: positive away from the user.
     void onScroll(std::function<void(double steps)> handler);
     Api api() const { return api_; }

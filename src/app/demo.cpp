@@ -64,6 +64,12 @@ public:
             if (!panel_.wantsMouse()) state_.dragLight(dx, dy);
         });
         window_.onClick([this](double x, double y) { onClick(x, y); });
+        window_.onPointer([this](double x, double y, bool leftHeld) {
+            if (panel_.wantsMouse()) return;
+            int width = 0, height = 0;
+            window_.framebufferSize(width, height);
+            state_.pointer(x - panelColumnWidth(width, state_.showPanel, uiScale_), y, leftHeld);
+        });
         window_.onScroll([this](double steps) {
             if (!panel_.wantsMouse()) state_.zoom(steps);
         });

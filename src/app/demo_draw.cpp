@@ -7,9 +7,28 @@
 
 namespace shadelab::app {
 
-void drawDemo(gl::Renderer& renderer, const DemoState& state, int width, int height, int x) {
+std::string viewReport(const Scene& scene, const gl::ViewFigures& figures) {
+    char text[160];
+    switch (scene.view.kind) {
+    case ViewKind::Scene:
+        return "";
+    case ViewKind::Error:
+        std::snprintf(text, sizeof text, "error vs exact: interior mean %.3f/255, max %.2f/255 (%zu px)",
+                      figures.interiorMean, figures.interiorMax, figures.interiorPixels);
+        return text;
+    case ViewKind::Split:
+        return "split: " + toString(scene.view.left) + " | " + toString(scene.view.right);
+    case ViewKind::Profile:
+        return "profile: row " + std::to_string(figures.row) + ", " +
+               std::to_string(figures.edgeColumns.size()) + " edge crossings";
+    }
+    return "";
+}
+
+void drawDemo(gl::Renderer& renderer, DemoState& state, int width, int height, int x) {
     const Scene scene = state.drawn();
     renderer.render(scene, width, height, x);
+    state.viewReport = viewReport(scene, renderer.viewFigures());
     const auto probe = state.probe();
     if (!probe) return;
     // The vectors are as long as 0.6 of the object's largest semi-axis: visible, and inside the picture.

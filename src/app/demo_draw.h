@@ -8,7 +8,10 @@
 
 namespace shadelab::app {
 
-// Into the bound framebuffer, over a viewport of width × height moved `x` to the right.
-void drawDemo(gl::Renderer& renderer, const DemoState& state, int width, int height, int x = 0);
+// Into the bound framebuffer, over a viewport of width × height moved `x` to the right; sets
+// state.viewReport from what the view measured.
+void drawDemo(gl::Renderer& renderer, DemoState& state, int width, int height, int x = 0);
+// What a view measured, in words, for the title and the panel ("" for the plain scene).
+std::string viewReport(const Scene& scene, const gl::ViewFigures& figures);
 
 } // namespace shadelab::app

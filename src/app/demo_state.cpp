@@ -22,6 +22,9 @@ const std::vector<KeyBinding>& bindings() {
         {{'3', 'P'}, "3 / P", "Phong shading", Command::Phong},
         {{'4', 'T'}, "4 / T", "toon shading", Command::Toon},
         {{'5', 'X'}, "5 / X", "exact: the sphere ray-cast per pixel", Command::Exact},
+        {{'E'}, "E", "error view: |mode - exact| heatmap with its mean and max", Command::ToggleErrorView},
+        {{'V'}, "V", "split view: the mode beside exact; drag the divider", Command::ToggleSplitView},
+        {{'I'}, "I", "intensity profile along the row under the pointer", Command::ToggleProfileView},
         {{'B'}, "B", "Phong <-> Blinn-Phong lighting", Command::ToggleLighting},
         {{kKeyEqual, kKeyKeypadAdd}, "+", "subdivision level up", Command::LevelUp},
         {{kKeyMinus, kKeyKeypadSubtract}, "-", "subdivision level down", Command::LevelDown},
@@ -152,6 +155,7 @@ DemoState::DemoState(Scene scene)
 }
 
 void DemoState::drag(double dxPixels, double dyPixels) {
+    if (holdingDivider_) return; // the drag moves the split's divider (pointer())
     camera_.drag(dxPixels, dyPixels);
     cameraMoved_ = true;
 }
@@ -218,22 +222,69 @@ Scene DemoState::current(int width, int height) const {
     return s;
 }
 
+// In split view the mode keys change the left side (which the split names); a side never equals the other,
+// so a mode the right side shows swaps the two.
+void DemoState::setShading(ShadingMode mode) {
+    View& view = scene_.view;
+    if (view.kind == ViewKind::Split && view.left.shading) {
+        const ShadingMode previous = *view.left.shading;
+        view.left.shading = mode;
+        if (view.left == view.right) view.right.shading = previous;
+    }
+    scene_.shading = mode;
+}
+
+void DemoState::pointer(double x, double y, bool leftHeld) {
+    const Scene shown = drawn();
+    const View& view = scene_.view;
+    if (view.kind == ViewKind::Profile && shown.height > 0)
+        scene_.view.at = std::clamp(y / shown.height, 0.0, 1.0);
+    if (view.kind == ViewKind::Split && shown.width > 0) {
+        const double divider = view.at.value_or(0.5) * shown.width;
+        if (leftHeld && !leftWasHeld_) holdingDivider_ = std::abs(x - divider) <= 8;
+        if (!leftHeld) holdingDivider_ = false;
+        if (holdingDivider_) scene_.view.at = std::clamp(x / shown.width, 0.0, 1.0);
+    } else {
+        holdingDivider_ = false;
+    }
+    leftWasHeld_ = leftHeld;
+}
+
 bool DemoState::apply(Command command) {
     switch (command) {
     case Command::Flat:
-        scene_.shading = ShadingMode::Flat;
+        setShading(ShadingMode::Flat);
         break;
     case Command::Gouraud:
-        scene_.shading = ShadingMode::Gouraud;
+        setShading(ShadingMode::Gouraud);
         break;
     case Command::Phong:
-        scene_.shading = ShadingMode::Phong;
+        setShading(ShadingMode::Phong);
         break;
     case Command::Toon:
-        scene_.shading = ShadingMode::Toon;
+        setShading(ShadingMode::Toon);
         break;
     case Command::Exact:
-        scene_.shading = ShadingMode::Exact;
+        setShading(ShadingMode::Exact);
+        break;
+    case Command::ToggleErrorView:
+    case Command::ToggleProfileView: {
+        const ViewKind kind = command == Command::ToggleErrorView ? ViewKind::Error : ViewKind::Profile;
+        const bool on = scene_.view.kind != kind;
+        scene_.view = View{};
+        scene_.view.kind = on ? kind : ViewKind::Scene;
+        break;
+    }
+    case Command::ToggleSplitView:
+        if (scene_.view.kind == ViewKind::Split) {
+            scene_.view = View{};
+        } else { // the mode (which 1-5 then change) beside exact; beside exact itself, Gouraud and Phong
+            scene_.view = View{};
+            scene_.view.kind = ViewKind::Split;
+            const bool exact = scene_.shading == ShadingMode::Exact;
+            scene_.view.left.shading = exact ? ShadingMode::Gouraud : scene_.shading;
+            scene_.view.right.shading = exact ? ShadingMode::Phong : ShadingMode::Exact;
+        }
         break;
     case Command::ToggleLighting:
         toggleLighting();
@@ -313,7 +364,13 @@ std::string DemoState::describeChange(Command command) const {
     case Command::Phong:
     case Command::Toon:
     case Command::Exact:
+        if (scene.view.kind == ViewKind::Split)
+            return "split: " + toString(scene.view.left) + " | " + toString(scene.view.right);
         return std::string(toString(scene.shading)) + " shading";
+    case Command::ToggleErrorView:
+    case Command::ToggleSplitView:
+    case Command::ToggleProfileView:
+        return scene.view.kind == ViewKind::Scene ? "view: scene" : "view: " + toString(scene.view);
     case Command::ToggleLighting:
         return std::string(toString(scene.lighting)) + " lighting";
     case Command::LevelUp:
@@ -492,8 +549,8 @@ std::string windowTitle(const DemoState& state, double frameMs) {
     std::snprintf(timing, sizeof timing, "%.2f ms", frameMs);
     return "shadelab — " + modes(state.drawn()) + " | level " + std::to_string(state.level()) +
            (state.autoLevel() ? " (auto)" : "") + " | " + std::to_string(state.triangleCount()) +
-           " triangles | " + timing + " | H: keys" +
-           (state.lastChange().empty() ? "" : " | " + state.lastChange());
+           " triangles | " + timing + (state.viewReport.empty() ? "" : " | " + state.viewReport) +
+           " | H: keys" + (state.lastChange().empty() ? "" : " | " + state.lastChange());
 }
 
 std::string statusText(const DemoState& state) {
@@ -501,7 +558,8 @@ std::string statusText(const DemoState& state) {
     return modes(scene) + "\nlevel " + std::to_string(state.level()) + ", " +
            (state.orthographic() ? "orthographic" : "perspective") + ", " +
            (scene.vertexNormals == VertexNormals::Averaged ? "averaged" : "exact") +
-           " normals\nmaterial: " + state.materialName() + ", lights: " + state.lightsName();
+           " normals\nmaterial: " + state.materialName() + ", lights: " + state.lightsName() +
+           (state.viewReport.empty() ? "" : "\n" + state.viewReport);
 }
 
 double probeError255(const ProbeReport& probe) {

@@ -29,6 +29,9 @@ enum class Command {
     Phong,
     Toon,
     Exact,
+    ToggleErrorView,
+    ToggleSplitView,
+    ToggleProfileView,
     ToggleLighting,
     LevelUp,
     LevelDown,
@@ -112,6 +115,11 @@ public:
     // A click at (x, y) pixels of the drawn picture (top left origin) pins the probe to the surface point
     // there; a click on the background removes it. Returns whether a point was hit.
     bool probeAt(double x, double y);
+    // The pointer at (x, y) pixels of the drawn picture, with the left button held or not, on every move
+    // and button change. Profile view: the row under it is profiled. Split view: a press within 8 px of
+    // the divider grabs it and the drag moves it (drag() then leaves the camera alone).
+    void pointer(double x, double y, bool leftHeld);
+    bool holdsDivider() const { return holdingDivider_; }
     void clearProbe() { probePoint_.reset(); }
     // The probe evaluated for the drawn scene (it follows orbits, level and mode changes); nullopt
     // without one.
@@ -124,6 +132,9 @@ public:
     bool showHelp = false;
     bool showPanel = true;
     bool presenting = false; // F2, --present: the large label for a class (presentationLabel)
+    // What the last drawn view measured, in words ("error: interior mean 2.54/255, max 98.5/255"), set by
+    // drawDemo; "" for the plain scene.
+    std::string viewReport;
     // The level drawn (of the first object): its own, or what "auto" chose for the drawn view.
     int level() const;
     bool autoLevel() const;
@@ -136,6 +147,7 @@ public:
 
 private:
     void changeLevels(int delta);
+    void setShading(ShadingMode mode);
     void toggleLighting();
     void setShininess(std::size_t object, double exponent);
     double presetExponent(double alpha) const;
@@ -157,6 +169,7 @@ private:
     mutable std::optional<ProbeReport> probeReport_;
     mutable std::optional<SphereMesh> probeMesh_;
     mutable VertexNormals probeMeshNormals_ = VertexNormals::Averaged;
+    bool holdingDivider_ = false, leftWasHeld_ = false;
     int material_ = 0; // 0: the scene's own, i: materialPresets()[i − 1]
     int lights_ = 0;   // 0: the scene's own, i: lightPresets()[i − 1]
 };

@@ -48,10 +48,23 @@ struct Window::State {
     WindowedGeometry windowed;
     std::function<void(int)> keyHandler;
     std::function<void(double, double)> dragHandler, rightDragHandler, clickHandler;
+    std::function<void(double, double, bool)> pointerHandler;
     std::function<void(double)> scrollHandler;
     bool dragging = false, rightDragging = false;
     double lastX = 0, lastY = 0;
     double pressX = 0, pressY = 0, travelled = 0; // the left button's press, and how far it moved since
+
+    // The cursor (lastX, lastY) to the pointer handler, in framebuffer pixels, which differ from window
+    // coordinates on a scaled display.
+    void reportPointer() const {
+        if (!pointerHandler) return;
+        int windowWidth = 0, windowHeight = 0, width = 0, height = 0;
+        glfwGetWindowSize(window, &windowWidth, &windowHeight);
+        glfwGetFramebufferSize(window, &width, &height);
+        const double sx = windowWidth > 0 ? double(width) / windowWidth : 1;
+        const double sy = windowHeight > 0 ? double(height) / windowHeight : 1;
+        pointerHandler(lastX * sx, lastY * sy, dragging);
+    }
 };
 
 bool Window::displayNamed() {
@@ -134,6 +147,7 @@ Window::Window(int width, int height, const std::string& title, bool debugContex
         if (button == GLFW_MOUSE_BUTTON_RIGHT) state->rightDragging = action == GLFW_PRESS;
         if (button != GLFW_MOUSE_BUTTON_LEFT) return;
         state->dragging = action == GLFW_PRESS;
+        state->reportPointer();
         if (action == GLFW_PRESS) {
             state->pressX = state->lastX;
             state->pressY = state->lastY;
@@ -150,6 +164,12 @@ Window::Window(int width, int height, const std::string& title, bool debugContex
     });
     glfwSetCursorPosCallback(state_->window, [](GLFWwindow* w, double x, double y) {
         auto* state = static_cast<State*>(glfwGetWindowUserPointer(w));
+        const double fromX = state->lastX, fromY = state->lastY;
+        state->lastX = x; // the pointer handler sees the new position before the drag handler moves
+        state->lastY = y;
+        state->reportPointer();
+        state->lastX = fromX;
+        state->lastY = fromY;
         if (state->dragging) state->travelled += std::abs(x - state->lastX) + std::abs(y - state->lastY);
         if (state->dragging && state->dragHandler) state->dragHandler(x - state->lastX, y - state->lastY);
         if (state->rightDragging && state->rightDragHandler)
@@ -215,6 +235,9 @@ void Window::onRightDrag(std::function<void(double, double)> handler) {
 }
 void Window::onClick(std::function<void(double, double)> handler) {
     state_->clickHandler = std::move(handler);
+}
+void Window::onPointer(std::function<void(double, double, bool)> handler) {
+    state_->pointerHandler = std::move(handler);
 }
 void Window::onScroll(std::function<void(double)> handler) {
     state_->scrollHandler = std::move(handler);
