@@ -89,7 +89,7 @@ class Page:
             self.server.shutdown()
 
     def pointer(self, request):
-        """A click, or a drag by (dx, dy) in steps, at (x, y) CSS pixels from the canvas's centre, with
+        """A click, a move, or a drag by (dx, dy) in steps, at (x, y) CSS pixels from the canvas's centre, with
         Shift held when asked (Shift + drag moves the light)."""
         from selenium.webdriver.common.action_chains import ActionChains
         from selenium.webdriver.common.keys import Keys
@@ -100,6 +100,8 @@ class Page:
             chain = chain.key_down(Keys.SHIFT)
         if request['action'] == 'click':
             chain = chain.click()
+        elif request['action'] == 'move':
+            pass
         else:
             steps = request.get('steps', 8)
             chain = chain.click_and_hold()

@@ -81,6 +81,9 @@ public:
     std::size_t click(int x = 0, int y = 0) {
         return add({{"op", "pointer"}, {"action", "click"}, {"x", x}, {"y", y}});
     }
+    std::size_t move(int x, int y) {
+        return add({{"op", "pointer"}, {"action", "move"}, {"x", x}, {"y", y}});
+    }
     std::size_t drag(int dx, int dy, bool shift) {
         return add({{"op", "pointer"}, {"action", "drag"}, {"dx", dx}, {"dy", dy}, {"shift", shift}});
     }
@@ -564,6 +567,68 @@ TEST_F(Browser, KeysChangeThePictureAsInTheWindow) {
     const json ui = session.answer(steps.back().ui).at("ui");
     EXPECT_TRUE(ui.at("orthographic").get<bool>());
     EXPECT_EQ(ui.at("current").at("lighting"), "phong") << "B from Blinn-Phong";
+    expectCleanConsole(session.answer(console).at("console"));
+}
+
+// Issue 11 in the page: 5 (exact), E (error), V (split) and a real mouse drag of its divider, I (profile)
+// and a pointer move choosing its row. Each picture is native OpenGL ES's render of the page's state (its
+// view included) within the SwiftShader tolerance, and the state says what the key did.
+TEST_F(Browser, ViewsAsInTheWindow) {
+    Scene scene = litSphereScene(200, LightType::Point);
+    scene.shading = ShadingMode::Gouraud;
+    scene.objects[0].subdivisions = 3;
+    Session session;
+    session.open();
+    session.load(scene);
+    struct Step {
+        const char* what;
+        std::function<std::size_t()> act;
+        std::size_t done = 0, ui = 0, capture = 0;
+    };
+    std::vector<Step> steps = {
+        {"start", nullptr},
+        {"5", [&] { return session.key('5'); }},
+        {"E",
+         [&] {
+             session.key('2');
+             return session.key('E');
+         }},
+        {"V", [&] { return session.key('V'); }},
+        {"divider drag", [&] { return session.drag(-40, 0, false); }},
+        {"I", [&] { return session.key('I'); }},
+        {"pointer move", [&] { return session.move(0, -50); }},
+    };
+    for (Step& step : steps) {
+        if (step.act) step.done = step.act();
+        step.ui = session.ui();
+        step.capture = session.capture();
+    }
+    const std::size_t console = session.console();
+    if (!session.run(dir_)) return;
+    std::vector<json> states;
+    for (const Step& step : steps) {
+        SCOPED_TRACE(step.what);
+        const json ui = session.answer(step.ui).at("ui");
+        states.push_back(ui.at("current"));
+        const Scene state = parseScene(ui.at("atImageSize").dump(), "page state");
+        const Image browser = session.image(step.capture);
+        const Comparison c =
+            compareImages(browser, nativeGles().render(state), swiftShaderTolerance(browser));
+        std::printf("%s: view %s; page vs native render of its state: %s\n", step.what,
+                    ui.at("view").get<std::string>().c_str(), c.summary().c_str());
+        EXPECT_TRUE(c.passed) << c.summary();
+    }
+    EXPECT_EQ(states[1].at("shading"), "exact");
+    EXPECT_EQ(states[2].at("view"), "error");
+    EXPECT_EQ(states[3].at("view"), "split:gouraud,exact");
+    ASSERT_TRUE(states[4].contains("view_at"));
+    EXPECT_LT(states[4].at("view_at").get<double>(), 0.49) << "the drag did not move the divider left";
+    EXPECT_EQ(states[4].at("camera"), states[3].at("camera")) << "the divider drag orbited the camera";
+    EXPECT_EQ(states[5].at("view"), "profile");
+    ASSERT_TRUE(states[6].contains("view_at"));
+    EXPECT_LT(states[6].at("view_at").get<double>(), 0.49) << "the pointer above the centre: a row above it";
+    const json last = session.answer(steps.back().ui).at("ui");
+    EXPECT_NE(last.at("title").get<std::string>().find("| profile: row "), std::string::npos);
     expectCleanConsole(session.answer(console).at("console"));
 }
 

@@ -362,6 +362,59 @@ TEST_F(DemoWindow, OverlayLightDragAndProbeShowWhatRenderGives) {
     expectCleanQuit(demo);
 }
 
+// Issue 11: 5 (exact), E (error), V (split, and a drag of its divider) and I (profile, and a pointer move
+// choosing its row) each change the picture, say so in the title, and the window shows what `render` draws
+// for the JSON that S saves, the view included.
+TEST_F(DemoWindow, ExactErrorSplitAndProfileShowWhatRenderGives) {
+    const fs::path scene = writeScene("scene.json", sceneJson(kWidth, kHeight, 3, "gouraud", "phong"));
+    DemoProcess& demo = startDemo("demo", {scene.string(), "--size", kSize, "--hide-panel", "--gl-debug"});
+    demo.window().waitForTitle("shadelab — gouraud shading");
+    Image previous;
+    auto step = [&](const std::string& label, const std::function<bool(const std::string&)>& titleSays) {
+        EXPECT_TRUE(pollUntil([&] { return titleSays(demo.window().title()); }))
+            << label << ": " << demo.window().title();
+        const fs::path stem = demo.screenshot();
+        const Image rendered =
+            renderWithCli(stem.string() + ".json", scratch() / (label + ".png"), scratch());
+        EXPECT_TRUE(
+            matches(settledCapture(demo.window(), rendered), rendered, kWindowTolerance, label + ".window"));
+        if (!previous.rgba.empty()) {
+            EXPECT_FALSE(compareImages(rendered, previous, kWindowTolerance).passed)
+                << label << " changed nothing";
+        }
+        previous = rendered;
+        return loadScene(stem.string() + ".json");
+    };
+    auto has = [](const char* words) {
+        return [words](const std::string& title) { return title.find(words) != std::string::npos; };
+    };
+    step("gouraud", has("gouraud shading"));
+    demo.window().key("5");
+    EXPECT_EQ(step("exact", has("| exact shading")).shading, ShadingMode::Exact);
+    demo.window().key("2");
+    demo.window().key("e");
+    const Scene error = step("error", has("| error vs exact: interior mean "));
+    EXPECT_EQ(error.view.kind, ViewKind::Error);
+    EXPECT_EQ(error.shading, ShadingMode::Gouraud);
+    demo.window().key("v");
+    const Scene split = step("split", has("| split: gouraud | exact"));
+    EXPECT_EQ(toString(split.view), "split:gouraud,exact");
+    demo.window().drag(1, kWidth / 2, kHeight / 2, -64, 0); // grabs the divider: the camera stays
+    const Scene moved =
+        step("split-moved", [](const std::string& t) { return t.find("split:") != std::string::npos; });
+    ASSERT_TRUE(moved.view.at.has_value());
+    EXPECT_NEAR(*moved.view.at, (kWidth / 2 - 64.0) / kWidth, 2.0 / kWidth);
+    EXPECT_EQ(moved.eye, split.eye) << "the divider drag orbited the camera";
+    demo.window().key("i");
+    demo.window().move(kWidth / 2, kHeight / 4);
+    const Scene profile = step("profile", has("| profile: row 60,"));
+    EXPECT_EQ(profile.view.kind, ViewKind::Profile);
+    EXPECT_NEAR(profile.view.at.value_or(-1), 0.25, 1.0 / kHeight);
+    demo.window().key("i");
+    EXPECT_EQ(step("scene", has("| view: scene")).view.kind, ViewKind::Scene);
+    expectCleanQuit(demo);
+}
+
 TEST_F(DemoWindow, EveryModeKeyShowsWhatRenderGives) {
     everyModeKeyShowsWhatRenderGives("gl");
 }

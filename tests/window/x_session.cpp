@@ -146,12 +146,21 @@ void XWindow::click(int x, int y) const {
 }
 
 void XWindow::rightDrag(int x, int y, int dx, int dy, int steps) const {
+    drag(3, x, y, dx, dy, steps);
+}
+
+void XWindow::drag(int button, int x, int y, int dx, int dy, int steps) const {
+    const std::string which = std::to_string(button);
     run({tools_.xdotool.string(), "mousemove", "--window", id_, std::to_string(x), std::to_string(y),
-         "mousedown", "3"});
+         "mousedown", which});
     for (int i = 0; i < steps; ++i)
         run({tools_.xdotool.string(), "mousemove_relative", "--", std::to_string(dx / steps),
              std::to_string(dy / steps)});
-    run({tools_.xdotool.string(), "mouseup", "3"});
+    run({tools_.xdotool.string(), "mouseup", which});
+}
+
+void XWindow::move(int x, int y) const {
+    run({tools_.xdotool.string(), "mousemove", "--window", id_, std::to_string(x), std::to_string(y)});
 }
 
 void XWindow::resize(int width, int height) const {

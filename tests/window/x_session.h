@@ -54,6 +54,9 @@ public:
     void click(int x, int y) const;           // left button at (x, y) of the window
     // Right button held from (x, y) while the pointer moves by (dx, dy) in `steps` steps.
     void rightDrag(int x, int y, int dx, int dy, int steps = 8) const;
+    // Button `button` (1 left, 3 right) pressed at (x, y), moved by (dx, dy) in `steps`, released.
+    void drag(int button, int x, int y, int dx, int dy, int steps = 8) const;
+    void move(int x, int y) const; // the pointer to (x, y) of the window, no button
     std::string title() const;
     // Polls the title until it starts with `prefix`; throws with the last title after kWaitLimit.
     std::string waitForTitle(const std::string& prefix) const;
