@@ -328,6 +328,17 @@ std::vector<RatioSpec> registerModes(Gpu& gpu, const std::shared_ptr<Limits>& li
         ratios.push_back({std::string(toString(mode)) + " L6: frame / one-colour sphere (culled)", name,
                           "frame/limits/one-colour-sphere-culled"});
     }
+    // Exact shading (issue 11) against Phong shading, the mesh it replaces, at level 6 and 8: the ray cast
+    // per pixel against the triangles' vertex work.
+    Scene exact = oneLight;
+    exact.shading = ShadingMode::Exact;
+    registerFrame(gpu, "frame/modes/exact",
+                  [&gpu, exact] { gpu.renderer.render(exact, exact.width, exact.height); });
+    Scene phong8 = sized(Scene{}, o, 8);
+    registerFrame(gpu, "frame/modes/phong-level8",
+                  [&gpu, phong8] { gpu.renderer.render(phong8, phong8.width, phong8.height); });
+    ratios.push_back({"exact / phong L6", "frame/modes/exact", "frame/modes/phong"});
+    ratios.push_back({"exact / phong L8", "frame/modes/exact", "frame/modes/phong-level8"});
     ratios.push_back({"full-screen fill / clear", "frame/limits/fill", "frame/limits/clear"});
     ratios.push_back({"one-colour sphere: back faces drawn / culled", "frame/limits/one-colour-sphere",
                       "frame/limits/one-colour-sphere-culled"});
