@@ -103,7 +103,7 @@ async function shadelabStarted() {
 // The command-line flags, given as ?shading=flat&size=256x256…, through the CLI's own parser.
 function applyUrlFlags() {
   const flags = {};
-  for (const name of ['shading', 'lighting', 'subdivisions', 'size', 'depth', 'tolerance-px'])
+  for (const name of ['shading', 'lighting', 'subdivisions', 'size', 'depth', 'tolerance-px', 'overlay', 'view'])
     if (params.has(name)) flags[name] = params.get(name);
   return Object.keys(flags).length ? api.applyFlags(JSON.stringify(flags)) : '';
 }
