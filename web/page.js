@@ -263,7 +263,7 @@ function refresh() {
   setIfIdle('projection', ui.orthographic ? 'orthographic' : 'perspective');
   setIfIdle('normals', scene.vertex_normals || 'averaged');
   setIfIdle('overlay', ui.overlay);
-  setIfIdle('view', viewName(ui.view));
+  setIfIdle('view-kind', viewName(ui.view));
   const object = ui.scene.objects[0];
   $('material').hidden = !object;
   if (object) {
@@ -360,7 +360,7 @@ function wireControls() {
   });
   $('auto').addEventListener('change', (e) => pressUntil(65, (u) => u.autoLevel === e.target.checked, 1));
   // E, V and I each switch their view on (from any other) and off again, as in the window.
-  $('view').addEventListener('change', (e) => {
+  $('view-kind').addEventListener('change', (e) => {
     const keyOf = {error: 69, split: 86, profile: 73};
     const shown = viewName(ui.view);
     if (e.target.value !== shown) press(keyOf[e.target.value === 'scene' ? shown : e.target.value]);

@@ -21,6 +21,11 @@ double renderBytes(const Scene& scene) {
     const double pixels = double(scene.width) * scene.height;
     // RGBA8 colour + 32-bit depth renderbuffers, the RGBA8 read-back, the Image and the PNG's RGB rows.
     double bytes = pixels * (4 + 4 + 4 + 4 + 3);
+    // The teaching views' own targets (gl/views.cpp): RGBA32F textures with 32-bit depth — the mode's and
+    // exact's renders, the error view's compare pass (its reduction adds a fifteenth), the profile's
+    // wireframe render.
+    if (scene.view.kind == ViewKind::Error) bytes += pixels * (20 + 20 + 16) * 16.0 / 15.0;
+    if (scene.view.kind == ViewKind::Profile) bytes += pixels * (20 + 20 + 20);
     std::set<int> levels;
     for (const SceneObject& object : scene.objects)
         levels.insert(object.subdivisions == kAutoSubdivisions ? kMaxSubdivisions : object.subdivisions);

@@ -239,6 +239,7 @@ void Views::draw(const Scene& scene, int width, int height, int x) {
         break;
     }
     glBindFramebuffer(GL_FRAMEBUFFER, GLuint(destination));
+    glEnable(GL_DEPTH_TEST); // as renderScene leaves it
     glDisable(GL_SCISSOR_TEST);
     glDisable(GL_BLEND);
     glBindVertexArray(0);

@@ -378,7 +378,9 @@ TEST_F(CliTest, DemoWithoutDisplayWritesShowcase) {
     EXPECT_EQ(listing(dir_), std::set<std::string>{"s.png"});
     const auto size = pngSize(readFile(out));
     ASSERT_TRUE(size) << "s.png is not a PNG";
-    EXPECT_GT(size->width, size->height) << "the showcase is 4 tiles wide and 2 (plus labels) high";
+    // 4 tiles of 256 px wide; per lighting model a row of pictures and a row of their error heatmaps.
+    EXPECT_EQ(size->width, 4 * 256);
+    EXPECT_GT(size->height, 4 * 256) << "the showcase has 4 rows of tiles (plus labels)";
 }
 
 // --- Bad input: exit code 2, a message naming the argument or JSON path and the value, no file left ----
