@@ -269,16 +269,8 @@ TEST(ExtremeScaleEdgeOn, ThinDiscEdgeOnIsFiniteWithTheReferencesArea) {
 TEST(ExtremeRadius, ScaledSceneMatchesTheUnitScene) {
     SHADELAB_REQUIRE_GL(renderer);
     auto scaled = [](double r) {
-        Scene scene = litSphereScene(128, LightType::Point);
+        Scene scene = scaledSphereScene(128, r);
         scene.objects[0].subdivisions = 6;
-        scene.objects[0].radius = r;
-        scene.eye *= r;
-        scene.target *= r;
-        scene.projection.near *= r;
-        scene.projection.far *= r;
-        Light& light = scene.lights[0];
-        light.position *= r;
-        light.attenuation = {light.attenuation.x, light.attenuation.y / r, light.attenuation.z / (r * r)};
         return scene;
     };
     for (ShadingMode mode : {ShadingMode::Phong, ShadingMode::Gouraud}) {

@@ -63,6 +63,35 @@ InteriorError interiorError(const ImageF& rendered, const ReferenceImage& refere
     return error;
 }
 
+double silhouetteShiftPx(const ImageF& image, const ReferenceImage& reference) {
+    const int w = image.width, h = image.height;
+    auto refCovered = [&](int x, int y) {
+        return x >= 0 && y >= 0 && x < w && y < h && reference.objectId[std::size_t(y) * w + x] >= 0;
+    };
+    std::size_t differing = 0, edge = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            differing += (image.pixel(x, y)[3] > 0.5f) != refCovered(x, y);
+            edge += refCovered(x, y) && !(refCovered(x - 1, y) && refCovered(x + 1, y) &&
+                                          refCovered(x, y - 1) && refCovered(x, y + 1));
+        }
+    return edge ? double(differing) / double(edge) : double(differing);
+}
+
+std::size_t interiorPixelsOver(const ImageF& rendered, const ReferenceImage& reference, double limit255) {
+    const std::vector<bool> interior = sharedInterior(rendered, reference);
+    std::size_t over = 0;
+    for (std::size_t i = 0; i < interior.size(); ++i) {
+        if (!interior[i]) continue;
+        for (int c = 0; c < 3; ++c)
+            if (std::abs(rendered.rgba[i * 4 + c] - reference.color.rgba[i * 4 + c]) * 255 > limit255) {
+                ++over;
+                break;
+            }
+    }
+    return over;
+}
+
 Scene litSphereScene(int size, LightType type) {
     Scene scene;
     scene.width = scene.height = size;
@@ -123,6 +152,19 @@ const std::vector<AnalyticCase>& analyticCases() {
          }},
     };
     return cases;
+}
+
+Scene scaledSphereScene(int size, double r) {
+    Scene scene = litSphereScene(size, LightType::Point);
+    scene.objects[0].radius = r;
+    scene.eye *= r;
+    scene.target *= r;
+    scene.projection.near *= r;
+    scene.projection.far *= r;
+    Light& light = scene.lights[0];
+    light.position *= r;
+    light.attenuation = {light.attenuation.x, light.attenuation.y / r, light.attenuation.z / (r * r)};
+    return scene;
 }
 
 std::vector<Scene> modeScenes(int size, int level) {

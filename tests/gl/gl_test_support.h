@@ -29,8 +29,19 @@ InteriorError interiorError(const ImageF& rendered, const ReferenceImage& refere
 // The pixels interiorError measures: interior to the same object in the reference and in the render.
 std::vector<bool> sharedInterior(const ImageF& rendered, const ReferenceImage& reference, int erode = 2);
 
+// Pixels whose coverage differs between the render and the reference, per pixel of the reference's
+// silhouette (covered pixels with an uncovered 4-neighbour): the mean distance in pixels between the two
+// silhouettes, for a silhouette that moved as a whole.
+double silhouetteShiftPx(const ImageF& image, const ReferenceImage& reference);
+// Interior pixels (as interiorError counts them) with some colour channel off by more than `limit255`.
+std::size_t interiorPixelsOver(const ImageF& rendered, const ReferenceImage& reference, double limit255);
+
 // A sphere scene of size×size with one light of the given type, lit from the upper right front.
 Scene litSphereScene(int size, LightType light);
+
+// litSphereScene(size, point light) with every length multiplied by r: the radius, eye, target, near, far
+// and light position, and the attenuation's b/r and c/r² so that att is unchanged. The same picture as r = 1.
+Scene scaledSphereScene(int size, double r);
 
 // Every shading mode × lighting model of a size×size sphere at `level`, under a spot and a point light: the
 // scenes two renderers are compared on pixel for pixel (backends, and the browser against native).

@@ -223,6 +223,29 @@ HeadlessRenderer& nativeGles() {
     return renderer;
 }
 
+// Every analytic scene under each lighting model, in `mode` at `level`, loaded and captured through a float
+// target (for session.imageF once the session has run).
+struct AnalyticCapture {
+    std::string label;
+    Scene scene;
+    std::size_t capture;
+};
+std::vector<AnalyticCapture> captureAnalyticCases(Session& session, ShadingMode mode, int level) {
+    std::vector<AnalyticCapture> items;
+    for (const AnalyticCase& c : analyticCases()) {
+        for (LightingModel model : kLightingModels) {
+            Scene scene = c.scene();
+            scene.shading = mode;
+            scene.lighting = model;
+            for (SceneObject& o : scene.objects) o.subdivisions = level;
+            session.load(scene);
+            items.push_back(
+                {std::string(c.name) + "/" + std::string(toString(model)), scene, session.capture("float")});
+        }
+    }
+    return items;
+}
+
 // ---- the tests -----------------------------------------------------------------------------------
 
 // The bar for every API: Phong at level 8 against the exact ray-cast, interior mean < 0.5/255 and
@@ -230,42 +253,17 @@ HeadlessRenderer& nativeGles() {
 TEST_F(Browser, PhongLevel8MatchesTheAnalyticReference) {
     Session session;
     session.open();
-    struct Item {
-        std::string label;
-        Scene scene;
-        std::size_t capture;
-    };
-    std::vector<Item> items;
-    for (const AnalyticCase& c : analyticCases()) {
-        for (LightingModel model : kLightingModels) {
-            Scene scene = c.scene();
-            scene.shading = ShadingMode::Phong;
-            scene.lighting = model;
-            for (SceneObject& o : scene.objects) o.subdivisions = 8;
-            session.load(scene);
-            items.push_back(
-                {std::string(c.name) + "/" + std::string(toString(model)), scene, session.capture("float")});
-        }
-    }
+    const std::vector<AnalyticCapture> items = captureAnalyticCases(session, ShadingMode::Phong, 8);
     const std::size_t console = session.console();
     if (!session.run(dir_)) return;
-    for (const Item& item : items) {
+    for (const AnalyticCapture& item : items) {
         const ImageF rendered = session.imageF(item.capture);
         const ReferenceImage reference = renderReference(item.scene);
         const InteriorError e = interiorError(rendered, reference);
         // A spot light's cone edge is a step in the lighting itself: a pixel centre within float rounding
         // of the cutoff is lit in double and unlit in float, or the other way round. SwiftShader lands a few
         // such pixels on the other side (llvmpipe, by chance, none); they are counted, and only for spots.
-        std::size_t over = 0;
-        const std::vector<bool> interior = sharedInterior(rendered, reference);
-        for (std::size_t i = 0; i < interior.size(); ++i) {
-            if (!interior[i]) continue;
-            for (int c = 0; c < 3; ++c)
-                if (std::abs(rendered.rgba[i * 4 + c] - reference.color.rgba[i * 4 + c]) * 255 > 4) {
-                    ++over;
-                    break;
-                }
-        }
+        const std::size_t over = interiorPixelsOver(rendered, reference, 4);
         const bool hardEdge = std::any_of(item.scene.lights.begin(), item.scene.lights.end(),
                                           [](const Light& l) { return l.type == LightType::Spot; });
         std::printf("webgl2 %s: interior mean %.3f/255, max %.3f/255 over %zu pixels; %zu over 4/255\n",
@@ -289,50 +287,17 @@ TEST_F(Browser, PhongLevel8MatchesTheAnalyticReference) {
 TEST_F(Browser, ExactShadingMatchesTheAnalyticReference) {
     Session session;
     session.open();
-    struct Item {
-        std::string label;
-        Scene scene;
-        std::size_t capture;
-    };
-    std::vector<Item> items;
-    for (const AnalyticCase& c : analyticCases()) {
-        for (LightingModel model : kLightingModels) {
-            Scene scene = c.scene();
-            scene.shading = ShadingMode::Exact;
-            scene.lighting = model;
-            session.load(scene);
-            items.push_back(
-                {std::string(c.name) + "/" + std::string(toString(model)), scene, session.capture("float")});
-        }
-    }
+    const std::vector<AnalyticCapture> items = captureAnalyticCases(session, ShadingMode::Exact, 8);
     const std::size_t console = session.console();
     if (!session.run(dir_)) return;
-    for (const Item& item : items) {
+    for (const AnalyticCapture& item : items) {
         const ImageF rendered = session.imageF(item.capture);
         const ReferenceImage reference = renderReference(item.scene);
         const InteriorError e = interiorError(rendered, reference);
-        std::size_t over = 0, coverage = 0, edge = 0;
-        const std::vector<bool> interior = sharedInterior(rendered, reference);
-        const int w = rendered.width, h = rendered.height;
-        auto covered = [&](int x, int y) {
-            return x >= 0 && y >= 0 && x < w && y < h && reference.objectId[std::size_t(y) * w + x] >= 0;
-        };
-        for (int y = 0; y < h; ++y)
-            for (int x = 0; x < w; ++x) {
-                const std::size_t i = std::size_t(y) * w + x;
-                coverage += (rendered.rgba[i * 4 + 3] > 0.5f) != covered(x, y);
-                edge += covered(x, y) &&
-                        !(covered(x - 1, y) && covered(x + 1, y) && covered(x, y - 1) && covered(x, y + 1));
-                if (!interior[i]) continue;
-                for (int c = 0; c < 3; ++c)
-                    if (std::abs(rendered.rgba[i * 4 + c] - reference.color.rgba[i * 4 + c]) * 255 > 2) {
-                        ++over;
-                        break;
-                    }
-            }
+        const std::size_t over = interiorPixelsOver(rendered, reference, 2);
         const bool hardEdge = std::any_of(item.scene.lights.begin(), item.scene.lights.end(),
                                           [](const Light& l) { return l.type == LightType::Spot; });
-        const double shift = double(coverage) / double(std::max<std::size_t>(edge, 1));
+        const double shift = silhouetteShiftPx(rendered, reference);
         std::printf("webgl2 exact %s: interior mean %.4f/255, max %.3f/255 over %zu pixels; %zu over 2/255; "
                     "silhouette %.4f px\n",
                     item.label.c_str(), e.mean, e.max, e.pixels, over, shift);
