@@ -373,6 +373,7 @@ std::vector<ReportRow> measureReport(HeadlessContext& context, const Scene& scen
 
     for (std::size_t c = 0; c < perMode; ++c) {
         Scene base = scene;
+        base.view = View{}; // the report times and measures the shading itself, not a teaching view of it
         for (SceneObject& object : base.objects) object.subdivisions = levelConfigs[c];
         std::map<int, BuiltLevel> built; // the distinct levels the objects use: what gets uploaded
         for (const SceneObject& object : base.objects) {

@@ -288,6 +288,24 @@ TEST(Report, ErrorMeasuresAgreeWithTheAnalyticTests) {
     EXPECT_NEAR(same.ssim, 1, 1e-12);
 }
 
+// A scene saved from the demo in a teaching view (E, V, I) is reported as the plain scene: the view is how
+// the picture is shown, not what the report times and measures.
+TEST(Report, ASavedViewDoesNotChangeTheRows) {
+    REQUIRE_REPORT_CONTEXT(context);
+    ReportOptions o = smallOptions();
+    o.minLevel = o.maxLevel = 3;
+    o.includeAuto = false;
+    Scene scene = smallScene();
+    const std::vector<ReportRow> plain = app::measureReport(*context, scene, o);
+    scene.view.kind = ViewKind::Error;
+    const std::vector<ReportRow> viewed = app::measureReport(*context, scene, o);
+    ASSERT_EQ(plain.size(), viewed.size());
+    for (std::size_t i = 0; i < plain.size(); ++i) {
+        EXPECT_EQ(viewed[i].interiorMeanError, plain[i].interiorMeanError);
+        EXPECT_EQ(viewed[i].interiorPixels, plain[i].interiorPixels);
+    }
+}
+
 TEST(Report, LevelsOption) {
     ReportOptions o;
     app::parseLevels("2..6", o);
