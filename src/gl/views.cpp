@@ -9,12 +9,12 @@
 
 #include <glad/gl.h>
 
-#include "gl/shader_sources.h"
 #include "shadelab/errors.h"
 #include "shadelab/gl/loader.h"
 #include "shadelab/gl/program.h"
 #include "shadelab/gl/render_target.h"
 #include "shadelab/gl/renderer.h"
+#include "shadelab/gl/screen_pass.h"
 #include "shadelab/image.h"
 #include "shadelab/subdivision.h"
 
@@ -70,99 +70,6 @@ std::string formatScale(double value) {
     return text;
 }
 
-std::string_view shaderSource(const char* name) {
-    const auto text = embeddedShader(name);
-    if (!text) throw RuntimeError(std::string("shader ") + name + " is not embedded in the binary");
-    return *text;
-}
-
-Id genTexture() {
-    Id id = 0;
-    glGenTextures(1, &id);
-    return id;
-}
-
-// A framebuffer with a texture to read back or sample: float colour (RGBA32F) and, for scene renders, depth.
-struct TextureTarget {
-    int width = 0, height = 0;
-    bool depthAttached = false;
-    DepthFormat depthFormat = DepthFormat::Depth24;
-    Framebuffer fbo;
-    Texture color;
-    Renderbuffer depth;
-
-    // (Re)allocates when the size or the depth format changed.
-    void fit(int w, int h, bool withDepth, DepthFormat format) {
-        if (fbo && w == width && h == height && withDepth == depthAttached && format == depthFormat) return;
-        width = w;
-        height = h;
-        depthAttached = withDepth;
-        depthFormat = format;
-        Id id = 0;
-        glGenFramebuffers(1, &id);
-        fbo = Framebuffer(id);
-        color = Texture(genTexture());
-        glBindTexture(GL_TEXTURE_2D, color.get());
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, w, h, 0, GL_RGBA, GL_FLOAT, nullptr);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        glBindTexture(GL_TEXTURE_2D, 0);
-        glBindFramebuffer(GL_FRAMEBUFFER, fbo.get());
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color.get(), 0);
-        depth.reset();
-        if (withDepth) {
-            Id rb = 0;
-            glGenRenderbuffers(1, &rb);
-            depth = Renderbuffer(rb);
-            glBindRenderbuffer(GL_RENDERBUFFER, rb);
-            glRenderbufferStorage(
-                GL_RENDERBUFFER,
-                format == DepthFormat::Depth24 ? GL_DEPTH_COMPONENT24 : GL_DEPTH_COMPONENT32F, w, h);
-            glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, rb);
-        }
-        const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-        if (status != GL_FRAMEBUFFER_COMPLETE)
-            throw RuntimeError("a view's float target " + std::to_string(w) + "x" + std::to_string(h) +
-                               " is incomplete (status 0x" +
-                               [&] {
-                                   char hex[16];
-                                   std::snprintf(hex, sizeof hex, "%x", status);
-                                   return std::string(hex);
-                               }() +
-                               ")");
-    }
-    void bind() const { glBindFramebuffer(GL_FRAMEBUFFER, fbo.get()); }
-
-    // Row `y` (from the bottom) as RGBA floats.
-    std::vector<float> readRow(int y) const {
-        std::vector<float> row(std::size_t(width) * 4);
-        bind();
-        glReadPixels(0, y, width, 1, GL_RGBA, GL_FLOAT, row.data());
-        return row;
-    }
-};
-
-struct QuadProgram {
-    Program program;
-    GLint ndcRect = -1;
-    explicit QuadProgram(const char* fragment)
-        : program(buildProgramFromBodies(fragment, shaderSource("quad.vert.glsl"), shaderSource(fragment))) {
-        ndcRect = location("uNdcRect");
-    }
-    GLint location(const char* name) const { return glGetUniformLocation(program.get(), name); }
-    // Draws the rectangle [x0, x1] × [y0, y1] of the current viewport, in pixels from its lower left.
-    void draw(double x0, double y0, double x1, double y1, int viewportWidth, int viewportHeight) const {
-        glUniform4f(ndcRect, float(2 * x0 / viewportWidth - 1), float(2 * y0 / viewportHeight - 1),
-                    float(2 * x1 / viewportWidth - 1), float(2 * y1 / viewportHeight - 1));
-        glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
-    }
-};
-
-void bindTexture(int unit, const Texture& texture) {
-    glActiveTexture(GLenum(GL_TEXTURE0 + unit));
-    glBindTexture(GL_TEXTURE_2D, texture.get());
-}
-
 // A straight line of pixels from (x0, y0) to (x1, y1) into the image (rows from the top).
 void drawLine(Image& image, int x0, int y0, int x1, int y1, glm::u8vec4 color) {
     const int steps = std::max(std::abs(x1 - x0), std::abs(y1 - y0));
@@ -176,43 +83,13 @@ void drawLine(Image& image, int x0, int y0, int x1, int y1, glm::u8vec4 color) {
 } // namespace
 
 struct Views::Targets {
-    TextureTarget mode, exact, edges, error;
-    std::vector<TextureTarget> reduce;
+    FloatTarget mode, exact, edges, error;
+    std::vector<FloatTarget> reduce;
 };
 
 struct Views::Programs {
-    QuadProgram error{"error.frag.glsl"}, reduce{"reduce.frag.glsl"}, heatmap{"heatmap.frag.glsl"},
-        sprite{"sprite.frag.glsl"};
-    VertexArray empty;
-    Texture spriteTexture;
-    Programs() {
-        Id id = 0;
-        glGenVertexArrays(1, &id);
-        empty = VertexArray(id);
-        spriteTexture = Texture(genTexture());
-    }
-
-    // Draws `image` with its top left corner at (left, top) of the viewport (pixels; rows from the top),
-    // blended by its alpha.
-    void drawImage(const Image& image, int left, int top, int viewportX, int viewportWidth,
-                   int viewportHeight) const {
-        if (image.width <= 0 || image.height <= 0) return;
-        glBindTexture(GL_TEXTURE_2D, spriteTexture.get());
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
-                     image.rgba.data());
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        glUseProgram(sprite.program.get());
-        glUniform1i(sprite.location("uImage"), 0);
-        const int bottom = viewportHeight - top - image.height;
-        glUniform2f(sprite.location("uOrigin"), float(viewportX + left), float(bottom));
-        glEnable(GL_BLEND);
-        // Colour blended by alpha; the picture's alpha (coverage) kept where the label is translucent.
-        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
-        sprite.draw(left, bottom, left + image.width, bottom + image.height, viewportWidth, viewportHeight);
-        glDisable(GL_BLEND);
-    }
+    ScreenPass error{"error.frag.glsl"}, reduce{"reduce.frag.glsl"}, heatmap{"heatmap.frag.glsl"};
+    ImagePass images;
 };
 
 Views::Views(Renderer& renderer)
@@ -284,7 +161,7 @@ void Views::drawError(const Scene& scene, int width, int height, int x, unsigned
     Targets& t = *targets_;
     const Programs& p = *programs_;
     glDisable(GL_DEPTH_TEST);
-    glBindVertexArray(p.empty.get());
+    glBindVertexArray(p.images.emptyVertexArray().get());
 
     // Compare pass: the per-pixel error and the interior.
     t.error.fit(width, height, false, DepthFormat::Depth24);
@@ -303,9 +180,9 @@ void Views::drawError(const Scene& scene, int width, int height, int x, unsigned
     std::size_t steps = 0;
     for (int w = width, h = height; w > 1 || h > 1; w = (w + 3) / 4, h = (h + 3) / 4) ++steps;
     if (t.reduce.size() < steps) t.reduce.resize(steps); // before taking pointers into it
-    const TextureTarget* input = &t.error;
+    const FloatTarget* input = &t.error;
     for (std::size_t step = 0; step < steps; ++step) {
-        TextureTarget& output = t.reduce[step];
+        FloatTarget& output = t.reduce[step];
         output.fit((input->width + 3) / 4, (input->height + 3) / 4, false, DepthFormat::Depth24);
         output.bind();
         glViewport(0, 0, output.width, output.height);
@@ -345,15 +222,15 @@ void Views::drawError(const Scene& scene, int width, int height, int x, unsigned
         p.heatmap.draw(barLeft, height - barBottom, barLeft + barWidth, height - barTop, width, height);
         const Image top = labelImage({formatScale(figures_.scale) + "/255"}, scale);
         const Image bottom = labelImage({"0"}, scale);
-        p.drawImage(top, std::max(0, barLeft + barWidth - top.width), barTop - top.height - scale, x, width,
-                    height);
-        p.drawImage(bottom, std::max(0, barLeft + barWidth - bottom.width), barBottom + scale, x, width,
-                    height);
+        p.images.draw(top, std::max(0, barLeft + barWidth - top.width), barTop - top.height - scale, x, width,
+                      height);
+        p.images.draw(bottom, std::max(0, barLeft + barWidth - bottom.width), barBottom + scale, x, width,
+                      height);
     }
     std::string mode = upper(std::string(toString(scene.shading)));
     if (scene.shading != ShadingMode::Exact && !scene.objects.empty())
         mode += " L" + std::to_string(subdivisionLevel(scene, scene.objects[0]));
-    p.drawImage(
+    p.images.draw(
         labelImage({"ERROR: " + mode + " - EXACT", "MEAN " + formatError(figures_.interiorMean) + "  MAX " +
                                                        formatError(figures_.interiorMax) + " (1/255)"},
                    scale),
@@ -398,13 +275,13 @@ void Views::drawSplit(const Scene& scene, int width, int height, int x) {
     glDisable(GL_SCISSOR_TEST);
     glDisable(GL_DEPTH_TEST);
     glViewport(x, 0, width, height);
-    glBindVertexArray(programs_->empty.get());
+    glBindVertexArray(programs_->images.emptyVertexArray().get());
     const int scale = textScale(width, height);
     const Image left = labelImage({sideLabel(scene, scene.view.left)}, scale);
     const Image right = labelImage({sideLabel(scene, scene.view.right)}, scale);
-    programs_->drawImage(left, std::max(0, divider - left.width - 4 * scale), 4 * scale, x, width, height);
-    programs_->drawImage(right, std::min(divider + 4 * scale, std::max(0, width - right.width)), 4 * scale, x,
-                         width, height);
+    programs_->images.draw(left, std::max(0, divider - left.width - 4 * scale), 4 * scale, x, width, height);
+    programs_->images.draw(right, std::min(divider + 4 * scale, std::max(0, width - right.width)), 4 * scale,
+                           x, width, height);
     glEnable(GL_DEPTH_TEST);
 }
 
@@ -455,7 +332,7 @@ void Views::drawProfile(const Scene& scene, int width, int height, int x, unsign
     renderer_.renderScene(mode, width, height, x);
     glDisable(GL_DEPTH_TEST);
     glViewport(x, 0, width, height);
-    glBindVertexArray(programs_->empty.get());
+    glBindVertexArray(programs_->images.emptyVertexArray().get());
     const int scale = textScale(width, height);
     const int plotHeight = std::max(height / 3, 24);
     const int plotTop = row < height / 2 ? height - plotHeight : 0;
@@ -479,11 +356,11 @@ void Views::drawProfile(const Scene& scene, int width, int height, int x, unsign
         drawText(plot, textX, margin, word, scale, colour);
         textX += textWidth(word + "  ", scale);
     }
-    programs_->drawImage(plot, 0, plotTop, x, width, height);
+    programs_->images.draw(plot, 0, plotTop, x, width, height);
     Image marker(width, 1);
     for (int i = 0; i < width; ++i)
         fillRect(marker, i, 0, 1, 1, (i / 4) % 2 ? glm::u8vec4(255, 230, 0, 255) : glm::u8vec4(0, 0, 0, 0));
-    programs_->drawImage(marker, 0, row, x, width, height);
+    programs_->images.draw(marker, 0, row, x, width, height);
     glEnable(GL_DEPTH_TEST);
 }
 

@@ -1,0 +1,60 @@
+// What the teaching views (gl/views.h) draw with besides the Renderer: float targets to render a scene
+// into and read or sample, full-screen (or any rectangle) fragment passes, and CPU-made images (labels,
+// plots) drawn into the picture. Each owns its GL objects (gl/handles.h).
+#pragma once
+
+#include <vector>
+
+#include "shadelab/gl/handles.h"
+#include "shadelab/gl/render_target.h"
+#include "shadelab/image.h"
+
+namespace shadelab::gl {
+
+// A framebuffer with an RGBA32F texture to read back or sample, and for scene renders a depth attachment.
+struct FloatTarget {
+    int width = 0, height = 0;
+    bool depthAttached = false;
+    DepthFormat depthFormat = DepthFormat::Depth24;
+    Framebuffer fbo;
+    Texture color;
+    Renderbuffer depth;
+
+    // (Re)allocates when the size or the depth attachment changed. Throws RuntimeError if incomplete.
+    void fit(int w, int h, bool withDepth, DepthFormat format);
+    void bind() const;
+    std::vector<float> readRow(int y) const; // row y (from the bottom) as RGBA floats
+};
+
+// A fragment shader (shaders/<fragment>, no defines) over a rectangle from shaders/quad.vert.glsl.
+struct ScreenPass {
+    explicit ScreenPass(const char* fragment);
+    int location(const char* name) const;
+    // The rectangle [x0, x1] × [y0, y1] of the current viewport, in pixels from its lower left; needs a
+    // vertex array bound (none of its attributes are read).
+    void draw(double x0, double y0, double x1, double y1, int viewportWidth, int viewportHeight) const;
+
+    Program program;
+    int ndcRect = -1;
+};
+
+void bindTexture(int unit, const Texture& texture);
+
+// Draws RGBA8 images made on the CPU into the picture, blended by their alpha (the picture's own alpha,
+// its coverage, is kept).
+class ImagePass {
+public:
+    ImagePass();
+    // `image` with its top left corner at (left, top) of the viewport (x, 0, width, height), rows from the
+    // top.
+    void draw(const Image& image, int left, int top, int viewportX, int viewportWidth,
+              int viewportHeight) const;
+    const VertexArray& emptyVertexArray() const { return empty_; }
+
+private:
+    ScreenPass sprite_{"sprite.frag.glsl"};
+    VertexArray empty_;
+    Texture texture_;
+};
+
+} // namespace shadelab::gl
