@@ -1,9 +1,9 @@
 // The demo window end to end, in a real X window: each test starts its own Xvfb and `shadelab` on a fixed
 // scene, types keys with xdotool, and checks three things agree for every state a key reaches:
 //   - the title and the scene JSON that S saves say what the key should have done;
-//   - the window, captured with xwd, shows what `shadelab render` gives for that JSON;
+//   - the window, captured with libX11's XGetImage, shows what `shadelab render` gives for that JSON;
 //   - the PNG that S saves is that same picture.
-// Esc must exit 0 with zero KHR_debug messages. Without Xvfb, xdotool or xwd the tests skip with the
+// Esc must exit 0 with zero KHR_debug messages. Without Xvfb or xdotool the tests skip with the
 // reason, except in CI (CI set), where that fails.
 #include <sys/resource.h>
 

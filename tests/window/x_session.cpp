@@ -5,11 +5,15 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdint>
 #include <cstring>
+#include <memory>
 #include <stdexcept>
 #include <thread>
 
-#include "window/xwd.h"
+// Last: Xlib defines macros (None, Status, True, False) that would rewrite names in the headers above.
+#include <X11/Xlib.h>
+#include <X11/Xutil.h>
 
 namespace shadelab::window_test {
 namespace {
@@ -63,7 +67,6 @@ XTools XTools::find() {
     };
     locate("Xvfb", "xvfb", tools.xvfb);
     locate("xdotool", "xdotool", tools.xdotool);
-    locate("xwd", "x11-apps", tools.xwd);
     return tools;
 }
 
@@ -179,10 +182,69 @@ std::string XWindow::waitForTitle(const std::string& prefix) const {
                              "; it is \"" + last + "\"");
 }
 
+namespace {
+
+// X reports a failed request (a window gone or not yet viewable) to an error handler whose default ends
+// the process; this one records the error code for the request that caused it.
+int lastXError = 0;
+int recordXError(::Display*, XErrorEvent* event) {
+    lastXError = event->error_code;
+    return 0;
+}
+
+// Where `mask` (a visual's channel mask) keeps its 8 bits.
+int shiftOf(unsigned long mask) {
+    int shift = 0;
+    while (mask && !(mask & 1)) {
+        mask >>= 1;
+        ++shift;
+    }
+    return shift;
+}
+
+} // namespace
+
+// libX11's XGetImage, what the xwd tool itself calls: the window's pixels as a ZPixmap, each pixel's
+// channels picked out by the visual's masks. A 24-bit TrueColor window (what Xvfb -screen …x24 gives) is
+// the only kind decoded; anything else is an error naming what it got.
 Image XWindow::capture() const {
-    const fs::path file = scratch_ / ("capture-" + id_ + ".xwd");
-    run({tools_.xwd.string(), "-id", id_, "-silent", "-out", file.string()});
-    return readXwd(file);
+    std::string name;
+    for (const std::string& entry : env_)
+        if (entry.starts_with("DISPLAY=")) name = entry.substr(8);
+    ::Display* display = XOpenDisplay(name.c_str());
+    if (!display) throw std::runtime_error("XOpenDisplay(\"" + name + "\") failed");
+    const std::unique_ptr<::Display, int (*)(::Display*)> closer(display, XCloseDisplay);
+    const auto previous = XSetErrorHandler(recordXError);
+    lastXError = 0;
+    const ::Window window = ::Window(std::stoul(id_));
+    XWindowAttributes attributes{};
+    XImage* image = nullptr;
+    if (XGetWindowAttributes(display, window, &attributes))
+        image = XGetImage(display, window, 0, 0, unsigned(attributes.width), unsigned(attributes.height),
+                          AllPlanes, ZPixmap);
+    XSync(display, False);
+    XSetErrorHandler(previous);
+    if (!image || lastXError)
+        throw std::runtime_error("XGetImage of window " + id_ + " failed (X error " +
+                                 std::to_string(lastXError) + ")");
+    // XDestroyImage is a macro calling the image's own destroy function.
+    const std::unique_ptr<XImage, int (*)(XImage*)> destroyer(image,
+                                                              [](XImage* i) { return XDestroyImage(i); });
+    if (image->depth != 24 || image->bits_per_pixel != 32 || attributes.visual->c_class != TrueColor)
+        throw std::runtime_error("window " + id_ +
+                                 ": expected a 24-bit TrueColor window at 32 bits per pixel, got depth " +
+                                 std::to_string(image->depth) + " at " +
+                                 std::to_string(image->bits_per_pixel) + " bits per pixel");
+    const unsigned long masks[3] = {image->red_mask, image->green_mask, image->blue_mask};
+    Image out(image->width, image->height);
+    for (int y = 0; y < image->height; ++y)
+        for (int x = 0; x < image->width; ++x) {
+            const unsigned long pixel = XGetPixel(image, x, y);
+            std::uint8_t* rgba = out.pixel(x, y);
+            for (int c = 0; c < 3; ++c) rgba[c] = std::uint8_t((pixel & masks[c]) >> shiftOf(masks[c]));
+            rgba[3] = 255;
+        }
+    return out;
 }
 
 } // namespace shadelab::window_test

@@ -1,7 +1,7 @@
 // A private X server for one test and the X tools that drive a window in it: Xvfb on a display number it
-// picks itself (-displayfd), xdotool to find, focus and type into a window and read its title, xwd to
-// capture it. DISPLAY is set only in the children's environment. Every wait is bounded and says what it
-// waited for when it gives up.
+// picks itself (-displayfd), xdotool to find, focus and type into a window and read its title, and libX11's
+// XGetImage to capture it. DISPLAY is set only in the children's environment. Every wait is bounded and says
+// what it waited for when it gives up.
 #pragma once
 
 #include <filesystem>
@@ -22,7 +22,7 @@ inline const std::string kWaitText = std::to_string(int(kWaitLimit.count())) + "
 
 // The programs the window tests need, found on PATH; `missing` lists those that are not.
 struct XTools {
-    fs::path xvfb, xdotool, xwd;
+    fs::path xvfb, xdotool;
     std::vector<std::string> missing;
     static XTools find();
 };
@@ -39,7 +39,7 @@ private:
     std::string display_;
 };
 
-// One top-level window of the X server, driven with xdotool and captured with xwd.
+// One top-level window of the X server, driven with xdotool and captured with XGetImage.
 class XWindow {
 public:
     // Waits (bounded) for a window whose name matches `nameRegex`. `diedBecause` returns why the client
@@ -60,7 +60,7 @@ public:
     std::string title() const;
     // Polls the title until it starts with `prefix`; throws with the last title after kWaitLimit.
     std::string waitForTitle(const std::string& prefix) const;
-    Image capture() const; // xwd -id W -silent, parsed
+    Image capture() const; // XGetImage of the window, as RGBA rows top first
 
 private:
     XWindow(const XTools& tools, std::vector<std::string> env, fs::path scratch, std::string id);
