@@ -10,6 +10,7 @@ packages=(
   # libraries, all found by find_package / pkg-config
   libglfw3-dev libglm-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libosmesa6-dev libpng-dev
   nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev python3-glad libimgui-dev libstb-dev
+  fonts-dejavu-core
   # the demo under a virtual display, and driving it in tests
   xvfb xauth xdotool libx11-dev
   # CI's checks: formatting, static analysis, fuzzing (clang's libFuzzer), the report's plot

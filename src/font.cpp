@@ -1,136 +1,116 @@
-// A built-in 5×7 bitmap font for labelling report and showcase images, so no font file or library is needed.
+// Labels on the showcase and the teaching views, through a real font rasterizer: stb_truetype (Debian's
+// libstb-dev) and DejaVu Sans Mono Bold (fonts-dejavu-core), embedded in the binary at build time
+// (cmake/embed_files.cmake), so nothing depends on the working directory and the browser build has it too.
 #include <algorithm>
-#include <array>
 #include <climits>
 #include <cstdint>
+#include <string>
 #include <string_view>
+#include <vector>
 
+#define STB_TRUETYPE_IMPLEMENTATION
+#define STBTT_STATIC
+#include <stb/stb_truetype.h>
+
+#include "font_data.h"
+#include "shadelab/errors.h"
 #include "shadelab/image.h"
 
 namespace shadelab {
-
 namespace {
 
-constexpr int kGlyphWidth = 5, kGlyphHeight = 7;
-constexpr int kAdvance = kGlyphWidth + 1; // one blank column between glyphs
+constexpr const char* kFontFile = "DejaVuSansMono-Bold.ttf";
 
-// Rows top to bottom; bit 4 is the leftmost column.
-struct Glyph {
-    char32_t code;
-    std::array<std::uint8_t, kGlyphHeight> rows;
-};
-
-constexpr char32_t kTimes = U'\u00D7';
-
-constexpr Glyph kGlyphs[] = {
-    {U'A', {0b01110, 0b10001, 0b10001, 0b10001, 0b11111, 0b10001, 0b10001}},
-    {U'B', {0b11110, 0b10001, 0b10001, 0b11110, 0b10001, 0b10001, 0b11110}},
-    {U'C', {0b01110, 0b10001, 0b10000, 0b10000, 0b10000, 0b10001, 0b01110}},
-    {U'D', {0b11100, 0b10010, 0b10001, 0b10001, 0b10001, 0b10010, 0b11100}},
-    {U'E', {0b11111, 0b10000, 0b10000, 0b11110, 0b10000, 0b10000, 0b11111}},
-    {U'F', {0b11111, 0b10000, 0b10000, 0b11110, 0b10000, 0b10000, 0b10000}},
-    {U'G', {0b01110, 0b10001, 0b10000, 0b10111, 0b10001, 0b10001, 0b01111}},
-    {U'H', {0b10001, 0b10001, 0b10001, 0b11111, 0b10001, 0b10001, 0b10001}},
-    {U'I', {0b01110, 0b00100, 0b00100, 0b00100, 0b00100, 0b00100, 0b01110}},
-    {U'J', {0b00111, 0b00010, 0b00010, 0b00010, 0b00010, 0b10010, 0b01100}},
-    {U'K', {0b10001, 0b10010, 0b10100, 0b11000, 0b10100, 0b10010, 0b10001}},
-    {U'L', {0b10000, 0b10000, 0b10000, 0b10000, 0b10000, 0b10000, 0b11111}},
-    {U'M', {0b10001, 0b11011, 0b10101, 0b10101, 0b10001, 0b10001, 0b10001}},
-    {U'N', {0b10001, 0b10001, 0b11001, 0b10101, 0b10011, 0b10001, 0b10001}},
-    {U'O', {0b01110, 0b10001, 0b10001, 0b10001, 0b10001, 0b10001, 0b01110}},
-    {U'P', {0b11110, 0b10001, 0b10001, 0b11110, 0b10000, 0b10000, 0b10000}},
-    {U'Q', {0b01110, 0b10001, 0b10001, 0b10001, 0b10101, 0b10010, 0b01101}},
-    {U'R', {0b11110, 0b10001, 0b10001, 0b11110, 0b10100, 0b10010, 0b10001}},
-    {U'S', {0b01111, 0b10000, 0b10000, 0b01110, 0b00001, 0b00001, 0b11110}},
-    {U'T', {0b11111, 0b00100, 0b00100, 0b00100, 0b00100, 0b00100, 0b00100}},
-    {U'U', {0b10001, 0b10001, 0b10001, 0b10001, 0b10001, 0b10001, 0b01110}},
-    {U'V', {0b10001, 0b10001, 0b10001, 0b10001, 0b10001, 0b01010, 0b00100}},
-    {U'W', {0b10001, 0b10001, 0b10001, 0b10101, 0b10101, 0b10101, 0b01010}},
-    {U'X', {0b10001, 0b10001, 0b01010, 0b00100, 0b01010, 0b10001, 0b10001}},
-    {U'Y', {0b10001, 0b10001, 0b10001, 0b01010, 0b00100, 0b00100, 0b00100}},
-    {U'Z', {0b11111, 0b00001, 0b00010, 0b00100, 0b01000, 0b10000, 0b11111}},
-    {U'0', {0b01110, 0b10001, 0b10011, 0b10101, 0b11001, 0b10001, 0b01110}},
-    {U'1', {0b00100, 0b01100, 0b00100, 0b00100, 0b00100, 0b00100, 0b01110}},
-    {U'2', {0b01110, 0b10001, 0b00001, 0b00010, 0b00100, 0b01000, 0b11111}},
-    {U'3', {0b11111, 0b00010, 0b00100, 0b00010, 0b00001, 0b10001, 0b01110}},
-    {U'4', {0b00010, 0b00110, 0b01010, 0b10010, 0b11111, 0b00010, 0b00010}},
-    {U'5', {0b11111, 0b10000, 0b11110, 0b00001, 0b00001, 0b10001, 0b01110}},
-    {U'6', {0b00110, 0b01000, 0b10000, 0b11110, 0b10001, 0b10001, 0b01110}},
-    {U'7', {0b11111, 0b00001, 0b00010, 0b00100, 0b01000, 0b01000, 0b01000}},
-    {U'8', {0b01110, 0b10001, 0b10001, 0b01110, 0b10001, 0b10001, 0b01110}},
-    {U'9', {0b01110, 0b10001, 0b10001, 0b01111, 0b00001, 0b00010, 0b01100}},
-    {U' ', {0b00000, 0b00000, 0b00000, 0b00000, 0b00000, 0b00000, 0b00000}},
-    {U'-', {0b00000, 0b00000, 0b00000, 0b11111, 0b00000, 0b00000, 0b00000}},
-    {U'+', {0b00000, 0b00100, 0b00100, 0b11111, 0b00100, 0b00100, 0b00000}},
-    {U'/', {0b00000, 0b00001, 0b00010, 0b00100, 0b01000, 0b10000, 0b00000}},
-    {U'.', {0b00000, 0b00000, 0b00000, 0b00000, 0b00000, 0b01100, 0b01100}},
-    {U':', {0b00000, 0b01100, 0b01100, 0b00000, 0b01100, 0b01100, 0b00000}},
-    {U'(', {0b00010, 0b00100, 0b01000, 0b01000, 0b01000, 0b00100, 0b00010}},
-    {U')', {0b01000, 0b00100, 0b00010, 0b00010, 0b00010, 0b00100, 0b01000}},
-    {kTimes, {0b00000, 0b10001, 0b01010, 0b00100, 0b01010, 0b10001, 0b00000}},
-};
-
-// Drawn for any character the table lacks, so a missing glyph is visible rather than silently blank.
-constexpr Glyph kUnknown = {0, {0b11111, 0b10001, 0b10001, 0b10001, 0b10001, 0b10001, 0b11111}};
-
-const Glyph& findGlyph(char32_t code) {
-    if (code >= U'a' && code <= U'z') code -= U'a' - U'A';
-    const auto* glyph = std::find_if(std::begin(kGlyphs), std::end(kGlyphs),
-                                     [code](const Glyph& g) { return g.code == code; });
-    return glyph == std::end(kGlyphs) ? kUnknown : *glyph;
+// The font, parsed once. Throws if the embedded file is missing or unreadable (a build problem).
+const stbtt_fontinfo& font() {
+    static const stbtt_fontinfo info = [] {
+        const auto data = embeddedFont(kFontFile);
+        stbtt_fontinfo parsed{};
+        if (!data || !stbtt_InitFont(&parsed, reinterpret_cast<const unsigned char*>(data->data()),
+                                     stbtt_GetFontOffsetForIndex(
+                                         reinterpret_cast<const unsigned char*>(data->data()), 0)))
+            throw RuntimeError(std::string("the embedded font ") + kFontFile + " cannot be read");
+        return parsed;
+    }();
+    return info;
 }
 
-// Decodes the UTF-8 character at text[i] and advances i past it. A malformed sequence yields one
-// unknown character, so a stray multi-byte character draws one box rather than one per byte.
+float pixelScale(int scale) {
+    return stbtt_ScaleForPixelHeight(&font(), float(textLineHeight(scale)));
+}
+
+// Decodes the UTF-8 character at text[i] and advances i past it; a malformed sequence is U+FFFD.
 char32_t nextChar(std::string_view text, std::size_t& i) {
     const auto lead = static_cast<unsigned char>(text[i++]);
     if (lead < 0x80) return lead;
     const int continuations = lead >= 0xF0 ? 3 : lead >= 0xE0 ? 2 : lead >= 0xC0 ? 1 : 0;
-    if (continuations == 0) return kUnknown.code;
+    if (continuations == 0) return U'\uFFFD';
     char32_t code = lead & (0x3F >> continuations);
     for (int n = 0; n < continuations; ++n) {
-        if (i == text.size() || (static_cast<unsigned char>(text[i]) & 0xC0) != 0x80) return kUnknown.code;
+        if (i == text.size() || (static_cast<unsigned char>(text[i]) & 0xC0) != 0x80) return U'\uFFFD';
         code = (code << 6) | (static_cast<unsigned char>(text[i++]) & 0x3F);
     }
     return code;
 }
 
-std::size_t countChars(std::string_view text) {
-    std::size_t count = 0;
-    for (std::size_t i = 0; i < text.size(); ++count) nextChar(text, i);
-    return count;
-}
-
-// Positions are 64-bit so a huge scale or a far-off origin cannot overflow; only font pixels that touch
-// the canvas reach fillRect, which clips the rest.
-void drawGlyph(Image& canvas, long long x, long long y, const Glyph& glyph, int scale, glm::u8vec4 color) {
-    for (int row = 0; row < kGlyphHeight; ++row) {
-        const long long top = y + (long long)row * scale;
-        if (top >= canvas.height || top + scale <= 0) continue;
-        for (int col = 0; col < kGlyphWidth; ++col) {
-            const long long left = x + (long long)col * scale;
-            if (!(glyph.rows[row] & (0x10 >> col)) || left >= canvas.width || left + scale <= 0) continue;
-            fillRect(canvas, int(left), int(top), scale, scale, color); // in (−scale, size): fits an int
-        }
-    }
+// `color` over the canvas pixel with the glyph's coverage (0..255) as extra opacity.
+void blend(std::uint8_t* pixel, glm::u8vec4 color, int coverage) {
+    const int alpha = color.w * coverage / 255;
+    for (int c = 0; c < 3; ++c) pixel[c] = std::uint8_t((color[c] * alpha + pixel[c] * (255 - alpha)) / 255);
+    pixel[3] = std::uint8_t(alpha + pixel[3] * (255 - alpha) / 255);
 }
 
 } // namespace
 
+int textLineHeight(int scale) {
+    return 11 * std::clamp(scale, 1, kMaxTextScale);
+}
+
 void drawText(Image& canvas, int x, int y, std::string_view text, int scale, glm::u8vec4 color) {
-    if (scale < 1) return;
+    if (scale < 1 || text.empty()) return;
+    const stbtt_fontinfo& info = font();
+    const float s = pixelScale(scale);
+    int ascent = 0, descent = 0, gap = 0;
+    stbtt_GetFontVMetrics(&info, &ascent, &descent, &gap);
+    const long long baseline = (long long)y + (long long)(ascent * s + 0.5f);
     long long penX = x;
+    std::vector<unsigned char> coverage;
     for (std::size_t i = 0; i < text.size() && penX < canvas.width;) {
-        drawGlyph(canvas, penX, y, findGlyph(nextChar(text, i)), scale, color);
-        penX += (long long)kAdvance * scale;
+        const int glyph = stbtt_FindGlyphIndex(&info, int(nextChar(text, i)));
+        int advance = 0, bearing = 0;
+        stbtt_GetGlyphHMetrics(&info, glyph, &advance, &bearing);
+        int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+        stbtt_GetGlyphBitmapBox(&info, glyph, s, s, &x0, &y0, &x1, &y1);
+        const int w = x1 - x0, h = y1 - y0;
+        const long long left = penX + x0, top = baseline + y0;
+        if (w > 0 && h > 0 && left < canvas.width && left + w > 0 && top < canvas.height && top + h > 0) {
+            coverage.assign(std::size_t(w) * std::size_t(h), 0);
+            stbtt_MakeGlyphBitmap(&info, coverage.data(), w, h, w, s, s, glyph);
+            for (int row = 0; row < h; ++row) {
+                const long long cy = top + row;
+                if (cy < 0 || cy >= canvas.height) continue;
+                for (int col = 0; col < w; ++col) {
+                    const long long cx = left + col;
+                    const int c = coverage[std::size_t(row) * std::size_t(w) + std::size_t(col)];
+                    if (c && cx >= 0 && cx < canvas.width) blend(canvas.pixel(int(cx), int(cy)), color, c);
+                }
+            }
+        }
+        penX += (long long)(advance * s + 0.5f);
     }
 }
 
-// (6n − 1)·scale: the trailing gap after the last glyph is not part of the text.
 int textWidth(std::string_view text, int scale) {
-    const std::size_t count = countChars(text);
-    if (count == 0 || scale < 1) return 0;
-    const long long width = ((long long)kAdvance * (long long)count - 1) * scale;
+    if (scale < 1) return 0;
+    const stbtt_fontinfo& info = font();
+    const float s = pixelScale(scale);
+    long long width = 0;
+    for (std::size_t i = 0; i < text.size();) {
+        int advance = 0, bearing = 0;
+        stbtt_GetGlyphHMetrics(&info, stbtt_FindGlyphIndex(&info, int(nextChar(text, i))), &advance,
+                               &bearing);
+        width += (long long)(advance * s + 0.5f);
+    }
     return int(std::min(width, (long long)INT_MAX));
 }
 

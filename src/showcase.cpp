@@ -10,7 +10,7 @@ constexpr glm::u8vec4 kTextColor{235, 235, 235, 255};
 constexpr glm::u8vec4 kBannerColor{52, 58, 74, 255};
 constexpr glm::u8vec4 kPanelColor{24, 24, 28, 255};
 constexpr int kTextScale = 2;
-constexpr int kStripHeight = 7 * kTextScale + 12; // one line of the 5×7 font plus padding
+constexpr int kStripHeight = 26; // one line of text at kTextScale (textLineHeight: 22 px) plus padding
 
 std::string upper(std::string_view text) {
     std::string out(text);

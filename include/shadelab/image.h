@@ -76,9 +76,12 @@ Image diffImage(const Image& actual, const Image& expected);
 // Places `tile` into `canvas` with its top-left corner at (x, y), clipped to the canvas.
 void blit(Image& canvas, const Image& tile, int x, int y);
 void fillRect(Image& canvas, int x, int y, int w, int h, glm::u8vec4 color);
-// Draws text in a built-in 5×7 pixel font (upper-case letters, digits, space and - + / . : ( ) ×),
-// each font pixel `scale` image pixels wide. Lower-case letters are drawn as upper-case.
+// Draws UTF-8 text (DejaVu Sans Mono Bold through stb_truetype, antialiased, blended over the canvas) in
+// a line textLineHeight(scale) pixels high whose top is at y; clipped to the canvas. `scale` 1 is a
+// line of 11 px; larger scales are clamped to kMaxTextScale. A character the font lacks draws its box.
+inline constexpr int kMaxTextScale = 64;
 void drawText(Image& canvas, int x, int y, std::string_view text, int scale, glm::u8vec4 color);
-int textWidth(std::string_view text, int scale);
+int textWidth(std::string_view text, int scale); // the pen's advance over the text, in pixels
+int textLineHeight(int scale);
 
 } // namespace shadelab

@@ -41,8 +41,8 @@ int textScale(int width, int height) {
 Image labelImage(const std::vector<std::string>& lines, int scale) {
     int width = 0;
     for (const std::string& line : lines) width = std::max(width, textWidth(line, scale));
-    const int lineHeight = 9 * scale, pad = 3 * scale;
-    Image image(width + 2 * pad, int(lines.size()) * lineHeight + 2 * pad - 2 * scale);
+    const int lineHeight = textLineHeight(scale), pad = 3 * scale;
+    Image image(width + 2 * pad, int(lines.size()) * lineHeight + 2 * pad);
     fillRect(image, 0, 0, image.width, image.height, kLabelBox);
     for (std::size_t i = 0; i < lines.size(); ++i)
         drawText(image, pad, pad + int(i) * lineHeight, lines[i], scale, kLabelText);
@@ -338,7 +338,7 @@ void Views::drawProfile(const Scene& scene, int width, int height, int x, unsign
     const int plotTop = row < height / 2 ? height - plotHeight : 0;
     Image plot(width, plotHeight);
     fillRect(plot, 0, 0, width, plotHeight, kLabelBox);
-    const int margin = 3 * scale, textHeight = 9 * scale;
+    const int margin = 3 * scale, textHeight = textLineHeight(scale);
     const int y0 = plotHeight - margin - 4 * scale, y1 = std::min(margin + textHeight, y0); // intensity 0, 1
     auto yOf = [&](float v) { return int(std::lround(y0 + (y1 - y0) * std::clamp(double(v), 0.0, 1.0))); };
     for (int column : figures_.edgeColumns) drawLine(plot, column, y0 + 1, column, y0 + 4 * scale, kEdgeTick);

@@ -105,7 +105,7 @@ TEST(SplitView, EachHalfIsAPlainRenderOfItsSide) {
             const Image left = renderer->render(gl::splitSideScene(scene, scene.view.left));
             const Image right = renderer->render(gl::splitSideScene(scene, scene.view.right));
             const int divider = int(std::lround(at * scene.width));
-            const int labels = 20; // the labels' boxes lie in the top rows
+            const int labels = 4 + textLineHeight(1) + 6 + 2; // the labels' boxes: offset, line, padding
             std::size_t leftDiffers = 0, rightDiffers = 0, leftFromRight = 0;
             for (int y = labels; y < scene.height; ++y)
                 for (int x = 0; x < scene.width; ++x) {
