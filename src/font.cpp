@@ -3,6 +3,7 @@
 // (cmake/embed_files.cmake), so nothing depends on the working directory and the browser build has it too.
 #include <algorithm>
 #include <climits>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -72,7 +73,7 @@ void drawText(Image& canvas, int x, int y, std::string_view text, int scale, glm
     const float s = pixelScale(scale);
     int ascent = 0, descent = 0, gap = 0;
     stbtt_GetFontVMetrics(&info, &ascent, &descent, &gap);
-    const long long baseline = (long long)y + (long long)(ascent * s + 0.5f);
+    const long long baseline = (long long)y + std::lround(float(ascent) * s);
     long long penX = x;
     std::vector<unsigned char> coverage;
     for (std::size_t i = 0; i < text.size() && penX < canvas.width;) {
@@ -96,7 +97,7 @@ void drawText(Image& canvas, int x, int y, std::string_view text, int scale, glm
                 }
             }
         }
-        penX += (long long)(advance * s + 0.5f);
+        penX += std::lround(float(advance) * s);
     }
 }
 
@@ -109,7 +110,7 @@ int textWidth(std::string_view text, int scale) {
         int advance = 0, bearing = 0;
         stbtt_GetGlyphHMetrics(&info, stbtt_FindGlyphIndex(&info, int(nextChar(text, i))), &advance,
                                &bearing);
-        width += (long long)(advance * s + 0.5f);
+        width += std::lround(float(advance) * s);
     }
     return int(std::min(width, (long long)INT_MAX));
 }
