@@ -4,15 +4,10 @@
 #include <cmath>
 #include <numbers>
 
+#include "shadelab/vocabulary.h"
+
 namespace shadelab {
 namespace {
-
-template <typename Enum, std::size_t N>
-std::optional<Enum> parseEnum(std::string_view text, const std::array<Enum, N>& values) {
-    for (Enum value : values)
-        if (toString(value) == text) return value;
-    return std::nullopt;
-}
 
 // Largest component below which a vector is treated as zero and not normalized (the same in GLSL, where
 // 1e-30 is still a normal float).
@@ -96,13 +91,13 @@ std::string_view toString(LightType type) {
 }
 
 std::optional<ShadingMode> parseShadingMode(std::string_view text) {
-    return parseEnum(text, kAllShadingModes);
+    return parseName(text, kAllShadingModes);
 }
 std::optional<LightingModel> parseLightingModel(std::string_view text) {
-    return parseEnum(text, kLightingModels);
+    return parseName(text, kLightingModels);
 }
 std::optional<LightType> parseLightType(std::string_view text) {
-    return parseEnum(text, kLightTypes);
+    return parseName(text, kLightTypes);
 }
 
 Light transformLight(const Light& light, const glm::dmat4& m) {

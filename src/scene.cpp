@@ -30,6 +30,7 @@
 #include "shadelab/errors.h"
 #include "shadelab/subdivision.h"
 #include "shadelab/text.h"
+#include "shadelab/vocabulary.h"
 
 namespace shadelab {
 
@@ -42,14 +43,6 @@ using Json = nlohmann::json;
 constexpr int kMaxNesting = 64;
 // A scene is a few kilobytes; a larger file is a mistake (a PNG, a log), not a scene.
 constexpr std::uintmax_t kMaxSceneFileBytes = 16u << 20;
-// Longest piece of a user's string quoted back in a message.
-constexpr std::size_t kMaxQuotedChars = 40;
-
-constexpr std::array kProjectionTypes = {ProjectionType::Perspective, ProjectionType::Frustum,
-                                         ProjectionType::Orthographic};
-constexpr std::array kVertexNormals = {VertexNormals::Averaged, VertexNormals::Exact};
-constexpr std::array kDepthModes = {DepthMode::Standard, DepthMode::Reversed, DepthMode::ReversedInfinite};
-constexpr std::array kOverlays = {Overlay::None, Overlay::Wireframe, Overlay::Normals};
 
 struct IntRange {
     int lo, hi;
@@ -83,16 +76,6 @@ std::string formatVec(const glm::dvec3& v) {
     return "[" + formatNumber(v.x) + ", " + formatNumber(v.y) + ", " + formatNumber(v.z) + "]";
 }
 
-// User text goes back out JSON-escaped and truncated, so a key full of control characters or a megabyte
-// string cannot garble the terminal or the message.
-std::string quotedText(std::string_view text) {
-    bool truncated = text.size() > kMaxQuotedChars;
-    std::string shown(text.substr(0, kMaxQuotedChars));
-    std::string out = Json(shown).dump(-1, ' ', false, Json::error_handler_t::replace);
-    if (truncated) out.insert(out.size() - 1, "...");
-    return out;
-}
-
 std::string describe(const Json& value) {
     switch (value.type()) {
     case Json::value_t::null:
@@ -100,7 +83,7 @@ std::string describe(const Json& value) {
     case Json::value_t::boolean:
         return value.get<bool>() ? "true" : "false";
     case Json::value_t::string:
-        return "string " + quotedText(value.get_ref<const std::string&>());
+        return "string " + quotedValue(value.get_ref<const std::string&>());
     case Json::value_t::number_integer:
     case Json::value_t::number_unsigned:
     case Json::value_t::number_float:
@@ -112,12 +95,6 @@ std::string describe(const Json& value) {
     default:
         return "unsupported value";
     }
-}
-
-template <class Enum, std::size_t N> std::string joinNames(const std::array<Enum, N>& values) {
-    std::string out;
-    for (Enum value : values) out += (out.empty() ? "" : ", ") + std::string(toString(value));
-    return out;
 }
 
 std::string joinKeys(std::span<const std::string_view> keys) {
@@ -136,7 +113,7 @@ bool isPlainKey(std::string_view key) {
 }
 
 std::string keyPath(std::string_view parent, std::string_view key) {
-    if (!isPlainKey(key)) return std::string(parent) + "[" + quotedText(key) + "]";
+    if (!isPlainKey(key)) return std::string(parent) + "[" + quotedValue(key) + "]";
     return parent.empty() ? std::string(key) : std::string(parent) + "." + std::string(key);
 }
 
@@ -591,10 +568,7 @@ const std::string& readString(const Json& value, std::string_view path) {
 
 template <class Enum, std::size_t N>
 Enum readEnum(const Json& value, std::string_view path, const std::array<Enum, N>& values) {
-    const std::string& text = readString(value, path);
-    for (Enum e : values)
-        if (toString(e) == text) return e;
-    fail(path, "unknown value " + quotedText(text) + "; expected one of " + joinNames(values));
+    return parseNameOrThrow(readString(value, path), path, values);
 }
 
 // Optional fields: the output keeps its default when the key is absent. Returns whether it was present.
@@ -866,9 +840,7 @@ std::string_view toString(DepthMode mode) {
 }
 
 std::optional<DepthMode> parseDepthMode(std::string_view text) {
-    for (DepthMode mode : kDepthModes)
-        if (toString(mode) == text) return mode;
-    return std::nullopt;
+    return parseName(text, kDepthModes);
 }
 
 std::string_view toString(Overlay overlay) {
@@ -884,9 +856,7 @@ std::string_view toString(Overlay overlay) {
 }
 
 std::optional<Overlay> parseOverlay(std::string_view text) {
-    for (Overlay overlay : kOverlays)
-        if (toString(overlay) == text) return overlay;
-    return std::nullopt;
+    return parseName(text, kOverlays);
 }
 
 std::string_view toString(ProjectionType type) {

@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include <nlohmann/json.hpp>
+
 namespace shadelab {
 
 namespace {
@@ -62,6 +64,16 @@ std::string printable(std::string_view text, bool keepNewlines) {
         out += escaped;
         ++i;
     }
+    return out;
+}
+
+// User text goes back out JSON-escaped and truncated, so a key full of control characters or a megabyte
+// string cannot garble the terminal or the message.
+std::string quotedValue(std::string_view text) {
+    bool truncated = text.size() > kMaxQuotedChars;
+    std::string shown(text.substr(0, kMaxQuotedChars));
+    std::string out = nlohmann::json(shown).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+    if (truncated) out.insert(out.size() - 1, "...");
     return out;
 }
 

@@ -14,8 +14,8 @@
 
 #include "shadelab/camera.h"
 #include "shadelab/lighting.h"
-#include "shadelab/view.h"
 #include "shadelab/sphere.h"
+#include "shadelab/view.h"
 
 namespace shadelab {
 
@@ -35,6 +35,14 @@ std::string_view toString(ProjectionType type); // "perspective" | "frustum" | "
 enum class Overlay { None, Wireframe, Normals };
 std::string_view toString(Overlay overlay); // "none" | "wireframe" | "normals"
 std::optional<Overlay> parseOverlay(std::string_view text);
+
+// The vocabularies of this header (vocabulary.h): every spelling each accepts, in order.
+inline constexpr std::array kProjectionTypes = {ProjectionType::Perspective, ProjectionType::Frustum,
+                                                ProjectionType::Orthographic};
+inline constexpr std::array kVertexNormals = {VertexNormals::Averaged, VertexNormals::Exact};
+inline constexpr std::array kDepthModes = {DepthMode::Standard, DepthMode::Reversed,
+                                           DepthMode::ReversedInfinite};
+inline constexpr std::array kOverlays = {Overlay::None, Overlay::Wireframe, Overlay::Normals};
 
 struct Projection {
     ProjectionType type = ProjectionType::Perspective;

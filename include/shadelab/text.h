@@ -11,4 +11,9 @@ namespace shadelab {
 // (other than C1 controls) pass unchanged. `keepNewlines` keeps \n and \t (for multi-line messages).
 std::string printable(std::string_view text, bool keepNewlines = false);
 
+// User text quoted back in a message: in double quotes, JSON-escaped (so no control character reaches a
+// terminal) and cut at kMaxQuotedChars with "..." (so a megabyte string cannot flood the message).
+inline constexpr std::size_t kMaxQuotedChars = 40;
+std::string quotedValue(std::string_view text);
+
 } // namespace shadelab

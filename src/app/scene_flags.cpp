@@ -8,15 +8,9 @@
 #include "shadelab/errors.h"
 #include "shadelab/sphere.h"
 #include "shadelab/text.h"
+#include "shadelab/vocabulary.h"
 
 namespace shadelab::app {
-namespace {
-
-std::string quoted(const std::string& s) {
-    return "\"" + s + "\"";
-}
-
-} // namespace
 
 void composeSize(Scene& scene, const std::string& text) {
     static const std::regex kSize(R"(([0-9]{1,9})x([0-9]{1,9}))");
@@ -24,10 +18,10 @@ void composeSize(Scene& scene, const std::string& text) {
     const std::string range = "1.." + std::to_string(kMaxImageSize);
     if (!std::regex_match(text, m, kSize))
         throw InputError("--size: expected WxH with W and H in " + range + " (e.g. 512x512), got " +
-                         quoted(text));
+                         quotedValue(text));
     const long width = std::stol(m[1]), height = std::stol(m[2]);
     if (width < 1 || height < 1 || width > kMaxImageSize || height > kMaxImageSize)
-        throw InputError("--size: W and H must be in " + range + ", got " + quoted(text));
+        throw InputError("--size: W and H must be in " + range + ", got " + quotedValue(text));
     scene.width = int(width);
     scene.height = int(height);
 }
@@ -40,7 +34,7 @@ int parseLevel(const std::string& text) {
     static const std::regex kLevel(R"(-?[0-9]{1,9})");
     if (!std::regex_match(text, kLevel))
         throw InputError("--subdivisions: expected a level 0.." + std::to_string(kMaxSubdivisions) +
-                         " or auto, got " + quoted(text));
+                         " or auto, got " + quotedValue(text));
     const int level = std::stoi(text);
     checkSubdivisionLevel(level, "--subdivisions");
     return level;
@@ -50,7 +44,7 @@ int parseLevel(const std::string& text) {
 // inf or nan, not empty, nothing after the number.
 double parseTolerance(const std::string& text) {
     static const std::regex kDecimal(R"([+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?)");
-    const std::string shown = quoted(printable(text));
+    const std::string shown = quotedValue(printable(text));
     if (!std::regex_match(text, kDecimal))
         throw InputError("--tolerance-px: expected a positive decimal number of pixels such as 0.5, got " +
                          shown);
@@ -68,41 +62,17 @@ Scene composeScene(const std::string& path, const SceneOverrides& overrides) {
 }
 
 Scene applyOverrides(Scene scene, const SceneOverrides& o, const std::string& path) {
-    if (o.shading) {
-        const auto mode = parseShadingMode(*o.shading);
-        if (!mode)
-            throw InputError("--shading: unknown value " + quoted(*o.shading) +
-                             "; expected one of flat, gouraud, phong, toon, exact");
-        scene.shading = *mode;
-    }
-    if (o.lighting) {
-        const auto model = parseLightingModel(*o.lighting);
-        if (!model)
-            throw InputError("--lighting: unknown value " + quoted(*o.lighting) +
-                             "; expected one of phong, blinn-phong");
-        scene.lighting = *model;
-    }
+    if (o.shading) scene.shading = parseNameOrThrow(*o.shading, "--shading", kAllShadingModes);
+    if (o.lighting) scene.lighting = parseNameOrThrow(*o.lighting, "--lighting", kLightingModels);
     if (o.subdivisions) {
         const int level = parseLevel(*o.subdivisions);
         for (SceneObject& object : scene.objects) object.subdivisions = level;
     }
-    if (o.depth) {
-        const auto mode = parseDepthMode(*o.depth);
-        if (!mode)
-            throw InputError("--depth: unknown value " + quoted(*o.depth) +
-                             "; expected one of standard, reversed, reversed-infinite");
-        scene.depth = *mode;
-    }
-    if (o.overlay) {
-        const auto overlay = parseOverlay(*o.overlay);
-        if (!overlay)
-            throw InputError("--overlay: unknown value " + quoted(*o.overlay) +
-                             "; expected one of none, wireframe, normals");
-        scene.overlay = *overlay;
-    }
+    if (o.depth) scene.depth = parseNameOrThrow(*o.depth, "--depth", kDepthModes);
+    if (o.overlay) scene.overlay = parseNameOrThrow(*o.overlay, "--overlay", kOverlays);
     if (o.view) {
         ViewParse parsed = parseView(*o.view);
-        if (!parsed.view) throw InputError("--view: " + quoted(*o.view) + ": " + parsed.error);
+        if (!parsed.view) throw InputError("--view: " + quotedValue(*o.view) + ": " + parsed.error);
         const std::optional<double> at = scene.view.at;
         scene.view = *parsed.view;
         if (scene.view.kind == ViewKind::Split || scene.view.kind == ViewKind::Profile) scene.view.at = at;
