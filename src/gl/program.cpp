@@ -96,8 +96,7 @@ ProgramVariant ProgramVariant::forScene(const Scene& scene, bool specialize) {
 
 std::string ProgramVariant::name() const {
     std::string text = std::string(toString(shading)) + (flatGeometryShader ? "(gs)" : "") +
-                       (exactToon ? "(toon)" : "") + "/" +
-                       std::string(toString(lighting));
+                       (exactToon ? "(toon)" : "") + "/" + std::string(toString(lighting));
     if (!specialized) return text;
     text += "+d" + std::to_string(directional) + "p" + std::to_string(point) + "s" + std::to_string(spot);
     if (!ambient) text += "-ambient";
