@@ -54,10 +54,13 @@ std::vector<ExactCase> exactCases() {
         s.objects[0].scale = {1e6, 1, 1};
         return s;
     });
-    add("near_plane_cuts_the_sphere", [] { // the inside shows where the near plane opens it
+    // The inside shows where the near plane opens the sphere; the light behind it lights the far inner wall
+    // through the outward normal (DESIGN §3), so the hole is not just ambient.
+    add("near_plane_cuts_the_sphere", [] {
         Scene s = baseScene();
         s.eye = {0.3, 0.2, 1.6};
         s.projection.near = 0.9;
+        s.lights[0].position = {0.5, 0.8, -5};
         return s;
     });
     add("eye_inside_the_sphere", [] {
