@@ -61,13 +61,23 @@ uniform bool uOrthographic;  // parallel projection: the viewer direction is +z 
 #endif
 uniform float uToonBands;    // SHADING_TOON only
 
-// normalize(v), or the fallback where v is too short to normalize (DESIGN §3 guards). Scaling by the
-// largest component first keeps dot(v, v) from overflowing or underflowing float.
+// normalize(v), or the fallback where v is too short to normalize (DESIGN §3 guards), for a v of any finite
+// magnitude (view-space positions reach 1e30): scaling by the largest component first keeps dot(v, v) from
+// overflowing or underflowing float. One reciprocal, not three divisions, and a select, not a branch
+// (measured with callgrind, bench/README.md "Where a frame's instructions go").
 vec3 safeNormalize(vec3 v, vec3 fallback) {
     float largest = max(max(abs(v.x), abs(v.y)), abs(v.z));
-    if (!(largest > 1e-30)) return fallback;
-    vec3 scaled = v / largest;
-    return scaled * inversesqrt(dot(scaled, scaled));
+    vec3 scaled = v * (1.0 / largest);
+    vec3 unit = scaled * inversesqrt(dot(scaled, scaled));
+    return largest > 1e-30 ? unit : fallback;
+}
+
+// normalize(v) for a v the CPU has bounded (|v| <= 3: an interpolated normal of the normal matrix that
+// renderer.cpp divides by its largest entry), so dot(v, v) cannot overflow: only the too-short case needs
+// a guard, and a plain normalize does the rest.
+vec3 normalizeBounded(vec3 v, vec3 fallback) {
+    float lengthSquared = dot(v, v);
+    return lengthSquared > 1e-36 ? v * inversesqrt(lengthSquared) : fallback;
 }
 
 vec3 toViewer(vec3 positionView, vec3 normalView) {

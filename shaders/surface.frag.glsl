@@ -18,7 +18,7 @@ void main() {
 #if defined(SHADING_FLAT) || defined(SHADING_GOURAUD)
     fragColor = vec4(vColor, 1.0);
 #else
-    vec3 normalView = safeNormalize(vNormalView, vec3(0.0, 0.0, 1.0));
+    vec3 normalView = normalizeBounded(vNormalView, vec3(0.0, 0.0, 1.0));
     vec3 color = shade(vPositionView, normalView, toViewer(vPositionView, normalView));
     fragColor = vec4(clamp(color, 0.0, 1.0), 1.0);
 #endif
