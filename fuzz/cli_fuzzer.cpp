@@ -1,4 +1,4 @@
-// libFuzzer target for the command-line parser (src/app/cli.h). The input, split on NUL bytes, is the
+// libFuzzer target for the command-line parser (src/app/shells/cli.h). The input, split on NUL bytes, is the
 // argument vector after argv[0]. parseCommandLine either returns what to run or throws InputError (CLI11's
 // parse errors surface as InputError); anything else is a crash. It reads no scene file and renders
 // nothing, so the only files it touches are the stat()s of --screenshot-dir and a mistyped subcommand.
@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "app/cli.h"
+#include "app/shells/cli.h"
 #include "shadelab/errors.h"
 
 namespace {

@@ -15,9 +15,9 @@
 #include <emscripten/html5.h>
 #include <nlohmann/json.hpp>
 
-#include "app/demo_draw.h"
-#include "app/demo_state.h"
-#include "app/scene_flags.h"
+#include "app/demo/demo_draw.h"
+#include "app/demo/demo_state.h"
+#include "app/demo/scene_flags.h"
 #include "shadelab/errors.h"
 #include "shadelab/gl/loader.h"
 #include "shadelab/gl/render_target.h"
@@ -125,7 +125,7 @@ EMSCRIPTEN_KEEPALIVE const char* shadelab_load_scene(const char* json, const cha
     });
 }
 
-// The command-line flags applied to the shown scene through the same parser (app/scene_flags.h):
+// The command-line flags applied to the shown scene through the same parser (app/demo/scene_flags.h):
 // `flags` is a JSON object such as {"shading": "flat", "size": "256x256"}.
 EMSCRIPTEN_KEEPALIVE const char* shadelab_apply_flags(const char* flags) {
     return guarded([&] {

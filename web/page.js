@@ -286,7 +286,7 @@ function setIfIdle(id, value) {
   if (document.activeElement !== element) element.value = value;
 }
 
-// The window's light controls (src/app/panel.cpp): position, direction, I_a, I_d, I_s, attenuation a b c,
+// The window's light controls (src/app/shells/panel.cpp): position, direction, I_a, I_d, I_s, attenuation a b c,
 // and a spot's cutoff and exponent. Rebuilt only when the lights change from outside the panel (L, a scene).
 function showLights(lights) {
   const box = $('lights');

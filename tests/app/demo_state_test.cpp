@@ -1,8 +1,8 @@
-// The demo's pure logic (src/app/demo_state.h) against issue 3 (the demo window) and DESIGN §2–§3: the key
-// table, the orbit camera, the material and light presets and DemoState::apply/current. Expected values come
-// from the issue, DESIGN and GLFW's key codes, not from demo_state.cpp.
-#include "app/demo_state.h"
-#include "app/scene_flags.h"
+// The demo's pure logic (src/app/demo/demo_state.h) against issue 3 (the demo window) and DESIGN §2–§3: the
+// key table, the orbit camera, the material and light presets and DemoState::apply/current. Expected values
+// come from the issue, DESIGN and GLFW's key codes, not from demo_state.cpp.
+#include "app/demo/demo_state.h"
+#include "app/demo/scene_flags.h"
 
 #include <algorithm>
 #include <cmath>

@@ -11,8 +11,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/bundled_scenes.h"
-#include "app/report.h"
+#include "app/measure/bundled_scenes.h"
+#include "app/report/report.h"
 #include "gl/gl_test_support.h"
 #include "shadelab/errors.h"
 #include "shadelab/subdivision.h"

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <string>
 
-#include "app/report.h"
+#include "app/report/report.h"
 #include "gl/gl_test_support.h"
 #include "shadelab/gl/views.h"
 

@@ -228,7 +228,7 @@ protected:
     }
 
     // Esc exits 0, and the KHR_debug callback saw nothing of shadelab's own during the whole run (on
-    // OpenGL ES the demo counts Dear ImGui's desktop-only calls apart: src/app/panel.cpp).
+    // OpenGL ES the demo counts Dear ImGui's desktop-only calls apart: src/app/shells/panel.cpp).
     static void expectCleanQuit(DemoProcess& demo) {
         const ExitStatus status = demo.quit();
         EXPECT_EQ(status.code, 0) << "after Escape the demo ended with " << status.describe();

@@ -9,8 +9,8 @@
 
 #include <benchmark/benchmark.h>
 
-#include "app/bench.h"
-#include "app/frame_timing.h"
+#include "app/bench/bench.h"
+#include "app/measure/frame_timing.h"
 #include "shadelab/context.h"
 #include "shadelab/gl/render_target.h"
 #include "shadelab/gl/renderer.h"

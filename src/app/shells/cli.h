@@ -5,8 +5,8 @@
 
 #include <string>
 
-#include "app/bench.h"
-#include "app/commands.h"
+#include "app/bench/bench.h"
+#include "app/shells/commands.h"
 #include "shadelab/errors.h"
 
 namespace shadelab::app {

@@ -1,7 +1,7 @@
 // `shadelab bench`. Frame times are GPU-synchronized (glFinish after every frame), timed per frame after a
 // warm-up, and summarized as median and 10th/90th percentiles; the figures that matter are ratios of
 // configurations measured in the same run on the same machine.
-#include "app/bench.h"
+#include "app/bench/bench.h"
 
 #include <algorithm>
 #include <chrono>
@@ -19,8 +19,8 @@
 #include <benchmark/benchmark.h>
 #include <nlohmann/json.hpp>
 
-#include "app/bench_gpu.h"
-#include "app/bundled_scenes.h"
+#include "app/bench/bench_gpu.h"
+#include "app/measure/bundled_scenes.h"
 #include "shadelab/atomic_file.h"
 #include "shadelab/errors.h"
 #include "shadelab/gl/loader.h"

@@ -1,4 +1,4 @@
-#include "app/demo_draw.h"
+#include "app/demo/demo_draw.h"
 
 #include <algorithm>
 #include <cmath>

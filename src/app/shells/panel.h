@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "app/demo_state.h"
+#include "app/demo/demo_state.h"
 #include "shadelab/gl/api.h"
 
 namespace shadelab {

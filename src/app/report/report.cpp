@@ -2,7 +2,7 @@
 // and one offscreen target for the whole run, glFinish after every frame, median and 10th/90th percentiles
 // of the frames after a warm-up. The error of each configuration is taken from the same scene rendered
 // once more into an RGBA32F target, so that it is the shading's error and not the 8-bit rounding's.
-#include "app/report.h"
+#include "app/report/report.h"
 
 #include <algorithm>
 #include <array>
@@ -29,9 +29,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/bundled_scenes.h"
-#include "app/frame_timing.h"
-#include "app/memory_budget.h"
+#include "app/measure/bundled_scenes.h"
+#include "app/measure/frame_timing.h"
+#include "app/measure/memory_budget.h"
 #include "shadelab/atomic_file.h"
 #include "shadelab/errors.h"
 #include "shadelab/gl/loader.h"

@@ -1,4 +1,4 @@
-#include "app/bench_gpu.h"
+#include "app/bench/bench_gpu.h"
 
 #include <algorithm>
 #include <chrono>

@@ -27,7 +27,7 @@
 #include <glad/gl.h>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "app/bench_gpu.h"
+#include "app/bench/bench_gpu.h"
 #include "shadelab/errors.h"
 #include "shadelab/gl/handles.h"
 #include "shadelab/gl/loader.h"

@@ -1,5 +1,5 @@
 // The scene flags shared by every command and the page (DESIGN §5: flags override the scene file).
-#include "app/scene_flags.h"
+#include "app/demo/scene_flags.h"
 
 #include <cmath>
 #include <cstdlib>

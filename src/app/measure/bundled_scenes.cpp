@@ -1,4 +1,4 @@
-#include "app/bundled_scenes.h"
+#include "app/measure/bundled_scenes.h"
 
 #include "shadelab/errors.h"
 

@@ -1,6 +1,6 @@
 // The CLI11 setup of shadelab's command line, moved out of main.cpp's run() so it can be fuzzed without
 // rendering (fuzz/cli_fuzzer.cpp). Output that CLI11 would print goes into the result or the InputError.
-#include "app/cli.h"
+#include "app/shells/cli.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -10,7 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "app/demo_state.h"
+#include "app/demo/demo_state.h"
 #include "shadelab/text.h"
 
 namespace shadelab::app {

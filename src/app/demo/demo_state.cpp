@@ -1,4 +1,4 @@
-#include "app/demo_state.h"
+#include "app/demo/demo_state.h"
 
 #include <algorithm>
 #include <cctype>

@@ -6,10 +6,10 @@
 #include <exception>
 #include <filesystem>
 
-#include "app/bench.h"
-#include "app/cli.h"
-#include "app/commands.h"
-#include "app/report.h"
+#include "app/bench/bench.h"
+#include "app/report/report.h"
+#include "app/shells/cli.h"
+#include "app/shells/commands.h"
 #include "shadelab/atomic_file.h"
 #include "shadelab/errors.h"
 #include "shadelab/text.h"
@@ -25,7 +25,7 @@ void warnAbout(const Scene& scene, const std::string& file) {
                      printable(warning).c_str());
 }
 
-// Runs what the command line asks for (its parsing lives in app/cli.cpp, where the fuzzer reaches it).
+// Runs what the command line asks for (its parsing lives in app/shells/cli.cpp, where the fuzzer reaches it).
 int run(int argc, char** argv) {
     const app::ParsedCommand command = app::parseCommandLine(argc, argv);
     using Kind = app::ParsedCommand::Kind;

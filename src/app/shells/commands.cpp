@@ -3,8 +3,8 @@
 #include <cstdlib>
 #include <regex>
 
-#include "app/commands.h"
-#include "app/memory_budget.h"
+#include "app/measure/memory_budget.h"
+#include "app/shells/commands.h"
 #include "shadelab/atomic_file.h"
 #include "shadelab/errors.h"
 #include "shadelab/headless.h"

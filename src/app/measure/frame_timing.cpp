@@ -1,4 +1,4 @@
-#include "app/frame_timing.h"
+#include "app/measure/frame_timing.h"
 
 #include <algorithm>
 #include <chrono>

@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "app/scene_flags.h"
+#include "app/demo/scene_flags.h"
 #include "shadelab/context.h"
 #include "shadelab/scene.h"
 

@@ -1,4 +1,4 @@
-#include "app/panel.h"
+#include "app/shells/panel.h"
 
 #include <algorithm>
 

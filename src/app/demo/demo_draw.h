@@ -3,7 +3,7 @@
 // the scene.
 #pragma once
 
-#include "app/demo_state.h"
+#include "app/demo/demo_state.h"
 #include "shadelab/gl/renderer.h"
 
 namespace shadelab::app {

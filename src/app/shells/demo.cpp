@@ -13,10 +13,10 @@
 #include <thread>
 #include <unistd.h>
 
-#include "app/commands.h"
-#include "app/demo_draw.h"
-#include "app/demo_state.h"
-#include "app/panel.h"
+#include "app/demo/demo_draw.h"
+#include "app/demo/demo_state.h"
+#include "app/shells/commands.h"
+#include "app/shells/panel.h"
 #include "shadelab/errors.h"
 #include "shadelab/gl/loader.h"
 #include "shadelab/gl/render_target.h"
@@ -90,7 +90,7 @@ public:
             std::fprintf(
                 stderr,
                 "shadelab: %d GL debug message(s) from Dear ImGui's desktop-only GL backend on OpenGL "
-                "ES not shown (see src/app/panel.cpp)\n",
+                "ES not shown (see src/app/shells/panel.cpp)\n",
                 panelMessages_);
         if (options_.glDebug) std::fprintf(stderr, "shadelab: %d GL debug message(s)\n", debugMessages_);
         return kExitOk;

@@ -1,4 +1,4 @@
-#include "app/memory_budget.h"
+#include "app/measure/memory_budget.h"
 
 #include <cstdio>
 #include <set>
