@@ -60,6 +60,7 @@ uniform float uShininess;    // >= 1: pow(0, 0) is undefined in GLSL
 uniform bool uOrthographic;  // parallel projection: the viewer direction is +z everywhere
 #endif
 uniform float uToonBands;    // SHADING_TOON only
+uniform float uToonBandWidth; // 1 / uToonBands, divided once on the CPU
 
 // normalize(v), or the fallback where v is too short to normalize (DESIGN §3 guards), for a v of any finite
 // magnitude (view-space positions reach 1e30): scaling by the largest component first keeps dot(v, v) from
@@ -92,7 +93,7 @@ vec3 toViewer(vec3 positionView, vec3 normalView) {
 
 float specularTerm(vec3 normalView, vec3 toViewerView, vec3 toLightView, float lDotN) {
 #ifdef LIGHTING_BLINN_PHONG
-    vec3 halfView = safeNormalize(toViewerView + toLightView, normalView);
+    vec3 halfView = normalizeBounded(toViewerView + toLightView, normalView); // |v + l| <= 2
     return pow(max(dot(normalView, halfView), 0.0), uShininess);
 #else
     vec3 reflectedView = -toLightView + 2.0 * lDotN * normalView;
@@ -105,7 +106,7 @@ vec3 directTerm(Light light, vec3 toLightView, float factor, vec3 normalView, ve
     float lDotN = dot(toLightView, normalView);
     float diffuse = max(lDotN, 0.0);
 #ifdef SHADING_TOON
-    diffuse = ceil(diffuse * uToonBands) / uToonBands;
+    diffuse = ceil(diffuse * uToonBands) * uToonBandWidth;
 #endif
     vec3 color = uMaterialDiffuse * light.diffuse * diffuse;
 #if HAS_SPECULAR

@@ -184,6 +184,7 @@ SurfaceProgram::SurfaceProgram(Program linked, const ProgramVariant& variant) : 
     at.shininess = find("uShininess");
     at.orthographic = find("uOrthographic");
     at.toonBands = find("uToonBands");
+    at.toonBandWidth = find("uToonBandWidth");
     at.lightCount = find("uLightCount");
     at.ambientLight = find("uAmbientLight");
     auto lightsOf = [&](const std::string& array, int count, bool uber) {

@@ -207,8 +207,10 @@ void Renderer::renderScene(const Scene& scene, int width, int height, int x) {
     else
         setUberLights(at, lightsView);
     glUniform1i(at.orthographic, view.orthographic ? 1 : 0); // uber programs (specialized: a define)
-    if (scene.shading == ShadingMode::Toon || variant.exactToon)
+    if (scene.shading == ShadingMode::Toon || variant.exactToon) {
         glUniform1f(at.toonBands, float(scene.toonBands));
+        glUniform1f(at.toonBandWidth, float(1.0 / scene.toonBands));
+    }
     if (scene.shading == ShadingMode::Exact) {
         drawExact(sized, view, at, x);
     } else {

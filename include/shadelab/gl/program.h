@@ -59,7 +59,7 @@ struct SurfaceLocations {
     int ndcRect = -1, viewport = -1, nearRect = -1, nearFar = -1, objectFromView = -1, centerView = -1,
         clipFromView = -1, depthZeroToOne = -1, alpha = -1;
     int materialAmbient = -1, materialDiffuse = -1, materialSpecular = -1, shininess = -1;
-    int orthographic = -1, toonBands = -1, lightCount = -1, ambientLight = -1;
+    int orthographic = -1, toonBands = -1, toonBandWidth = -1, lightCount = -1, ambientLight = -1;
     // Uber program: lights[0] holds uLights[0..MAX_LIGHTS). Specialized: lights[1], [2], [3] hold the
     // directional, point and spot arrays (indexed by the LIGHT_* codes of shaders/lighting.glsl).
     std::array<std::vector<LightLocations>, 4> lights;
