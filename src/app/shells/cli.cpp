@@ -47,14 +47,30 @@ void addSceneFlags(CLI::App& command, SceneOverrides& o) {
     command.add_option("--size", o.size, "Image size WxH, e.g. 512x512 (overrides the scene)");
 }
 
-// --api, and for the headless commands --egl-device (a number, or list).
-void addContextFlags(CLI::App& command, std::string& api, std::string* eglDevice) {
+// The context a command asks for: --backend, --api, --egl-device (each command has its own copy).
+struct ContextArgs {
+    std::string backend = "egl", api = "gl", eglDevice;
+};
+
+void addApiFlag(CLI::App& command, std::string& api) {
     command.add_option("--api", api, "gl (desktop OpenGL 3.3 core) or gles (OpenGL ES 3.0)")
         ->capture_default_str();
-    if (eglDevice)
-        command.add_option("--egl-device", *eglDevice,
-                           "EGL device number (see list), or list: print the devices and exit; default: the "
-                           "first device that gives a context, else the surfaceless platform");
+}
+
+// The headless commands' --backend, --api and --egl-device (a number, or list).
+void addHeadlessFlags(CLI::App& command, ContextArgs& context) {
+    command.add_option("--backend", context.backend, "Headless context: egl or osmesa")
+        ->capture_default_str();
+    addApiFlag(command, context.api);
+    command.add_option("--egl-device", context.eglDevice,
+                       "EGL device number (see list), or list: print the devices and exit; default: the "
+                       "first device that gives a context, else the surfaceless platform");
+}
+
+void setContext(ParsedCommand& command, const ContextArgs& context) {
+    command.backend = context.backend;
+    command.api = context.api;
+    command.eglDevice = context.eglDevice;
 }
 
 std::size_t editDistance(std::string_view a, std::string_view b) {
@@ -129,16 +145,15 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
         ->check(CLI::Range(0.5, 4.0));
     cli.add_flag("--gl-debug", demo.glDebug, "Ask for a KHR_debug context and print every GL message");
     std::string demoApi = "gl";
-    addContextFlags(cli, demoApi, nullptr);
+    addApiFlag(cli, demoApi);
 
     SceneOverrides renderFlags;
-    std::string renderScene, renderOut, backendName = "egl";
+    std::string renderScene, renderOut;
+    ContextArgs renderContext;
     CLI::App* render = cli.add_subcommand("render", "Render a scene headless to a PNG");
     render->add_option("scene", renderScene, "Scene file (JSON); the defaults of DESIGN §4 if omitted");
     addSceneFlags(*render, renderFlags);
-    render->add_option("--backend", backendName, "Headless context: egl or osmesa")->capture_default_str();
-    std::string renderApi = "gl", renderDevice;
-    addContextFlags(*render, renderApi, &renderDevice);
+    addHeadlessFlags(*render, renderContext);
     bool verbose = false;
     render->add_flag("--verbose", verbose,
                      "Say which context and renderer drew the picture (standard error)");
@@ -166,13 +181,11 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
         ->transform(CLI::IsMember({"on", "off", "true", "false", "1", "0"}, CLI::ignore_case));
 
     BenchOptions bench;
-    std::string benchBackend = "egl", benchSize = "800x600", benchJson;
+    std::string benchSize = "800x600", benchJson;
+    ContextArgs benchContext;
     CLI::App* benchCommand =
         cli.add_subcommand("bench", "Benchmarks, reported as ratios measured in one run");
-    benchCommand->add_option("--backend", benchBackend, "Headless context: egl or osmesa")
-        ->capture_default_str();
-    std::string benchApi = "gl", benchDevice;
-    addContextFlags(*benchCommand, benchApi, &benchDevice);
+    addHeadlessFlags(*benchCommand, benchContext);
     benchCommand->add_option("--size", benchSize, "Frame size WxH")->capture_default_str();
     benchCommand->add_option("--frames", bench.frames, "Timed frames per configuration")
         ->capture_default_str()
@@ -197,7 +210,8 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
     compareCommand->add_option("--mask", command.compare.mask, "PNG: black pixels are not compared");
     compareCommand->add_option("--diff", command.compare.diff, "Where to write the difference ×8 on failure");
 
-    std::string reportScene, reportBackend = "egl";
+    std::string reportScene;
+    ContextArgs reportContext;
     CLI::App* reportCommand = cli.add_subcommand(
         "report",
         "Error against run time of every shading mode, lighting model and level: CSV, JSON, a plot");
@@ -210,10 +224,7 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
     reportCommand->add_flag("--no-auto", command.reportNoAuto, "Leave out the auto-subdivision rows");
     reportCommand->add_flag("--no-plot", command.reportNoPlot,
                             "Write report.csv and report.json only (no gnuplot needed)");
-    reportCommand->add_option("--backend", reportBackend, "Headless context: egl or osmesa")
-        ->capture_default_str();
-    std::string reportApi = "gl", reportDevice;
-    addContextFlags(*reportCommand, reportApi, &reportDevice);
+    addHeadlessFlags(*reportCommand, reportContext);
     reportCommand->add_option("--frames", command.reportFrames, "Timed frames per configuration")
         ->capture_default_str()
         ->check(CLI::Range(1, 100000));
@@ -250,31 +261,24 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
         command.scene = renderScene;
         command.overrides = renderFlags;
         command.out = renderOut;
-        command.backend = backendName;
-        command.api = renderApi;
-        command.eglDevice = renderDevice;
+        setContext(command, renderContext);
         command.verbose = verbose;
         command.specialize = specialize;
     } else if (*benchCommand) {
         command.kind = ParsedCommand::Kind::Bench;
         command.bench = bench;
-        command.backend = benchBackend;
-        command.api = benchApi;
-        command.eglDevice = benchDevice;
+        setContext(command, benchContext);
         command.benchSize = benchSize;
         command.benchJson = benchJson;
     } else if (*reportCommand) {
         command.kind = ParsedCommand::Kind::Report;
         command.scene = reportScene;
-        command.backend = reportBackend;
-        command.api = reportApi;
-        command.eglDevice = reportDevice;
+        setContext(command, reportContext);
     } else if (*compareCommand) {
         command.kind = ParsedCommand::Kind::Compare;
     } else if (*reference) {
         command.kind = ParsedCommand::Kind::Reference;
-        command.backend = referenceBackend;
-        command.api = referenceApi;
+        setContext(command, {referenceBackend, referenceApi, ""});
         command.scene = referenceScene;
         command.overrides = referenceFlags;
         command.out = referenceOut;
