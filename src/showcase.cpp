@@ -1,7 +1,7 @@
-#include <cctype>
 #include <string>
 
 #include "shadelab/headless.h"
+#include "shadelab/text.h"
 
 namespace shadelab {
 namespace {
@@ -11,12 +11,6 @@ constexpr glm::u8vec4 kBannerColor{52, 58, 74, 255};
 constexpr glm::u8vec4 kPanelColor{24, 24, 28, 255};
 constexpr int kTextScale = 2;
 constexpr int kStripHeight = 26; // one line of text at kTextScale (textLineHeight: 22 px) plus padding
-
-std::string upper(std::string_view text) {
-    std::string out(text);
-    for (char& c : out) c = char(std::toupper(static_cast<unsigned char>(c)));
-    return out;
-}
 
 void centredText(Image& canvas, int x, int y, int width, const std::string& text) {
     drawText(canvas, x + (width - textWidth(text, kTextScale)) / 2, y + 6, text, kTextScale, kTextColor);
@@ -39,11 +33,12 @@ Image renderShowcase(HeadlessRenderer& renderer, const Scene& scene, int tileSiz
         tile.lighting = kLightingModels[std::size_t(row)];
         const int y = row * rowHeight;
         fillRect(canvas, 0, y, canvas.width, kStripHeight, kBannerColor);
-        centredText(canvas, 0, y, canvas.width, upper(toString(tile.lighting)) + " LIGHTING");
+        centredText(canvas, 0, y, canvas.width, upperAscii(toString(tile.lighting)) + " LIGHTING");
         for (int column = 0; column < columns; ++column) {
             tile.shading = kShadingModes[std::size_t(column)];
             const int x = column * tileSize;
-            centredText(canvas, x, y + kStripHeight, tileSize, upper(toString(tile.shading)) + " SHADING");
+            centredText(canvas, x, y + kStripHeight, tileSize,
+                        upperAscii(toString(tile.shading)) + " SHADING");
             tile.view = View{};
             blit(canvas, renderer.render(tile), x, y + 2 * kStripHeight);
             tile.view.kind = ViewKind::Error;

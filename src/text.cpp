@@ -1,5 +1,6 @@
 #include "shadelab/text.h"
 
+#include <cctype>
 #include <cstdio>
 
 #include <nlohmann/json.hpp>
@@ -74,6 +75,13 @@ std::string quotedValue(std::string_view text) {
     std::string shown(text.substr(0, kMaxQuotedChars));
     std::string out = nlohmann::json(shown).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
     if (truncated) out.insert(out.size() - 1, "...");
+    return out;
+}
+
+std::string upperAscii(std::string_view text) {
+    std::string out(text);
+    for (char& c : out)
+        if (c >= 'a' && c <= 'z') c = char(c - 'a' + 'A');
     return out;
 }
 

@@ -16,4 +16,7 @@ std::string printable(std::string_view text, bool keepNewlines = false);
 inline constexpr std::size_t kMaxQuotedChars = 40;
 std::string quotedValue(std::string_view text);
 
+// ASCII letters upper-cased (labels drawn into pictures: "PHONG SHADING"); other bytes unchanged.
+std::string upperAscii(std::string_view text);
+
 } // namespace shadelab

@@ -17,6 +17,7 @@
 #include "shadelab/gl/screen_pass.h"
 #include "shadelab/image.h"
 #include "shadelab/subdivision.h"
+#include "shadelab/text.h"
 
 namespace shadelab::gl {
 namespace {
@@ -26,11 +27,6 @@ constexpr glm::u8vec4 kLabelBox{0, 0, 0, 170};
 constexpr glm::u8vec4 kModeCurve{255, 150, 40, 255};   // orange: the current mode
 constexpr glm::u8vec4 kExactCurve{255, 255, 255, 255}; // white: exact
 constexpr glm::u8vec4 kEdgeTick{80, 220, 255, 255};    // cyan: a mesh edge crosses the row
-
-std::string upper(std::string text) {
-    for (char& c : text) c = char(std::toupper(static_cast<unsigned char>(c)));
-    return text;
-}
 
 // The labels' font scale: 5×7 glyphs twice as large from a 400-pixel picture on.
 int textScale(int width, int height) {
@@ -227,7 +223,7 @@ void Views::drawError(const Scene& scene, int width, int height, int x, unsigned
         p.images.draw(bottom, std::max(0, barLeft + barWidth - bottom.width), barBottom + scale, x, width,
                       height);
     }
-    std::string mode = upper(std::string(toString(scene.shading)));
+    std::string mode = upperAscii(toString(scene.shading));
     if (scene.shading != ShadingMode::Exact && !scene.objects.empty())
         mode += " L" + std::to_string(subdivisionLevel(scene, scene.objects[0]));
     p.images.draw(
@@ -249,11 +245,10 @@ Scene splitSideScene(const Scene& scene, const SplitSide& side) {
 
 std::string sideLabel(const Scene& scene, const SplitSide& side) {
     const Scene s = splitSideScene(scene, side);
-    std::string label = upper(std::string(toString(s.shading)));
+    std::string label = upperAscii(toString(s.shading));
     if (s.shading != ShadingMode::Exact && !s.objects.empty())
         label += " L" + std::to_string(subdivisionLevel(s, s.objects[0]));
-    if (side.lighting || (!side.shading && !side.level))
-        label += " " + upper(std::string(toString(s.lighting)));
+    if (side.lighting || (!side.shading && !side.level)) label += " " + upperAscii(toString(s.lighting));
     return label;
 }
 
@@ -351,7 +346,7 @@ void Views::drawProfile(const Scene& scene, int width, int height, int x, unsign
     int textX = margin;
     for (const auto& [word, colour] :
          {std::pair{"ROW " + std::to_string(row), kLabelText},
-          std::pair{upper(std::string(toString(scene.shading))), kModeCurve},
+          std::pair{upperAscii(toString(scene.shading)), kModeCurve},
           std::pair{std::string("EXACT"), kExactCurve}, std::pair{std::string("EDGES"), kEdgeTick}}) {
         drawText(plot, textX, margin, word, scale, colour);
         textX += textWidth(word + "  ", scale);
