@@ -110,9 +110,10 @@ std::size_t sphereMemoryBytes(int level) {
                                                                    : std::numeric_limits<std::size_t>::max();
 }
 
-void checkSubdivisionLevel(int level, const char* field) {
+void checkSubdivisionLevel(int level, std::string_view field) {
     if (level < 0) {
-        throw InputError(std::string(field) + ": must be >= 0, got " + std::to_string(level));
+        throw InputError(std::string(field) + ": must be between 0 and " + std::to_string(kMaxSubdivisions) +
+                         ", got " + std::to_string(level));
     }
     if (level > kMaxSubdivisions) {
         const std::string triangles =

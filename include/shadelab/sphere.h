@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <string_view>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -33,8 +34,10 @@ std::size_t sphereTriangleCount(int level);
 // Peak bytes buildSphere and the GPU-ready arrays need for a level (used in the error for too-high levels).
 std::size_t sphereMemoryBytes(int level);
 
-// Throws InputError naming `field`, the level, the maximum and the memory the level would need.
-void checkSubdivisionLevel(int level, const char* field = "subdivisions");
+// The one check of a level wherever it comes from: buildSphere, a scene file's "subdivisions", the
+// --subdivisions flag (scene_values.h). Throws InputError "<field>: must be between 0 and 10, got -1"; above
+// the maximum the message names the memory the level would need.
+void checkSubdivisionLevel(int level, std::string_view field = "subdivisions");
 
 SphereMesh buildSphere(int level, VertexNormals normals = VertexNormals::Averaged);
 

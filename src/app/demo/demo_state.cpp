@@ -1,49 +1,17 @@
+// DemoState: what the demo shows and how commands and the mouse change it, and the presets M and L cycle
+// through. The camera and the scene it draws are demo_camera.cpp's, the keys demo_keys.cpp's, the words
+// (title, status, probe table) demo_text.cpp's.
 #include "app/demo/demo_state.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 
+#include "app/demo/demo_format.h"
 #include "shadelab/subdivision.h"
-#include "shadelab/window.h"
 
 namespace shadelab::app {
 namespace {
-
-constexpr double kDegree = std::numbers::pi / 180;
-constexpr int kKeyMinus = '-', kKeyEqual = '='; // '+' is Shift + '=' on most layouts
-
-const std::vector<KeyBinding>& bindings() {
-    static const std::vector<KeyBinding> kBindings = {
-        {{'1', 'F'}, "1 / F", "flat shading", Command::Flat},
-        {{'2', 'G'}, "2 / G", "Gouraud shading", Command::Gouraud},
-        {{'3', 'P'}, "3 / P", "Phong shading", Command::Phong},
-        {{'4', 'T'}, "4 / T", "toon shading", Command::Toon},
-        {{'5', 'X'}, "5 / X", "exact: the sphere ray-cast per pixel", Command::Exact},
-        {{'E'}, "E", "error view: |mode - exact| heatmap with its mean and max", Command::ToggleErrorView},
-        {{'V'}, "V", "split view: the mode beside exact; drag the divider", Command::ToggleSplitView},
-        {{'I'}, "I", "intensity profile along the row under the pointer", Command::ToggleProfileView},
-        {{'B'}, "B", "Phong <-> Blinn-Phong lighting", Command::ToggleLighting},
-        {{kKeyEqual, kKeyKeypadAdd}, "+", "subdivision level up", Command::LevelUp},
-        {{kKeyMinus, kKeyKeypadSubtract}, "-", "subdivision level down", Command::LevelDown},
-        {{'A'}, "A", "automatic level: silhouette error < tolerance_px", Command::AutoLevel},
-        {{'O'}, "O", "perspective <-> orthographic", Command::ToggleProjection},
-        {{'N'}, "N", "averaged <-> exact vertex normals", Command::ToggleNormals},
-        {{'W'}, "W", "overlay: wireframe, then face and vertex normals, then none", Command::ToggleOverlay},
-        {{'M'}, "M", "next material preset", Command::NextMaterial},
-        {{'L'}, "L", "next light set-up", Command::NextLights},
-        {{'R'}, "R", "reset the view", Command::ResetView},
-        {{'S'}, "S", "save a screenshot (PNG + scene JSON)", Command::Screenshot},
-        {{'C'}, "C", "show / hide the control panel", Command::TogglePanel},
-        {{'H', kKeyF1}, "H / F1", "show / hide this help", Command::ToggleHelp},
-        {{kKeyF2}, "F2", "presentation label: mode, lighting, level, exponent", Command::TogglePresentation},
-        {{kKeyF11}, "F11", "full screen", Command::ToggleFullScreen},
-        {{kKeyEscape}, "Esc", "quit", Command::Quit},
-    };
-    return kBindings;
-}
 
 Light pointLight(glm::dvec3 position, glm::dvec3 color) {
     Light light;
@@ -53,67 +21,16 @@ Light pointLight(glm::dvec3 position, glm::dvec3 color) {
     return light;
 }
 
-// The extent of the scene's objects around the camera target, to keep zooming outside them and inside far.
-double sceneExtent(const Scene& scene, const glm::dvec3& target) {
-    double extent = 0;
-    for (const SceneObject& o : scene.objects) {
-        const double r = o.radius * std::max({std::abs(o.scale.x), std::abs(o.scale.y), std::abs(o.scale.z)});
-        extent = std::max(extent, glm::length(o.center - target) + r);
-    }
-    return extent;
+// `v` turned by the rotation that takes unit `from` to unit `to` (about their common perpendicular).
+glm::dvec3 rotateLike(const glm::dvec3& v, const glm::dvec3& from, const glm::dvec3& to) {
+    const glm::dvec3 axis = glm::cross(from, to);
+    const double sine = glm::length(axis), cosine = glm::dot(from, to);
+    if (!(sine > 1e-15)) return v;
+    const glm::dvec3 k = axis / sine; // Rodrigues' formula
+    return v * cosine + glm::cross(k, v) * sine + k * glm::dot(k, v) * (1 - cosine);
 }
 
 } // namespace
-
-std::span<const KeyBinding> keyBindings() {
-    return bindings();
-}
-
-std::optional<Command> commandForKey(int key) {
-    for (const KeyBinding& binding : bindings())
-        if (std::find(binding.keys.begin(), binding.keys.end(), key) != binding.keys.end())
-            return binding.command;
-    return std::nullopt;
-}
-
-std::string keyHelpText() {
-    std::string text;
-    for (const KeyBinding& b : bindings()) {
-        std::string label(b.label);
-        label.resize(std::max<std::size_t>(label.size(), 8), ' ');
-        text += label + " " + std::string(b.action) + "\n";
-    }
-    text += "drag    orbit around the target\nwheel   zoom\n"
-            "right-drag  move the light around the target\n"
-            "click   probe a surface point: l, n, v, r/h and the terms, mode vs exact\n";
-    return text;
-}
-
-OrbitCamera OrbitCamera::looking(const glm::dvec3& eye, const glm::dvec3& target) {
-    OrbitCamera camera;
-    camera.target = target;
-    const glm::dvec3 d = eye - target;
-    camera.distance = glm::length(d);
-    camera.azimuthRad = std::atan2(d.x, d.z);
-    camera.elevationRad = std::clamp(std::asin(std::clamp(d.y / camera.distance, -1.0, 1.0)),
-                                     -kMaxElevationRad, kMaxElevationRad);
-    return camera;
-}
-
-glm::dvec3 OrbitCamera::eye() const {
-    const double c = std::cos(elevationRad);
-    return target +
-           distance * glm::dvec3(c * std::sin(azimuthRad), std::sin(elevationRad), c * std::cos(azimuthRad));
-}
-
-void OrbitCamera::drag(double dxPixels, double dyPixels) {
-    azimuthRad = std::remainder(azimuthRad - 0.5 * kDegree * dxPixels, 2 * std::numbers::pi);
-    elevationRad = std::clamp(elevationRad + 0.5 * kDegree * dyPixels, -kMaxElevationRad, kMaxElevationRad);
-}
-
-void OrbitCamera::zoom(double wheelSteps) {
-    distance = std::clamp(distance * std::pow(0.9, wheelSteps), 1e-12, 1e12); // finite and non-zero
-}
 
 std::span<const MaterialPreset> materialPresets() {
     static const MaterialPreset kPresets[] = {
@@ -152,74 +69,6 @@ DemoState::DemoState(Scene scene)
       initialCamera_(OrbitCamera::looking(scene_.eye, scene_.target)), camera_(initialCamera_),
       orthographic_(scene_.projection.type == ProjectionType::Orthographic) {
     for (const SceneObject& o : scene_.objects) exponents_.push_back(o.material.shininess);
-}
-
-void DemoState::drag(double dxPixels, double dyPixels) {
-    if (holdingDivider_) return; // the drag moves the split's divider (pointer())
-    camera_.drag(dxPixels, dyPixels);
-    cameraMoved_ = true;
-}
-
-void DemoState::zoom(double wheelSteps) {
-    camera_.zoom(wheelSteps);
-    // Clamp the stored distance itself, so the wheel never has to unwind steps it had no effect with.
-    // Outside the objects comes first; inside the far plane where both fit.
-    const double extent = sceneExtent(scene_, camera_.target);
-    const double closest = extent + scene_.projection.near * 1.5;
-    // A millionth of the far distance short of it: at exactly far - extent the eye, rebuilt from its angles,
-    // can land an ulp beyond, and the object's back would touch the far plane.
-    const double farthest = std::max(closest, scene_.projection.far * (1 - 1e-6) - extent);
-    camera_.distance = std::clamp(camera_.distance, closest, farthest);
-    cameraMoved_ = true;
-}
-
-Scene DemoState::current(int width, int height) const {
-    Scene s = scene_;
-    if (width > 0 && height > 0) {
-        s.width = width;
-        s.height = height;
-    }
-    if (cameraMoved_) {
-        s.eye = camera_.eye();
-        s.target = camera_.target;
-        s.up = {0, 1, 0}; // the orbit's elevation stays short of the poles: never parallel
-    }
-
-    const Projection& own = initial_.projection;
-    const double aspect = double(s.width) / s.height;
-    const double distance = glm::length(s.eye - s.target);
-    // The half-height the view shows at the target: ties the two projections together so O keeps the size.
-    const double zoom = distance / initialCamera_.distance;
-    double halfHeight = 0;
-    if (own.type == ProjectionType::Orthographic)
-        halfHeight = 0.5 * (own.top - own.bottom) * zoom;
-    else if (own.type == ProjectionType::Perspective)
-        halfHeight = distance * std::tan(0.5 * own.fovyDeg * kDegree);
-    else
-        halfHeight = distance * 0.5 * (own.top - own.bottom) / own.near;
-
-    if (orthographic_ && own.type != ProjectionType::Orthographic) {
-        s.projection = {ProjectionType::Orthographic,
-                        own.fovyDeg,
-                        -halfHeight * aspect,
-                        halfHeight * aspect,
-                        -halfHeight,
-                        halfHeight,
-                        own.near,
-                        own.far};
-    } else if (orthographic_) {
-        // The scene's own box, zoomed, and widened or narrowed to the framebuffer's aspect.
-        const double centreX = 0.5 * (own.left + own.right), halfWidth = halfHeight * aspect;
-        const double centreY = 0.5 * (own.bottom + own.top) * zoom;
-        s.projection.left = centreX * zoom - halfWidth;
-        s.projection.right = centreX * zoom + halfWidth;
-        s.projection.bottom = centreY - halfHeight;
-        s.projection.top = centreY + halfHeight;
-    } else if (own.type == ProjectionType::Orthographic) {
-        s.projection.type = ProjectionType::Perspective;
-        s.projection.fovyDeg = 2 * std::atan(halfHeight / distance) / kDegree;
-    }
-    return s;
 }
 
 // In split view the mode keys change the left side (which the split names); a side never equals the other,
@@ -400,25 +249,6 @@ std::string DemoState::describeChange(Command command) const {
     }
 }
 
-namespace {
-
-// `v` turned by the rotation that takes unit `from` to unit `to` (about their common perpendicular).
-glm::dvec3 rotateLike(const glm::dvec3& v, const glm::dvec3& from, const glm::dvec3& to) {
-    const glm::dvec3 axis = glm::cross(from, to);
-    const double sine = glm::length(axis), cosine = glm::dot(from, to);
-    if (!(sine > 1e-15)) return v;
-    const glm::dvec3 k = axis / sine; // Rodrigues' formula
-    return v * cosine + glm::cross(k, v) * sine + k * glm::dot(k, v) * (1 - cosine);
-}
-
-std::string formatVector(const glm::dvec3& v) {
-    char text[96];
-    std::snprintf(text, sizeof text, "(%.2f, %.2f, %.2f)", v.x, v.y, v.z);
-    return text;
-}
-
-} // namespace
-
 void DemoState::dragLight(double dxPixels, double dyPixels) {
     const auto light = std::find_if(scene_.lights.begin(), scene_.lights.end(),
                                     [](const Light& l) { return l.type != LightType::Ambient; });
@@ -533,97 +363,6 @@ std::size_t DemoState::triangleCount() const {
     std::size_t total = 0;
     for (const SceneObject& o : scene.objects) total += sphereTriangleCount(subdivisionLevel(scene, o));
     return total;
-}
-
-namespace {
-
-std::string modes(const Scene& scene) {
-    return std::string(toString(scene.shading)) + " shading, " + std::string(toString(scene.lighting)) +
-           " lighting";
-}
-
-} // namespace
-
-std::string windowTitle(const DemoState& state, double frameMs) {
-    char timing[32];
-    std::snprintf(timing, sizeof timing, "%.2f ms", frameMs);
-    return "shadelab — " + modes(state.drawn()) + " | level " + std::to_string(state.level()) +
-           (state.autoLevel() ? " (auto)" : "") + " | " + std::to_string(state.triangleCount()) +
-           " triangles | " + timing + (state.viewReport.empty() ? "" : " | " + state.viewReport) +
-           " | H: keys" + (state.lastChange().empty() ? "" : " | " + state.lastChange());
-}
-
-std::string statusText(const DemoState& state) {
-    const Scene scene = state.drawn();
-    return modes(scene) + "\nlevel " + std::to_string(state.level()) + ", " +
-           (state.orthographic() ? "orthographic" : "perspective") + ", " +
-           (scene.vertexNormals == VertexNormals::Averaged ? "averaged" : "exact") +
-           " normals\nmaterial: " + state.materialName() + ", lights: " + state.lightsName() +
-           (state.viewReport.empty() ? "" : "\n" + state.viewReport);
-}
-
-double probeError255(const ProbeReport& probe) {
-    const glm::dvec3 d = glm::abs(probe.mode.color - probe.exact.color);
-    return 255 * std::max({d.x, d.y, d.z});
-}
-
-std::string probeText(const ProbeReport& probe, ShadingMode mode, LightingModel lighting) {
-    char line[200];
-    std::string text;
-    auto row = [&](const char* name, const glm::dvec3& a, const glm::dvec3& b) {
-        std::snprintf(line, sizeof line, "%-9s %6.3f %6.3f %6.3f | %6.3f %6.3f %6.3f\n", name, a.x, a.y, a.z,
-                      b.x, b.y, b.z);
-        text += line;
-    };
-    std::snprintf(line, sizeof line, "probe: object %zu, level %d, triangle %zu\n", probe.point.object + 1,
-                  probe.level, probe.triangle);
-    text += line;
-    std::snprintf(line, sizeof line, "%-9s %-20s | %s\n", "RGB", std::string(toString(mode)).c_str(),
-                  "exact");
-    text += line;
-    row("ambient", probe.mode.terms.ambient, probe.exact.terms.ambient);
-    row("diffuse", probe.mode.terms.diffuse, probe.exact.terms.diffuse);
-    row("specular", probe.mode.terms.specular, probe.exact.terms.specular);
-    row("pixel", probe.mode.color, probe.exact.color);
-    std::snprintf(line, sizeof line, "difference: %.2f/255 (largest of R, G, B)\n", probeError255(probe));
-    text += line;
-    const char* where = mode == ShadingMode::Flat ? "flat lights the triangle's centroid with its face normal"
-                        : mode == ShadingMode::Gouraud ? "Gouraud interpolates the vertices' terms"
-                        : mode == ShadingMode::Exact   ? "exact: the ray-cast sphere, its own normal"
-                                                       : "lit at the mesh point, interpolated normal";
-    text += std::string(where) + "\nview space, at the mode's point:\n";
-    const SurfacePoint& p = probe.mode.pointView;
-    text += "n (white)   " + formatVector(p.normal) + "\nv (green)   " + formatVector(p.toViewer) + "\n";
-    if (probe.light >= 0) {
-        text += "l (yellow)  " + formatVector(probe.mode.toLight) + ", light " +
-                std::to_string(probe.light + 1) + "\n" +
-                (lighting == LightingModel::Phong ? "r (magenta) " : "h (magenta) ") +
-                formatVector(probe.mode.specularVector) + "\n";
-    }
-    return text;
-}
-
-std::string probeText(const DemoState& state) {
-    const auto probe = state.probe();
-    if (!probe) return "";
-    const Scene shown = state.drawn();
-    return probeText(*probe, shown.shading, shown.lighting);
-}
-
-std::string presentationLabel(const DemoState& state) {
-    const Scene scene = state.drawn();
-    std::string label = std::string(toString(scene.shading)) + " shading\n" +
-                        std::string(toString(scene.lighting)) + " lighting | level " +
-                        std::to_string(state.level());
-    if (!scene.objects.empty()) {
-        char exponent[48];
-        std::snprintf(exponent, sizeof exponent, " | %s = %g",
-                      scene.lighting == LightingModel::BlinnPhong ? "beta" : "alpha",
-                      scene.objects[0].material.shininess);
-        label += exponent;
-    }
-    for (char& c : label) c = char(std::toupper(static_cast<unsigned char>(c)));
-    return label;
 }
 
 } // namespace shadelab::app

@@ -1,5 +1,7 @@
 // What the demo window shows and how keys and the mouse change it: plain data and pure functions, no GL
 // and no GLFW, so the key set is tested on the CPU and the screenshot state is exactly what is drawn.
+// Defined in demo_state.cpp (DemoState's commands and mouse, the presets), demo_camera.cpp (OrbitCamera,
+// current()), demo_keys.cpp (the bindings) and demo_text.cpp (title, status, probe table, label).
 #pragma once
 
 #include <optional>

@@ -6,52 +6,53 @@
 #include <regex>
 
 #include "shadelab/errors.h"
+#include "shadelab/scene_values.h"
 #include "shadelab/sphere.h"
 #include "shadelab/text.h"
 #include "shadelab/vocabulary.h"
 
 namespace shadelab::app {
 
+// The syntax is the flag's; each side's range is the scene's image.width and image.height (scene_values.h).
 void composeSize(Scene& scene, const std::string& text) {
     static const std::regex kSize(R"(([0-9]{1,9})x([0-9]{1,9}))");
     std::smatch m;
-    const std::string range = "1.." + std::to_string(kMaxImageSize);
     if (!std::regex_match(text, m, kSize))
-        throw InputError("--size: expected WxH with W and H in " + range + " (e.g. 512x512), got " +
-                         quotedValue(text));
-    const long width = std::stol(m[1]), height = std::stol(m[2]);
-    if (width < 1 || height < 1 || width > kMaxImageSize || height > kMaxImageSize)
-        throw InputError("--size: W and H must be in " + range + ", got " + quotedValue(text));
-    scene.width = int(width);
-    scene.height = int(height);
+        throw InputError("--size: expected WxH with W and H in " + toString(kImageSizeRange) +
+                         " (e.g. 512x512), got " + quotedValue(text));
+    const int width = std::stoi(m[1]), height = std::stoi(m[2]);
+    checkImageSize(width, "--size width");
+    checkImageSize(height, "--size height");
+    scene.width = width;
+    scene.height = height;
 }
 
 namespace {
 
-// "auto" or a whole number 0..kMaxSubdivisions; a larger level names the memory it would need.
+// "auto" or a whole number; its range is the scene's (checkSubdivisionLevel, which names the memory a
+// level above the maximum would need).
 int parseLevel(const std::string& text) {
     if (text == "auto") return kAutoSubdivisions;
     static const std::regex kLevel(R"(-?[0-9]{1,9})");
     if (!std::regex_match(text, kLevel))
-        throw InputError("--subdivisions: expected a level 0.." + std::to_string(kMaxSubdivisions) +
+        throw InputError("--subdivisions: expected a level " + toString(kSubdivisionRange) +
                          " or auto, got " + quotedValue(text));
     const int level = std::stoi(text);
     checkSubdivisionLevel(level, "--subdivisions");
     return level;
 }
 
-// A positive decimal number of pixels: digits, an optional fraction and exponent. Not hex (0x10), not
-// inf or nan, not empty, nothing after the number.
+// A decimal number of pixels: an optional sign, digits, an optional fraction and exponent. Not hex (0x10),
+// not inf or nan, not empty, nothing after the number. Its range is the scene's (checkTolerancePx), so a
+// negative number is refused there, as tolerance_px's is.
 double parseTolerance(const std::string& text) {
-    static const std::regex kDecimal(R"([+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?)");
-    const std::string shown = quotedValue(printable(text));
+    static const std::regex kDecimal(R"([-+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?)");
     if (!std::regex_match(text, kDecimal))
         throw InputError("--tolerance-px: expected a positive decimal number of pixels such as 0.5, got " +
-                         shown);
+                         quotedValue(printable(text)));
     const double value = std::strtod(text.c_str(), nullptr);
-    if (!(value > 0) || !std::isfinite(value))
-        throw InputError("--tolerance-px: must be a positive, finite number of pixels such as 0.5, got " +
-                         shown);
+    if (!std::isfinite(value)) failNotFinite("--tolerance-px", text); // 1e400, as a scene file's is refused
+    checkTolerancePx(value, "--tolerance-px");
     return value;
 }
 
@@ -71,10 +72,8 @@ Scene applyOverrides(Scene scene, const SceneOverrides& o, const std::string& pa
     if (o.depth) scene.depth = parseNameOrThrow(*o.depth, "--depth", kDepthModes);
     if (o.overlay) scene.overlay = parseNameOrThrow(*o.overlay, "--overlay", kOverlays);
     if (o.view) {
-        ViewParse parsed = parseView(*o.view);
-        if (!parsed.view) throw InputError("--view: " + quotedValue(*o.view) + ": " + parsed.error);
         const std::optional<double> at = scene.view.at;
-        scene.view = *parsed.view;
+        scene.view = parseViewOrThrow(*o.view, "--view");
         if (scene.view.kind == ViewKind::Split || scene.view.kind == ViewKind::Profile) scene.view.at = at;
     }
     if (o.tolerancePx) scene.tolerancePx = parseTolerance(*o.tolerancePx);

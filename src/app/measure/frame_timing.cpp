@@ -30,4 +30,17 @@ std::vector<double> timeFramesMs(int warmup, int frames, const std::function<voi
     return ms;
 }
 
+double medianOneOffMs(int repeats, const std::function<void()>& reset, const std::function<void()>& run) {
+    using Clock = std::chrono::steady_clock;
+    std::vector<double> ms;
+    for (int i = 0; i < repeats; ++i) {
+        reset();
+        gl::finish();
+        const auto start = Clock::now();
+        run();
+        ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+    }
+    return percentile(ms, 0.5);
+}
+
 } // namespace shadelab::app

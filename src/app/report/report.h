@@ -2,6 +2,8 @@
 // buys in accuracy and costs in time. measureReport() is the measuring core: it needs only a headless
 // context, so the GL tests call it without the command line; runReport() adds the scene, the files
 // (report.csv, report.json, report.png drawn by gnuplot) and the progress bar.
+// Defined in report.cpp (the options, runReport), report_measure.cpp (measureReport), report_error.cpp
+// (measureError, maxFaceNormalErrorDeg), report_files.cpp (the columns, CSV and JSON) and report_plot.cpp.
 #pragma once
 
 #include <cstddef>

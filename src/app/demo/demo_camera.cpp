@@ -1,0 +1,120 @@
+// The demo's camera: the orbit camera, the mouse's orbit and zoom, and DemoState::current(), which makes
+// the scene to draw from the edited scene, the orbit and the chosen projection.
+#include "app/demo/demo_state.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace shadelab::app {
+namespace {
+
+constexpr double kDegree = std::numbers::pi / 180;
+
+// The extent of the scene's objects around the camera target, to keep zooming outside them and inside far.
+double sceneExtent(const Scene& scene, const glm::dvec3& target) {
+    double extent = 0;
+    for (const SceneObject& o : scene.objects) {
+        const double r = o.radius * std::max({std::abs(o.scale.x), std::abs(o.scale.y), std::abs(o.scale.z)});
+        extent = std::max(extent, glm::length(o.center - target) + r);
+    }
+    return extent;
+}
+
+} // namespace
+
+OrbitCamera OrbitCamera::looking(const glm::dvec3& eye, const glm::dvec3& target) {
+    OrbitCamera camera;
+    camera.target = target;
+    const glm::dvec3 d = eye - target;
+    camera.distance = glm::length(d);
+    camera.azimuthRad = std::atan2(d.x, d.z);
+    camera.elevationRad = std::clamp(std::asin(std::clamp(d.y / camera.distance, -1.0, 1.0)),
+                                     -kMaxElevationRad, kMaxElevationRad);
+    return camera;
+}
+
+glm::dvec3 OrbitCamera::eye() const {
+    const double c = std::cos(elevationRad);
+    return target +
+           distance * glm::dvec3(c * std::sin(azimuthRad), std::sin(elevationRad), c * std::cos(azimuthRad));
+}
+
+void OrbitCamera::drag(double dxPixels, double dyPixels) {
+    azimuthRad = std::remainder(azimuthRad - 0.5 * kDegree * dxPixels, 2 * std::numbers::pi);
+    elevationRad = std::clamp(elevationRad + 0.5 * kDegree * dyPixels, -kMaxElevationRad, kMaxElevationRad);
+}
+
+void OrbitCamera::zoom(double wheelSteps) {
+    distance = std::clamp(distance * std::pow(0.9, wheelSteps), 1e-12, 1e12); // finite and non-zero
+}
+
+void DemoState::drag(double dxPixels, double dyPixels) {
+    if (holdingDivider_) return; // the drag moves the split's divider (pointer())
+    camera_.drag(dxPixels, dyPixels);
+    cameraMoved_ = true;
+}
+
+void DemoState::zoom(double wheelSteps) {
+    camera_.zoom(wheelSteps);
+    // Clamp the stored distance itself, so the wheel never has to unwind steps it had no effect with.
+    // Outside the objects comes first; inside the far plane where both fit.
+    const double extent = sceneExtent(scene_, camera_.target);
+    const double closest = extent + scene_.projection.near * 1.5;
+    // A millionth of the far distance short of it: at exactly far - extent the eye, rebuilt from its angles,
+    // can land an ulp beyond, and the object's back would touch the far plane.
+    const double farthest = std::max(closest, scene_.projection.far * (1 - 1e-6) - extent);
+    camera_.distance = std::clamp(camera_.distance, closest, farthest);
+    cameraMoved_ = true;
+}
+
+Scene DemoState::current(int width, int height) const {
+    Scene s = scene_;
+    if (width > 0 && height > 0) {
+        s.width = width;
+        s.height = height;
+    }
+    if (cameraMoved_) {
+        s.eye = camera_.eye();
+        s.target = camera_.target;
+        s.up = {0, 1, 0}; // the orbit's elevation stays short of the poles: never parallel
+    }
+
+    const Projection& own = initial_.projection;
+    const double aspect = double(s.width) / s.height;
+    const double distance = glm::length(s.eye - s.target);
+    // The half-height the view shows at the target: ties the two projections together so O keeps the size.
+    const double zoom = distance / initialCamera_.distance;
+    double halfHeight = 0;
+    if (own.type == ProjectionType::Orthographic)
+        halfHeight = 0.5 * (own.top - own.bottom) * zoom;
+    else if (own.type == ProjectionType::Perspective)
+        halfHeight = distance * std::tan(0.5 * own.fovyDeg * kDegree);
+    else
+        halfHeight = distance * 0.5 * (own.top - own.bottom) / own.near;
+
+    if (orthographic_ && own.type != ProjectionType::Orthographic) {
+        s.projection = {ProjectionType::Orthographic,
+                        own.fovyDeg,
+                        -halfHeight * aspect,
+                        halfHeight * aspect,
+                        -halfHeight,
+                        halfHeight,
+                        own.near,
+                        own.far};
+    } else if (orthographic_) {
+        // The scene's own box, zoomed, and widened or narrowed to the framebuffer's aspect.
+        const double centreX = 0.5 * (own.left + own.right), halfWidth = halfHeight * aspect;
+        const double centreY = 0.5 * (own.bottom + own.top) * zoom;
+        s.projection.left = centreX * zoom - halfWidth;
+        s.projection.right = centreX * zoom + halfWidth;
+        s.projection.bottom = centreY - halfHeight;
+        s.projection.top = centreY + halfHeight;
+    } else if (own.type == ProjectionType::Orthographic) {
+        s.projection.type = ProjectionType::Perspective;
+        s.projection.fovyDeg = 2 * std::atan(halfHeight / distance) / kDegree;
+    }
+    return s;
+}
+
+} // namespace shadelab::app

@@ -1,0 +1,70 @@
+// The demo's key bindings, the one spelling of every key that the window, the help overlay, --help and
+// the README table share.
+#include "app/demo/demo_state.h"
+
+#include <algorithm>
+
+#include "shadelab/window.h"
+
+namespace shadelab::app {
+namespace {
+
+constexpr int kKeyMinus = '-', kKeyEqual = '='; // '+' is Shift + '=' on most layouts
+
+const std::vector<KeyBinding>& bindings() {
+    static const std::vector<KeyBinding> kBindings = {
+        {{'1', 'F'}, "1 / F", "flat shading", Command::Flat},
+        {{'2', 'G'}, "2 / G", "Gouraud shading", Command::Gouraud},
+        {{'3', 'P'}, "3 / P", "Phong shading", Command::Phong},
+        {{'4', 'T'}, "4 / T", "toon shading", Command::Toon},
+        {{'5', 'X'}, "5 / X", "exact: the sphere ray-cast per pixel", Command::Exact},
+        {{'E'}, "E", "error view: |mode - exact| heatmap with its mean and max", Command::ToggleErrorView},
+        {{'V'}, "V", "split view: the mode beside exact; drag the divider", Command::ToggleSplitView},
+        {{'I'}, "I", "intensity profile along the row under the pointer", Command::ToggleProfileView},
+        {{'B'}, "B", "Phong <-> Blinn-Phong lighting", Command::ToggleLighting},
+        {{kKeyEqual, kKeyKeypadAdd}, "+", "subdivision level up", Command::LevelUp},
+        {{kKeyMinus, kKeyKeypadSubtract}, "-", "subdivision level down", Command::LevelDown},
+        {{'A'}, "A", "automatic level: silhouette error < tolerance_px", Command::AutoLevel},
+        {{'O'}, "O", "perspective <-> orthographic", Command::ToggleProjection},
+        {{'N'}, "N", "averaged <-> exact vertex normals", Command::ToggleNormals},
+        {{'W'}, "W", "overlay: wireframe, then face and vertex normals, then none", Command::ToggleOverlay},
+        {{'M'}, "M", "next material preset", Command::NextMaterial},
+        {{'L'}, "L", "next light set-up", Command::NextLights},
+        {{'R'}, "R", "reset the view", Command::ResetView},
+        {{'S'}, "S", "save a screenshot (PNG + scene JSON)", Command::Screenshot},
+        {{'C'}, "C", "show / hide the control panel", Command::TogglePanel},
+        {{'H', kKeyF1}, "H / F1", "show / hide this help", Command::ToggleHelp},
+        {{kKeyF2}, "F2", "presentation label: mode, lighting, level, exponent", Command::TogglePresentation},
+        {{kKeyF11}, "F11", "full screen", Command::ToggleFullScreen},
+        {{kKeyEscape}, "Esc", "quit", Command::Quit},
+    };
+    return kBindings;
+}
+
+} // namespace
+
+std::span<const KeyBinding> keyBindings() {
+    return bindings();
+}
+
+std::optional<Command> commandForKey(int key) {
+    for (const KeyBinding& binding : bindings())
+        if (std::find(binding.keys.begin(), binding.keys.end(), key) != binding.keys.end())
+            return binding.command;
+    return std::nullopt;
+}
+
+std::string keyHelpText() {
+    std::string text;
+    for (const KeyBinding& b : bindings()) {
+        std::string label(b.label);
+        label.resize(std::max<std::size_t>(label.size(), 8), ' ');
+        text += label + " " + std::string(b.action) + "\n";
+    }
+    text += "drag    orbit around the target\nwheel   zoom\n"
+            "right-drag  move the light around the target\n"
+            "click   probe a surface point: l, n, v, r/h and the terms, mode vs exact\n";
+    return text;
+}
+
+} // namespace shadelab::app

@@ -1,0 +1,201 @@
+// measureReport: every shading mode × lighting model × level of one scene, each row timed and measured.
+// Frame times follow the bench's method (app/measure/frame_timing.h): one context, one renderer and one
+// offscreen target for the whole run, glFinish after every frame, median and 10th/90th percentiles of the
+// frames after a warm-up. The error of each configuration is taken from the same scene rendered once more
+// into an RGBA32F target, so that it is the shading's error and not the 8-bit rounding's.
+#include "app/report/report.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <utility>
+
+#include "app/measure/frame_timing.h"
+#include "shadelab/errors.h"
+#include "shadelab/gl/loader.h"
+#include "shadelab/gl/mesh.h"
+#include "shadelab/gl/program.h"
+#include "shadelab/gl/render_target.h"
+#include "shadelab/gl/renderer.h"
+#include "shadelab/subdivision.h"
+
+namespace shadelab::app {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// One level's mesh, built and timed once per configuration of levels.
+struct BuiltLevel {
+    SphereMesh mesh;
+    double buildMs = 0;
+    double radialDeviation = 0, normalErrorDeg = 0;
+};
+
+// The GL objects of one run; destroyed (while the context is current) when measureReport returns.
+struct GlRun {
+    GlRun(int width, int height)
+        : frameTarget(width, height, gl::ColorFormat::Rgba8),
+          errorTarget(width, height, gl::ColorFormat::Rgba32F),
+          tetrahedronSmooth(buildSphere(0), gl::MeshLayout::Smooth),
+          tetrahedronFlat(buildSphere(0), gl::MeshLayout::Flat) {}
+    gl::Renderer renderer; // specialized programs, as `shadelab render` draws by default
+    gl::RenderTarget frameTarget, errorTarget;
+    gl::GpuMesh tetrahedronSmooth, tetrahedronFlat; // the first draw after a compile
+};
+
+gl::MeshLayout layoutOf(ShadingMode shading) {
+    return shading == ShadingMode::Flat ? gl::MeshLayout::Flat : gl::MeshLayout::Smooth;
+}
+
+std::string configurationName(ShadingMode shading, LightingModel lighting, int levelConfig) {
+    return std::string(toString(shading)) + "/" + std::string(toString(lighting)) + " " +
+           (levelConfig == kAutoSubdivisions ? std::string("auto") : "level " + std::to_string(levelConfig));
+}
+
+constexpr int kOneOffRepeats = 3;
+
+// Compile and link of a program variant up to its first draw, synchronized: Mesa translates to machine code
+// at the first draw, not at glLinkProgram. Measured once per variant, before the renderer builds its own
+// copy: the first compile of that source in the process (the driver's on-disk shader cache may still
+// serve it; see the README).
+double compileMs(GlRun& gl, const gl::ProgramVariant& variant, gl::MeshLayout layout) {
+    gl.frameTarget.bind();
+    gl::finish();
+    const auto start = Clock::now();
+    const gl::Program program = gl::buildProgram(variant);
+    gl::drawWith(program, layout == gl::MeshLayout::Flat ? gl.tetrahedronFlat : gl.tetrahedronSmooth);
+    gl::finish();
+    return msSince(start);
+}
+
+// The upload and frame times of `scene` as configured.
+void measureTime(GlRun& gl, const Scene& scene, const std::map<int, BuiltLevel>& built,
+                 const ReportOptions& o, ReportRow& row) {
+    const gl::MeshLayout layout = layoutOf(scene.shading);
+    for (const auto& entry : built) {
+        const SphereMesh& sphere = entry.second.mesh; // a structured binding cannot be captured (C++20)
+        std::optional<gl::GpuMesh> mesh;
+        row.uploadMs += medianOneOffMs(
+            kOneOffRepeats, [&] { mesh.reset(); },
+            [&] {
+                mesh.emplace(sphere, layout);
+                gl::finish();
+            });
+    }
+
+    gl.frameTarget.bind();
+    const std::vector<double> ms =
+        timeFramesMs(o.warmup, o.frames, [&] { gl.renderer.render(scene, scene.width, scene.height); });
+    row.frameMedianMs = percentile(ms, 0.5);
+    row.frameP10Ms = percentile(ms, 0.1);
+    row.frameP90Ms = percentile(ms, 0.9);
+}
+
+void setGeometry(const Scene& scene, const std::map<int, BuiltLevel>& built, ReportRow& row) {
+    for (const SceneObject& object : scene.objects) {
+        const int level = subdivisionLevel(scene, object);
+        row.triangles += sphereTriangleCount(level);
+        row.level = std::max(row.level, level);
+    }
+    for (const auto& [level, b] : built) {
+        const std::size_t triangles = sphereTriangleCount(level);
+        row.vertexBytes +=
+            scene.shading == ShadingMode::Flat
+                ? 3 * triangles * sizeof(FlatVertex)
+                : sphereVertexCount(level) * sizeof(SmoothVertex) + 3 * triangles * sizeof(std::uint32_t);
+        row.maxRadialDeviation = std::max(row.maxRadialDeviation, b.radialDeviation);
+        row.maxNormalErrorDeg = std::max(row.maxNormalErrorDeg, b.normalErrorDeg);
+    }
+}
+
+} // namespace
+
+std::vector<ReportRow> measureReport(HeadlessContext& context, const Scene& scene,
+                                     const ReportOptions& options, const ReportProgress& progress) {
+    validateReportOptions(options);
+    validateScene(scene);
+    if (scene.objects.empty())
+        throw InputError("report: the scene has no objects, so there is nothing to measure");
+
+    std::vector<int> levelConfigs;
+    for (int level = options.minLevel; level <= options.maxLevel; ++level) levelConfigs.push_back(level);
+    if (options.includeAuto) levelConfigs.push_back(kAutoSubdivisions);
+    const std::size_t perMode = levelConfigs.size();
+    const int total = int(kLightingModels.size() * kShadingModes.size() * perMode);
+    std::vector<ReportRow> rows(static_cast<std::size_t>(total));
+
+    context.makeCurrent();
+    GlRun gl(scene.width, scene.height);
+    // Per lighting model × toon or not: the exact image depends on nothing else the report varies.
+    std::map<std::pair<LightingModel, bool>, ReferenceImage> references;
+    std::map<gl::ProgramVariant, double> compileTimes;
+    int done = 0;
+
+    for (std::size_t c = 0; c < perMode; ++c) {
+        Scene base = scene;
+        base.view = View{}; // the report times and measures the shading itself, not a teaching view of it
+        for (SceneObject& object : base.objects) object.subdivisions = levelConfigs[c];
+        std::map<int, BuiltLevel> built; // the distinct levels the objects use: what gets uploaded
+        for (const SceneObject& object : base.objects) {
+            const int level = subdivisionLevel(base, object);
+            if (built.count(level)) continue;
+            BuiltLevel& b = built[level];
+            b.buildMs = medianOneOffMs(
+                kOneOffRepeats, [&] { b.mesh = SphereMesh{}; },
+                [&] { b.mesh = buildSphere(level, scene.vertexNormals); });
+            b.radialDeviation = maxRadialDeviation(b.mesh);
+            b.normalErrorDeg = maxFaceNormalErrorDeg(b.mesh);
+        }
+        for (std::size_t l = 0; l < kLightingModels.size(); ++l) {
+            for (std::size_t s = 0; s < kShadingModes.size(); ++s) {
+                Scene configured = base;
+                configured.lighting = kLightingModels[l];
+                configured.shading = kShadingModes[s];
+                if (progress)
+                    progress(done, total,
+                             configurationName(configured.shading, configured.lighting, levelConfigs[c]));
+
+                ReportRow& row = rows[(l * kShadingModes.size() + s) * perMode + c];
+                row.shading = configured.shading;
+                row.lighting = configured.lighting;
+                row.autoLevel = levelConfigs[c] == kAutoSubdivisions;
+                for (const auto& [level, b] : built) row.meshBuildMs += b.buildMs;
+                setGeometry(configured, built, row);
+                const gl::ProgramVariant variant =
+                    gl::ProgramVariant::forScene(configured, gl.renderer.specialize());
+                if (!compileTimes.count(variant))
+                    compileTimes[variant] = compileMs(gl, variant, layoutOf(configured.shading));
+                row.compileMs = compileTimes[variant];
+                measureTime(gl, configured, built, options, row);
+
+                const bool toon = configured.shading == ShadingMode::Toon;
+                auto reference = references.find({configured.lighting, toon});
+                if (reference == references.end())
+                    reference =
+                        references.emplace(std::pair{configured.lighting, toon}, renderReference(configured))
+                            .first;
+                gl.errorTarget.bind();
+                gl.renderer.render(configured, configured.width, configured.height);
+                const ReportError e = measureError(gl.errorTarget.readFloat(), reference->second);
+                row.interiorMeanError = e.interiorMean;
+                row.interiorMaxError = e.interiorMax;
+                row.interiorPixels = e.interiorPixels;
+                row.psnrDb = e.psnrDb;
+                row.ssim = e.ssim;
+                row.coverageMismatch = e.coverageMismatch;
+                ++done;
+            }
+        }
+    }
+    if (progress) progress(done, total, "done");
+    return rows;
+}
+
+} // namespace shadelab::app

@@ -1,0 +1,69 @@
+// What the scene's source files share; not a public header. The scene is read in two steps, each with its
+// file — scene_json.cpp (the file's bytes → a JSON tree, refusing hostile text) and scene_parse.cpp (the
+// tree → a Scene: structure and types) — while scene_check.cpp holds every range and the pieces of the
+// messages, scene_write.cpp the way back to JSON, and scene.cpp the vocabularies, defaults and matrices.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+#include <glm/glm.hpp>
+#include <nlohmann/json_fwd.hpp>
+
+#include "shadelab/errors.h"
+#include "shadelab/lighting.h"
+#include "shadelab/scene.h"
+#include "shadelab/scene_values.h"
+
+namespace shadelab::detail {
+
+using Json = nlohmann::json;
+
+// ---- message pieces (scene_check.cpp) ----
+
+// What std::to_chars(value) gives: the shortest form that reads back as `value`.
+std::string formatNumber(double value);
+std::string formatVec(const glm::dvec3& v); // "[1, 0, -2.5]"
+// JSON paths: keyPath("objects[0]", "material") is "objects[0].material"; a key that is not plain is quoted
+// in brackets (`["a b"]`).
+std::string keyPath(std::string_view parent, std::string_view key);
+std::string indexPath(std::string_view parent, std::size_t index); // "objects[2]"
+// Throws InputError "<path>: <message>" (the message alone when path is empty).
+[[noreturn]] void fail(std::string_view path, std::string_view message);
+// Rethrows an error from camera.h or sphere.h, adding `path` unless its message already starts with it.
+[[noreturn]] void failWithin(std::string_view path, const InputError& error);
+// "<path>: must be between lo and hi, got <shown>".
+[[noreturn]] void failOutOfRange(IntRange range, std::string_view shown, std::string_view path);
+
+// ---- range checks (scene_check.cpp), called by parseScene as it reads and again by validateScene ----
+
+inline constexpr IntRange kToonBandRange{kMinToonBands, kMaxToonBands};
+
+void checkFinite(double value, std::string_view path);
+void checkIntRange(int value, IntRange range, std::string_view path);
+void checkSubdivisions(int level, std::string_view path); // a level, or kAutoSubdivisions
+void checkViewAt(double at);
+void checkSceneSize(const Scene& scene); // image.width, image.height
+void checkImage(const Scene& scene);     // size and background
+void checkCamera(const Scene& scene);
+void checkProjection(const Projection& p);
+void checkObject(const SceneObject& object, const std::string& path);
+void checkObjectCount(std::size_t count);
+void checkLightCount(std::size_t count);
+// Only the fields the light's type uses are checked: the others are ignored by the lighting code.
+void checkLight(const Light& light, const std::string& path);
+
+bool hasPosition(LightType type);
+bool hasDirection(LightType type);
+
+// ---- scene text (scene_json.cpp) ----
+
+// A regular file, or "-" for standard input; an InputError naming the path for anything else.
+std::string readSceneFile(const std::filesystem::path& path);
+// The text as a JSON tree: nesting bounded, duplicate keys refused, every syntax error named with its
+// byte and, where a number is out of range, its JSON path.
+Json parseJson(std::string_view text);
+
+} // namespace shadelab::detail
