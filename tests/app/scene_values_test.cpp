@@ -122,5 +122,32 @@ TEST(OneDoorPerValue, FlagSyntaxQuotesTheSharedRange) {
               "--subdivisions: expected a level 0..10 or auto, got \"1.5\"");
 }
 
+// Each named value's flag gives the scene file's message with its own name for the field, and lists the
+// vocabulary itself (the --shading list was once typed by hand and had to be edited when exact arrived).
+TEST(OneDoorPerValue, FlagsAndSceneFilesRefuseASpellingAlike) {
+    struct Field {
+        const char* key;
+        std::optional<std::string> SceneOverrides::*flag;
+    };
+    for (const Field& f :
+         {Field{"shading", &SceneOverrides::shading}, Field{"lighting", &SceneOverrides::lighting},
+          Field{"depth", &SceneOverrides::depth}, Field{"overlay", &SceneOverrides::overlay}}) {
+        SceneOverrides o;
+        o.*f.flag = "nonsense\x1b[31m";
+        const std::string fromFlag = refusal([&] { applyOverrides(Scene{}, o, ""); });
+        const std::string fromFile = refusal(
+            [&] { parseScene(std::string(R"({")") + f.key + R"(": "nonsense\u001b[31m"})", "s.json"); });
+        SCOPED_TRACE(f.key);
+        EXPECT_EQ(fromFlag.substr(0, 2), "--");
+        EXPECT_EQ(fromFlag.substr(2), fromFile.substr(std::string("s.json: ").size()));
+        EXPECT_EQ(fromFlag.find('\x1b'), std::string::npos) << "a control character reached the message";
+    }
+    SceneOverrides o;
+    o.shading = "x";
+    const std::string message = refusal([&] { applyOverrides(Scene{}, o, ""); });
+    for (ShadingMode mode : kAllShadingModes)
+        EXPECT_NE(message.find(toString(mode)), std::string::npos) << message;
+}
+
 } // namespace
 } // namespace shadelab::app
