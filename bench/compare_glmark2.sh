@@ -44,17 +44,58 @@ done
 [[ -s $tmp/display ]] || fail "Xvfb gave no display number within 10 s"
 display=:$(head -n1 "$tmp/display")
 
-# The shadelab scene of `shadelab bench`'s frame/glmark2-equivalent/phong, written out to check the screen
-# coverage independently: a unit sphere at the distance d where its silhouette's radius is 170 px of 600
-# (R = 300·tan(asin(1/d))/tan(fovy/2)); glmark2's cat covers about 15–20 % of 800×600.
+# glmark2 frames any model from its bounding box (src/scene-shading.cpp upstream): r = half the box's
+# diagonal, the model's centre at distance 2 + r, fovy = 2·atan(r/(2 + r)), near 2, far 2 + 2r. It is handed
+# shadelab's level-6 sphere as a model (below), so both programs draw the same 16,384 faces at the same
+# coverage; its cat is measured as well, as glmark2 ships it.
+#
+# The sphere as DESIGN §1 builds it (the tetrahedron, each triangle split into (a,ab,ac), (ab,b,bc),
+# (bc,c,ac), (ab,bc,ac), midpoints numbered on first use): the vertices and triangles of shadelab's mesh in
+# its order, written as float text (9 significant digits round-trip a float). glmark2 computes its own
+# vertex normals (averaged, as shadelab's).
+glmark2_data=${GLMARK2_DATA:-/usr/share/glmark2}
+[[ -d $glmark2_data/shaders ]] || fail "no glmark2 data at '$glmark2_data' (set GLMARK2_DATA to its folder)"
+mkdir -p "$tmp/glmark2-data/models"
+for part in shaders textures; do ln -s "$glmark2_data/$part" "$tmp/glmark2-data/$part"; done
+ln -s "$glmark2_data/models/cat.3ds" "$tmp/glmark2-data/models/cat.3ds"
+python3 - "$tmp/glmark2-data/models/shadelab-sphere.obj" <<'EOF'
+import math, sys
+s2, s6 = math.sqrt(2), math.sqrt(6)
+points = [(0, 0, 1), (0, 2 * s2 / 3, -1 / 3), (-s6 / 3, -s2 / 3, -1 / 3), (s6 / 3, -s2 / 3, -1 / 3)]
+triangles = [(3, 2, 1), (0, 1, 2), (0, 3, 1), (0, 2, 3)]
+for level in range(6):
+    midpoints = {}
+    def midpoint(a, b):
+        key = (min(a, b), max(a, b))
+        if key not in midpoints:
+            m = [(points[a][i] + points[b][i]) / 2 for i in range(3)]
+            length = math.sqrt(sum(c * c for c in m))
+            points.append(tuple(c / length for c in m))
+            midpoints[key] = len(points) - 1
+        return midpoints[key]
+    split = []
+    for a, b, c in triangles:
+        ab, bc, ac = midpoint(a, b), midpoint(b, c), midpoint(a, c)
+        split += [(a, ab, ac), (ab, b, bc), (bc, c, ac), (ab, bc, ac)]
+    triangles = split
+assert (len(points), len(triangles)) == (8194, 16384)
+with open(sys.argv[1], "w") as out:
+    out.writelines("v %.9g %.9g %.9g\n" % p for p in points)
+    out.writelines("f %d %d %d\n" % (a + 1, b + 1, c + 1) for a, b, c in triangles)
+EOF
+
+# The shadelab scene of `shadelab bench`'s frame/glmark2-equivalent/phong, written out to check its coverage
+# independently: glmark2's framing of the unit sphere (r = √3, its box being [−1, 1]³ to within 1e-3), a
+# silhouette of 179.8 px radius of 600.
 python3 - "$tmp/scene.json" <<'EOF'
 import json, math, sys
-fovy, radius_px, half_height = 40.0, 170.0, 300.0
-d = 1 / math.sin(math.atan(radius_px / half_height * math.tan(math.radians(fovy / 2))))
+r = math.sqrt(3)
+d = 2 + r
+fovy = math.degrees(2 * math.atan(r / d))
 scene = {
     "image": {"width": 800, "height": 600, "background": [1, 0, 1]},
     "camera": {"eye": [0, 0, d], "target": [0, 0, 0], "up": [0, 1, 0]},
-    "projection": {"type": "perspective", "fovy_deg": fovy, "near": 0.5, "far": 20},
+    "projection": {"type": "perspective", "fovy_deg": fovy, "near": 2, "far": 2 + 2 * r},
     "shading": "phong", "lighting": "phong",
     "objects": [{"center": [0, 0, 0], "radius": 1, "subdivisions": 6,
                  "material": {"ambient": [0.2] * 3, "diffuse": [0, 0, 1], "specular": [1, 1, 1],
@@ -66,19 +107,21 @@ json.dump(scene, open(sys.argv[1], "w"), indent=2)
 EOF
 "$shadelab" render "$tmp/scene.json" --out "$tmp/coverage.png" >/dev/null
 
+modes=(gouraud blinn-phong-inf phong cel)
 glmark2_round() {
-    local out=$1
-    DISPLAY=$display glmark2 --off-screen -s 800x600 \
-        -b "clear:duration=$duration" \
-        -b "shading:shading=gouraud:duration=$duration" \
-        -b "shading:shading=blinn-phong-inf:duration=$duration" \
-        -b "shading:shading=phong:duration=$duration" \
-        -b "shading:shading=cel:duration=$duration" >"$out" 2>&1 || fail "glmark2 failed: $(tail -5 "$out")"
+    local out=$1 benchmarks=(-b "clear:duration=$duration") model mode
+    for model in shadelab-sphere cat; do
+        for mode in "${modes[@]}"; do
+            benchmarks+=(-b "shading:shading=$mode:model=$model:duration=$duration")
+        done
+    done
+    DISPLAY=$display glmark2 --data-path "$tmp/glmark2-data" --off-screen -s 800x600 "${benchmarks[@]}" \
+        >"$out" 2>&1 || fail "glmark2 failed: $(tail -5 "$out")"
     grep -q "FrameTime" "$out" || fail "glmark2 printed no frame times: $(tail -5 "$out")"
 }
 
 for round in $(seq "$rounds"); do
-    echo "round $round/$rounds: glmark2 (5 scenes × ${duration} s) ..." >&2
+    echo "round $round/$rounds: glmark2 (9 scenes × ${duration} s) ..." >&2
     glmark2_round "$tmp/glmark2-$round.txt"
     echo "round $round/$rounds: shadelab bench (${frames} frames per configuration) ..." >&2
     "$shadelab" bench --size 800x600 --frames "$frames" \
@@ -131,8 +174,9 @@ for r in range(1, rounds + 1):
     for line in open(f"{tmp}/glmark2-{r}.txt"):
         m = re.match(r"\[(\w+)\] (.*): FPS: \d+ FrameTime: ([\d.]+) ms", line)
         if m:
-            mode = re.search(r"shading=([\w-]+)", m.group(2))
-            glmark2.setdefault(mode.group(1) if mode else m.group(1), []).append(float(m.group(3)))
+            mode, model = re.search(r"shading=([\w-]+)", m.group(2)), re.search(r"model=([\w-]+)", m.group(2))
+            key = (mode.group(1), model.group(1)) if mode else (m.group(1), None)
+            glmark2.setdefault(key, []).append(float(m.group(3)))
     report = json.load(open(f"{tmp}/shadelab-{r}.json"))
     renderer = report["renderer"]
     for name, figures in report["results"].items():
@@ -145,9 +189,10 @@ def sl(name, key):
     return med([f[key] for f in shadelab[name]])
 
 print(f"\nshadelab: {renderer}; glmark2 under Xvfb, --off-screen (glFinish per frame, as shadelab), 800x600")
-print(f"coverage: shadelab render of the equivalent scene covers {covered} px "
+print(f"coverage: shadelab's render of the equivalent scene covers {covered} px "
       f"({100 * covered / (width * height):.1f} % of {width}x{height}; the bench counted "
-      f"{sl('frame/glmark2-equivalent/phong', 'covered_px'):.0f} px); glmark2's cat about 15-20 %")
+      f"{sl('frame/glmark2-equivalent/phong', 'covered_px'):.0f} px); glmark2 frames the same sphere the "
+      f"same way (179.8 px radius); its cat covers about 15-20 %")
 print(f"frame times in ms: glmark2's mean over {duration} s, shadelab's mean (median) over its frames; "
       f"median over {rounds} round(s); ratio = shadelab mean / glmark2 mean\n")
 equivalent = "frame/glmark2-equivalent/"
@@ -156,10 +201,16 @@ rows = [("clear", "clear", "frame/limits/clear"),
         ("blinn-phong-inf", "phong shading, blinn-phong, directional", equivalent + "blinn-phong-inf"),
         ("phong", "phong shading, phong, point light", equivalent + "phong"),
         ("cel", "toon, 2 bands, point light", equivalent + "cel")]
-print(f"{'glmark2':<16} {'ms':>7}   {'shadelab':<42} {'ms':>7} {'(median)':>9}  {'ratio':>6}")
+print(f"{'':<16} {'glmark2, same sphere':>21}   {'shadelab':<42} {'ms':>6} {'(median)':>9}"
+      f"  {'ratio':>6}   {'glmark2 cat':>11}  {'ratio':>6}")
 for g, label, name in rows:
-    gm, sm, sd = med(glmark2[g]), sl(name, "mean_ms"), sl(name, "median_ms")
-    print(f"{g:<16} {gm:7.2f}   {label:<42} {sm:7.2f} {f'({sd:.2f})':>9}  {sm / gm:6.2f}")
+    sm, sd = sl(name, "mean_ms"), sl(name, "median_ms")
+    if g == "clear":
+        gs = gc = med(glmark2[("clear", None)])
+    else:
+        gs, gc = med(glmark2[(g, "shadelab-sphere")]), med(glmark2[(g, "cat")])
+    print(f"{g:<16} {gs:18.2f} ms   {label:<42} {sm:6.2f} {f'({sd:.2f})':>9}  {sm / gs:6.2f}"
+          f"   {gc:8.2f} ms  {sm / gc:6.2f}")
 print("\nshadelab's limits for this geometry (no lighting):")
 for label, name in [("full-screen fill, 800x600", "frame/limits/fill"),
                     ("one-colour sphere, back faces drawn", equivalent + "one-colour"),

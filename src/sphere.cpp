@@ -53,16 +53,27 @@ template <typename Body> void inParallel(std::size_t n, const Body& body) {
 }
 
 // The midpoint vertex of edge `number` (end points a, b), numbered on first use: vertex first + k for the
-// k-th midpoint of the level, whose end points are parents[k]. Positions are computed afterwards.
-inline std::uint32_t midpointOf(std::vector<std::uint32_t>& midpoint, std::vector<glm::uvec2>& parents,
-                                std::uint32_t first, std::uint32_t number, std::uint32_t a, std::uint32_t b) {
-    std::uint32_t& m = midpoint[number];
-    if (m == kNoVertex) {
-        m = first + std::uint32_t(parents.size());
-        parents.push_back({a, b});
+// k-th midpoint of the level, whose end points are parents[k]. `use` (3·triangle + the edge's place in it:
+// 0 ab, 1 bc, 2 ac) is recorded in users[k]: the triangle that made the midpoint, then the one that shares
+// its edge. Positions are computed afterwards.
+struct Midpoints {
+    std::vector<std::uint32_t> ofEdge; // per edge of the level before: its midpoint vertex, or kNoVertex
+    std::vector<glm::uvec2> parents;   // per midpoint: its edge's end points
+    std::vector<glm::uvec2> users;     // per midpoint: the two uses of its edge, in triangle order
+    std::uint32_t first = 0;           // the vertex number of midpoint 0
+
+    std::uint32_t of(std::uint32_t number, std::uint32_t a, std::uint32_t b, std::uint32_t use) {
+        std::uint32_t& m = ofEdge[number];
+        if (m == kNoVertex) {
+            m = first + std::uint32_t(parents.size());
+            parents.push_back({a, b});
+            users.push_back({use, kNoVertex});
+        } else {
+            users[m - first].y = use;
+        }
+        return m;
     }
-    return m;
-}
+};
 
 glm::dvec3 faceNormal(const std::vector<glm::dvec3>& p, const glm::uvec3& t) {
     return glm::normalize(glm::cross(p[t.y] - p[t.x], p[t.z] - p[t.x]));
@@ -190,9 +201,52 @@ void tetrahedronEdges(EdgeLevel& level) {
 struct SphereBuilder::Scratch {
     EdgeLevel edges, nextEdges;
     std::vector<glm::uvec3> next; // the triangles of the level being made (swapped with the mesh's)
-    std::vector<std::uint32_t> midpoint;
-    std::vector<glm::uvec2> parents; // per midpoint of the level: its edge's end points
+    Midpoints midpoints;          // of the split being made; after the build, of the last split
 };
+
+namespace {
+
+// The children of a split triangle (a, b, c) are (a,ab,ac), (ab,b,bc), (bc,c,ac), (ab,bc,ac): child k < 3
+// holds corner k, and the midpoint of the edge in place s (ab, bc, ac) lies in these three children.
+constexpr std::array<std::array<int, 3>, 3> kChildrenAtEdge = {{{0, 1, 3}, {1, 2, 3}, {0, 2, 3}}};
+
+// DESIGN §1's averaged normals: the sum of the unit normals of each vertex's faces, in triangle order (the
+// order one pass over the triangles adds them in), normalized. Instead of that pass, each vertex gathers its
+// faces from the last split, which fixes them: a vertex older than the split is corner k of the parents it
+// belonged to and lies in child k of each, one face per parent in parent order; a midpoint lies in three
+// children of each of the two parents that share its edge (users). The same additions in the same order:
+// the same sums, bit for bit, and no pass over all triangles per part.
+void averagedNormals(SphereMesh& mesh, const std::vector<glm::uvec3>& parentTriangles,
+                     const Midpoints& made) {
+    const std::vector<glm::dvec3>& faceNormals = mesh.faceNormals;
+    std::vector<glm::dvec3>& normals = mesh.vertexNormals;
+    normals.resize(mesh.positions.size());
+    if (mesh.level == 0) { // no split: the tetrahedron's four faces
+        std::fill(normals.begin(), normals.end(), glm::dvec3(0));
+        for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
+            for (int k = 0; k < 3; ++k) normals[mesh.triangles[i][k]] += faceNormals[i];
+        for (glm::dvec3& n : normals) n = glm::normalize(n);
+        return;
+    }
+    std::fill(normals.begin(), normals.begin() + made.first, glm::dvec3(0));
+    for (std::size_t i = 0; i < parentTriangles.size(); ++i)
+        for (int k = 0; k < 3; ++k) normals[parentTriangles[i][k]] += faceNormals[4 * i + std::size_t(k)];
+    inParallel(normals.size(), [&](std::size_t begin, std::size_t end) {
+        for (std::size_t v = begin; v < end; ++v) {
+            if (v >= made.first) {
+                glm::dvec3 sum(0);
+                const glm::uvec2 users = made.users[v - made.first];
+                for (const std::uint32_t use : {users.x, users.y})
+                    for (const int child : kChildrenAtEdge[use % 3])
+                        sum += faceNormals[4 * (use / 3) + child];
+                normals[v] = sum;
+            }
+            normals[v] = glm::normalize(normals[v]);
+        }
+    });
+}
+
+} // namespace
 
 // Every array is cleared and refilled in place: memory kept from an earlier build is reused, and the
 // triangle arrays get their final capacity up front instead of growing level by level.
@@ -201,8 +255,7 @@ void SphereBuilder::buildInto(int level, VertexNormals normals) {
     EdgeLevel& edges = scratch_->edges;
     EdgeLevel& nextEdges = scratch_->nextEdges;
     std::vector<glm::uvec3>& next = scratch_->next;
-    std::vector<std::uint32_t>& midpoint = scratch_->midpoint;
-    std::vector<glm::uvec2>& parents = scratch_->parents;
+    Midpoints& midpoints = scratch_->midpoints;
     mesh.level = level;
     mesh.positions.clear();
     mesh.positions.reserve(sphereVertexCount(level));
@@ -210,6 +263,7 @@ void SphereBuilder::buildInto(int level, VertexNormals normals) {
     mesh.triangles.reserve(sphereTriangleCount(level));
     mesh.triangles.assign(kTetrahedronFaces.begin(), kTetrahedronFaces.end());
     next.reserve(sphereTriangleCount(level));
+    next.clear();
     tetrahedronEdges(edges);
     for (int n = 0; n < level; ++n) {
         const bool last = n + 1 == level; // the last split needs no edge numbers for a level after it
@@ -217,10 +271,12 @@ void SphereBuilder::buildInto(int level, VertexNormals normals) {
         // Midpoints are numbered in the order the triangles first reach their edges (ab, bc, ac), which is
         // the order the seed's edge-midpoint map made them in: the same vertices, bit for bit, in the same
         // order.
-        midpoint.assign(edgeCount, kNoVertex);
-        parents.clear();
-        parents.reserve(edgeCount);
-        const auto first = std::uint32_t(mesh.positions.size());
+        midpoints.ofEdge.assign(edgeCount, kNoVertex);
+        midpoints.parents.clear();
+        midpoints.parents.reserve(edgeCount);
+        midpoints.users.clear();
+        midpoints.users.reserve(edgeCount);
+        midpoints.first = std::uint32_t(mesh.positions.size());
         next.resize(4 * triangleCount);
         if (!last) {
             nextEdges.edges.resize(4 * triangleCount);
@@ -228,9 +284,10 @@ void SphereBuilder::buildInto(int level, VertexNormals normals) {
         }
         for (std::size_t i = 0; i < triangleCount; ++i) {
             const glm::uvec3 t = mesh.triangles[i], e = edges.edges[i];
-            const std::uint32_t ab = midpointOf(midpoint, parents, first, e.x, t.x, t.y);
-            const std::uint32_t bc = midpointOf(midpoint, parents, first, e.y, t.y, t.z);
-            const std::uint32_t ac = midpointOf(midpoint, parents, first, e.z, t.x, t.z);
+            const auto use = std::uint32_t(3 * i);
+            const std::uint32_t ab = midpoints.of(e.x, t.x, t.y, use);
+            const std::uint32_t bc = midpoints.of(e.y, t.y, t.z, use + 1);
+            const std::uint32_t ac = midpoints.of(e.z, t.x, t.z, use + 2);
             glm::uvec3* children = &next[4 * i];
             children[0] = {t.x, ab, ac};
             children[1] = {ab, t.y, bc};
@@ -253,48 +310,34 @@ void SphereBuilder::buildInto(int level, VertexNormals normals) {
             nextEdges.first[bcac] = bc;
         }
         // normalize((a + b)/2) for every midpoint of the level; its end points are older vertices.
-        mesh.positions.resize(first + parents.size());
-        inParallel(parents.size(), [&](std::size_t begin, std::size_t end) {
+        const std::vector<glm::uvec2>& ends = midpoints.parents;
+        const std::uint32_t first = midpoints.first;
+        mesh.positions.resize(first + ends.size());
+        inParallel(ends.size(), [&](std::size_t begin, std::size_t end) {
             for (std::size_t k = begin; k < end; ++k)
                 mesh.positions[first + k] =
-                    glm::normalize((mesh.positions[parents[k].x] + mesh.positions[parents[k].y]) * 0.5);
+                    glm::normalize((mesh.positions[ends[k].x] + mesh.positions[ends[k].y]) * 0.5);
         });
         if (!last) {
             // Half 2e starts at edge e's first end point, half 2e + 1 at its midpoint.
             for (std::size_t number = 0; number < edgeCount; ++number) {
                 nextEdges.first[2 * number] = edges.first[number];
-                nextEdges.first[2 * number + 1] = midpoint[number];
+                nextEdges.first[2 * number + 1] = midpoints.ofEdge[number];
             }
             std::swap(edges, nextEdges);
         }
-        std::swap(mesh.triangles, next);
+        std::swap(mesh.triangles, next); // `next` keeps the level before: the last split's parents
     }
 
-    const std::size_t faces = mesh.triangles.size(), vertices = mesh.positions.size();
-    mesh.faceNormals.resize(faces);
-    inParallel(faces, [&](std::size_t begin, std::size_t end) {
+    mesh.faceNormals.resize(mesh.triangles.size());
+    inParallel(mesh.triangles.size(), [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i)
             mesh.faceNormals[i] = faceNormal(mesh.positions, mesh.triangles[i]);
     });
-    if (normals == VertexNormals::Exact) {
+    if (normals == VertexNormals::Exact)
         mesh.vertexNormals.assign(mesh.positions.begin(), mesh.positions.end()); // the unit sphere's normal
-        return;
-    }
-    // DESIGN §1's definition: the normalized average of the unit normals of the incident faces. Each part
-    // owns a range of vertices and adds their faces' normals in triangle order, as one pass over the
-    // triangles does: the same sums, bit for bit, whatever the number of parts.
-    mesh.vertexNormals.resize(vertices);
-    inParallel(vertices, [&](std::size_t begin, std::size_t end) {
-        std::fill(mesh.vertexNormals.begin() + std::ptrdiff_t(begin),
-                  mesh.vertexNormals.begin() + std::ptrdiff_t(end), glm::dvec3(0));
-        for (std::size_t i = 0; i < faces; ++i)
-            for (int k = 0; k < 3; ++k) {
-                const std::uint32_t v = mesh.triangles[i][k];
-                if (v >= begin && v < end) mesh.vertexNormals[v] += mesh.faceNormals[i];
-            }
-        for (std::size_t v = begin; v < end; ++v)
-            mesh.vertexNormals[v] = glm::normalize(mesh.vertexNormals[v]);
-    });
+    else
+        averagedNormals(mesh, next, midpoints);
 }
 
 std::vector<SmoothVertex> smoothVertices(const SphereMesh& mesh) {

@@ -189,25 +189,26 @@ std::vector<RatioSpec> registerModes(Gpu& gpu, const std::shared_ptr<Limits>& li
 
 // ---- the scene set beside glmark2's `shading` scenes (bench/compare_glmark2.sh) ----
 
-// glmark2 (src/scene-shading.cpp) draws its cat (≈14,300 faces) covering 15–20 % of 800×600. Here: a
-// level-6 sphere (16,384 faces) at the distance where its silhouette's radius is 170 px of a 600 px height
-// (≈ 90,800 px), lit as glmark2 lights each mode. glmark2 gives lights in eye space; the camera here looks
+// glmark2 (src/scene-shading.cpp) frames any model from its bounding box: with r half the box's diagonal,
+// the model's centre at distance 2 + r, fovy = 2·atan(r/(2 + r)), near 2, far 2 + 2r. Here: the level-6
+// sphere (16,384 faces) framed exactly so, which is what glmark2 draws when compare_glmark2.sh hands it this
+// sphere as a model (its box is [−1, 1]³ to within 1e-3, so r = √3: a silhouette of 179.8 px radius of 600,
+// ≈ 101,600 px). Lit as glmark2 lights each mode. glmark2 gives lights in eye space; the camera here looks
 // down −z from (0, 0, d), so a point moves by d along z into world space and a direction stays.
-inline constexpr double kGlmark2RadiusPx = 170, kGlmark2Height = 600;
-
-double glmark2Distance(const Scene& scene) {
-    // A unit sphere at distance d spans the half-angle asin(1/d), which projects to
-    // R = (H/2)·tan(asin(1/d))/tan(fovy/2) pixels; solved for d.
-    const double radiusPx = kGlmark2RadiusPx * scene.height / kGlmark2Height;
-    const double tanHalfAngle =
-        radiusPx / (scene.height / 2.0) * std::tan(scene.projection.fovyDeg * std::numbers::pi / 360);
-    return 1 / std::sin(std::atan(tanHalfAngle));
-}
+struct Glmark2Framing {
+    double halfDiagonal = std::numbers::sqrt3;
+    double distance() const { return 2 + halfDiagonal; }
+    double fovyDeg() const { return 2 * std::atan(halfDiagonal / distance()) * 180 / std::numbers::pi; }
+};
 
 Scene glmark2Scene(const BenchOptions& o, const char* glmark2Mode) {
     Scene scene = sized(Scene{}, o, 6);
-    const double d = glmark2Distance(scene);
+    const Glmark2Framing framing;
+    const double d = framing.distance();
     scene.eye = {0, 0, d};
+    scene.projection.fovyDeg = framing.fovyDeg();
+    scene.projection.near = 2;
+    scene.projection.far = 2 + 2 * framing.halfDiagonal;
     Material& m = scene.objects[0].material;
     m.diffuse = {0, 0, 1}; // glmark2's MaterialDiffuse
     m.specular = {1, 1, 1};
