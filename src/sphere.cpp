@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <new>
+#include <span>
 #include <sstream>
 #include <system_error>
 #include <thread>
@@ -52,26 +53,36 @@ template <typename Body> void inParallel(std::size_t n, const Body& body) {
 #endif
 }
 
-// The midpoint vertex of edge `number` (end points a, b), numbered on first use: vertex first + k for the
-// k-th midpoint of the level, whose end points are parents[k]. `use` (3·triangle + the edge's place in it:
-// 0 ab, 1 bc, 2 ac) is recorded in users[k]: the triangle that made the midpoint, then the one that shares
-// its edge. Positions are computed afterwards.
+// The midpoint vertices of one split, numbered on first use: the k-th midpoint made is vertex first + k,
+// its edge's end points are ends[k], and users[k] holds the two uses of its edge (3·triangle + the edge's
+// place in it: 0 ab, 1 bc, 2 ac), the triangle that made it first. Every edge of a closed mesh has two
+// uses, so each users[k] is filled. Positions are computed afterwards.
 struct Midpoints {
     std::vector<std::uint32_t> ofEdge; // per edge of the level before: its midpoint vertex, or kNoVertex
-    std::vector<glm::uvec2> parents;   // per midpoint: its edge's end points
-    std::vector<glm::uvec2> users;     // per midpoint: the two uses of its edge, in triangle order
+    std::vector<glm::uvec2> ends;      // per midpoint (and one spare entry, see of())
+    std::vector<glm::uvec2> users;     // per midpoint
     std::uint32_t first = 0;           // the vertex number of midpoint 0
+    std::uint32_t count = 0;           // midpoints made so far
 
+    void start(std::size_t edges, std::uint32_t firstVertex) {
+        ofEdge.assign(edges, kNoVertex);
+        ends.resize(edges + 1);
+        users.resize(edges);
+        first = firstVertex;
+        count = 0;
+    }
+
+    // Without a branch on whether the edge is new (half the edges are, in no order a predictor learns):
+    // the end points are written to the next free entry either way, and kept only when it is taken.
     std::uint32_t of(std::uint32_t number, std::uint32_t a, std::uint32_t b, std::uint32_t use) {
-        std::uint32_t& m = ofEdge[number];
-        if (m == kNoVertex) {
-            m = first + std::uint32_t(parents.size());
-            parents.push_back({a, b});
-            users.push_back({use, kNoVertex});
-        } else {
-            users[m - first].y = use;
-        }
-        return m;
+        const std::uint32_t seen = ofEdge[number];
+        const bool fresh = seen == kNoVertex;
+        const std::uint32_t k = fresh ? count : seen - first;
+        ends[count] = {a, b};
+        users[k][fresh ? 0 : 1] = use;
+        ofEdge[number] = first + k;
+        count += fresh ? 1 : 0;
+        return first + k;
     }
 };
 
@@ -83,10 +94,12 @@ glm::dvec3 faceNormal(const std::vector<glm::dvec3>& p, const glm::uvec3& t) {
 double memoryBytes(int level) {
     level = std::min(level, 1000); // 2·level must not overflow int; 4^1000 is inf in double, which is fine
     const double f = std::ldexp(4.0, 2 * level), v = std::ldexp(2.0, 2 * level) + 2;
-    const double cpu = v * 2 * sizeof(glm::dvec3) + f * (sizeof(glm::uvec3) + sizeof(glm::dvec3));
-    // The last split's edge numbers: three per triangle of the level before (F/4), and the first end point
-    // and the midpoint of each of its 3F/8 edges.
-    const double edgeMap = (f / 4) * sizeof(glm::uvec3) + 2 * (3 * f / 8) * sizeof(std::uint32_t);
+    // The mesh, and the builder's second triangle array (the levels alternate between the two).
+    const double cpu = v * 2 * sizeof(glm::dvec3) + f * (2 * sizeof(glm::uvec3) + sizeof(glm::dvec3));
+    // The last split's edge numbers: three per triangle of the level before (F/4); per edge of its 3F/8,
+    // the first end point, the midpoint, the midpoint's end points and its edge's two uses.
+    const double edgeMap =
+        (f / 4) * sizeof(glm::uvec3) + (3 * f / 8) * (2 * sizeof(std::uint32_t) + 2 * sizeof(glm::uvec2));
     const double gpuReady =
         std::max(v * sizeof(SmoothVertex) + f * 3 * sizeof(std::uint32_t), f * 3 * sizeof(FlatVertex));
     return cpu + edgeMap + gpuReady;
@@ -216,8 +229,7 @@ constexpr std::array<std::array<int, 3>, 3> kChildrenAtEdge = {{{0, 1, 3}, {1, 2
 // belonged to and lies in child k of each, one face per parent in parent order; a midpoint lies in three
 // children of each of the two parents that share its edge (users). The same additions in the same order:
 // the same sums, bit for bit, and no pass over all triangles per part.
-void averagedNormals(SphereMesh& mesh, const std::vector<glm::uvec3>& parentTriangles,
-                     const Midpoints& made) {
+void averagedNormals(SphereMesh& mesh, std::span<const glm::uvec3> parentTriangles, const Midpoints& made) {
     const std::vector<glm::dvec3>& faceNormals = mesh.faceNormals;
     std::vector<glm::dvec3>& normals = mesh.vertexNormals;
     normals.resize(mesh.positions.size());
@@ -228,10 +240,19 @@ void averagedNormals(SphereMesh& mesh, const std::vector<glm::uvec3>& parentTria
         for (glm::dvec3& n : normals) n = glm::normalize(n);
         return;
     }
-    std::fill(normals.begin(), normals.begin() + made.first, glm::dvec3(0));
-    for (std::size_t i = 0; i < parentTriangles.size(); ++i)
-        for (int k = 0; k < 3; ++k) normals[parentTriangles[i][k]] += faceNormals[4 * i + std::size_t(k)];
+    // Each part owns a range of vertices: the part holding older vertices adds their faces from the parents
+    // (no division: the other part meanwhile gathers and normalizes midpoints).
     inParallel(normals.size(), [&](std::size_t begin, std::size_t end) {
+        const std::size_t older = std::min<std::size_t>(end, made.first);
+        if (begin < older) {
+            std::fill(normals.begin() + std::ptrdiff_t(begin), normals.begin() + std::ptrdiff_t(older),
+                      glm::dvec3(0));
+            for (std::size_t i = 0; i < parentTriangles.size(); ++i)
+                for (int k = 0; k < 3; ++k) {
+                    const std::uint32_t v = parentTriangles[i][k];
+                    if (v >= begin && v < older) normals[v] += faceNormals[4 * i + std::size_t(k)];
+                }
+        }
         for (std::size_t v = begin; v < end; ++v) {
             if (v >= made.first) {
                 glm::dvec3 sum(0);
@@ -248,51 +269,49 @@ void averagedNormals(SphereMesh& mesh, const std::vector<glm::uvec3>& parentTria
 
 } // namespace
 
-// Every array is cleared and refilled in place: memory kept from an earlier build is reused, and the
-// triangle arrays get their final capacity up front instead of growing level by level.
+// Every array is sized once to the level's counts and written in place: kept from an earlier build of the
+// same level, nothing is allocated or zero-filled again (std::vector's resize fills what it adds, which
+// costs as much as writing the mesh). The triangles of successive levels alternate between the mesh's
+// array and `next`, counted rather than resized.
 void SphereBuilder::buildInto(int level, VertexNormals normals) {
     SphereMesh& mesh = mesh_;
     EdgeLevel& edges = scratch_->edges;
     EdgeLevel& nextEdges = scratch_->nextEdges;
-    std::vector<glm::uvec3>& next = scratch_->next;
     Midpoints& midpoints = scratch_->midpoints;
     mesh.level = level;
-    mesh.positions.clear();
-    mesh.positions.reserve(sphereVertexCount(level));
-    mesh.positions.assign(kTetrahedron.begin(), kTetrahedron.end());
-    mesh.triangles.reserve(sphereTriangleCount(level));
-    mesh.triangles.assign(kTetrahedronFaces.begin(), kTetrahedronFaces.end());
-    next.reserve(sphereTriangleCount(level));
-    next.clear();
+    mesh.positions.resize(sphereVertexCount(level));
+    std::copy(kTetrahedron.begin(), kTetrahedron.end(), mesh.positions.begin());
+    std::vector<glm::uvec3>* from = &mesh.triangles;
+    std::vector<glm::uvec3>* to = &scratch_->next;
+    from->resize(sphereTriangleCount(level));
+    to->resize(sphereTriangleCount(level));
+    std::copy(kTetrahedronFaces.begin(), kTetrahedronFaces.end(), from->begin());
     tetrahedronEdges(edges);
+    std::size_t vertexCount = kTetrahedron.size(), triangleCount = kTetrahedronFaces.size();
     for (int n = 0; n < level; ++n) {
         const bool last = n + 1 == level; // the last split needs no edge numbers for a level after it
-        const std::size_t edgeCount = edges.first.size(), triangleCount = mesh.triangles.size();
+        const std::size_t edgeCount = edges.first.size();
+        const glm::uvec3* parents = from->data();
+        glm::uvec3* children = to->data();
         // Midpoints are numbered in the order the triangles first reach their edges (ab, bc, ac), which is
         // the order the seed's edge-midpoint map made them in: the same vertices, bit for bit, in the same
         // order.
-        midpoints.ofEdge.assign(edgeCount, kNoVertex);
-        midpoints.parents.clear();
-        midpoints.parents.reserve(edgeCount);
-        midpoints.users.clear();
-        midpoints.users.reserve(edgeCount);
-        midpoints.first = std::uint32_t(mesh.positions.size());
-        next.resize(4 * triangleCount);
+        midpoints.start(edgeCount, std::uint32_t(vertexCount));
         if (!last) {
             nextEdges.edges.resize(4 * triangleCount);
             nextEdges.first.resize(2 * edgeCount + 3 * triangleCount);
         }
         for (std::size_t i = 0; i < triangleCount; ++i) {
-            const glm::uvec3 t = mesh.triangles[i], e = edges.edges[i];
+            const glm::uvec3 t = parents[i], e = edges.edges[i];
             const auto use = std::uint32_t(3 * i);
             const std::uint32_t ab = midpoints.of(e.x, t.x, t.y, use);
             const std::uint32_t bc = midpoints.of(e.y, t.y, t.z, use + 1);
             const std::uint32_t ac = midpoints.of(e.z, t.x, t.z, use + 2);
-            glm::uvec3* children = &next[4 * i];
-            children[0] = {t.x, ab, ac};
-            children[1] = {ab, t.y, bc};
-            children[2] = {bc, t.z, ac};
-            children[3] = {ab, bc, ac};
+            glm::uvec3* four = children + 4 * i;
+            four[0] = {t.x, ab, ac};
+            four[1] = {ab, t.y, bc};
+            four[2] = {bc, t.z, ac};
+            four[3] = {ab, bc, ac};
             if (last) continue;
             // The half of edge `number` that ends at vertex v, and the three inner edges.
             auto half = [&](std::uint32_t number, std::uint32_t v) {
@@ -310,13 +329,12 @@ void SphereBuilder::buildInto(int level, VertexNormals normals) {
             nextEdges.first[bcac] = bc;
         }
         // normalize((a + b)/2) for every midpoint of the level; its end points are older vertices.
-        const std::vector<glm::uvec2>& ends = midpoints.parents;
         const std::uint32_t first = midpoints.first;
-        mesh.positions.resize(first + ends.size());
-        inParallel(ends.size(), [&](std::size_t begin, std::size_t end) {
+        const glm::uvec2* ends = midpoints.ends.data();
+        glm::dvec3* positions = mesh.positions.data();
+        inParallel(midpoints.count, [&](std::size_t begin, std::size_t end) {
             for (std::size_t k = begin; k < end; ++k)
-                mesh.positions[first + k] =
-                    glm::normalize((mesh.positions[ends[k].x] + mesh.positions[ends[k].y]) * 0.5);
+                positions[first + k] = glm::normalize((positions[ends[k].x] + positions[ends[k].y]) * 0.5);
         });
         if (!last) {
             // Half 2e starts at edge e's first end point, half 2e + 1 at its midpoint.
@@ -326,18 +344,22 @@ void SphereBuilder::buildInto(int level, VertexNormals normals) {
             }
             std::swap(edges, nextEdges);
         }
-        std::swap(mesh.triangles, next); // `next` keeps the level before: the last split's parents
+        vertexCount += midpoints.count;
+        triangleCount *= 4;
+        std::swap(from, to); // `to` keeps the level before: the last split's parents
     }
+    if (from != &mesh.triangles) std::swap(mesh.triangles, scratch_->next);
+    const std::span<const glm::uvec3> parents(scratch_->next.data(), level > 0 ? triangleCount / 4 : 0);
 
-    mesh.faceNormals.resize(mesh.triangles.size());
-    inParallel(mesh.triangles.size(), [&](std::size_t begin, std::size_t end) {
+    mesh.faceNormals.resize(triangleCount);
+    inParallel(triangleCount, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i)
             mesh.faceNormals[i] = faceNormal(mesh.positions, mesh.triangles[i]);
     });
     if (normals == VertexNormals::Exact)
         mesh.vertexNormals.assign(mesh.positions.begin(), mesh.positions.end()); // the unit sphere's normal
     else
-        averagedNormals(mesh, next, midpoints);
+        averagedNormals(mesh, parents, midpoints);
 }
 
 std::vector<SmoothVertex> smoothVertices(const SphereMesh& mesh) {
