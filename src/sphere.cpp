@@ -76,12 +76,13 @@ struct Midpoints {
     // the end points are written to the next free entry either way, and kept only when it is taken.
     std::uint32_t of(std::uint32_t number, std::uint32_t a, std::uint32_t b, std::uint32_t use) {
         const std::uint32_t seen = ofEdge[number];
-        const bool fresh = seen == kNoVertex;
-        const std::uint32_t k = fresh ? count : seen - first;
+        const std::uint32_t fresh = seen == kNoVertex ? 1 : 0;
+        // k = fresh ? count : seen − first, as arithmetic (compilers turn the conditional into a branch).
+        const std::uint32_t k = count + ((seen - first - count) & (fresh - 1));
         ends[count] = {a, b};
-        users[k][fresh ? 0 : 1] = use;
+        users[k][int(1 - fresh)] = use;
         ofEdge[number] = first + k;
-        count += fresh ? 1 : 0;
+        count += fresh;
         return first + k;
     }
 };
