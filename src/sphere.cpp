@@ -74,7 +74,7 @@ struct Midpoints {
 
     // Without a branch on whether the edge is new (half the edges are, in no order a predictor learns):
     // the end points are written to the next free entry either way, and kept only when it is taken.
-    std::uint32_t of(std::uint32_t number, std::uint32_t a, std::uint32_t b, std::uint32_t use) {
+    void of(std::uint32_t number, std::uint32_t a, std::uint32_t b, std::uint32_t use) {
         const std::uint32_t seen = ofEdge[number];
         const std::uint32_t fresh = seen == kNoVertex ? 1 : 0;
         // k = fresh ? count : seen − first, as arithmetic (compilers turn the conditional into a branch).
@@ -83,7 +83,6 @@ struct Midpoints {
         users[k][int(1 - fresh)] = use;
         ofEdge[number] = first + k;
         count += fresh;
-        return first + k;
     }
 };
 
@@ -302,33 +301,42 @@ void SphereBuilder::buildInto(int level, VertexNormals normals) {
             nextEdges.edges.resize(4 * triangleCount);
             nextEdges.first.resize(2 * edgeCount + 3 * triangleCount);
         }
+        // Numbering is sequential (first use decides); it only reads the parents and writes the midpoints.
         for (std::size_t i = 0; i < triangleCount; ++i) {
             const glm::uvec3 t = parents[i], e = edges.edges[i];
             const auto use = std::uint32_t(3 * i);
-            const std::uint32_t ab = midpoints.of(e.x, t.x, t.y, use);
-            const std::uint32_t bc = midpoints.of(e.y, t.y, t.z, use + 1);
-            const std::uint32_t ac = midpoints.of(e.z, t.x, t.z, use + 2);
-            glm::uvec3* four = children + 4 * i;
-            four[0] = {t.x, ab, ac};
-            four[1] = {ab, t.y, bc};
-            four[2] = {bc, t.z, ac};
-            four[3] = {ab, bc, ac};
-            if (last) continue;
-            // The half of edge `number` that ends at vertex v, and the three inner edges.
-            auto half = [&](std::uint32_t number, std::uint32_t v) {
-                return 2 * number + (edges.first[number] == v ? 0 : 1);
-            };
-            const std::uint32_t inner = std::uint32_t(2 * edgeCount + 3 * i);
-            const std::uint32_t abac = inner, abbc = inner + 1, bcac = inner + 2;
-            glm::uvec3* childEdges = &nextEdges.edges[4 * i];
-            childEdges[0] = {half(e.x, t.x), abac, half(e.z, t.x)};
-            childEdges[1] = {half(e.x, t.y), half(e.y, t.y), abbc};
-            childEdges[2] = {half(e.y, t.z), half(e.z, t.z), bcac};
-            childEdges[3] = {abbc, bcac, abac};
-            nextEdges.first[abac] = ab;
-            nextEdges.first[abbc] = ab;
-            nextEdges.first[bcac] = bc;
+            midpoints.of(e.x, t.x, t.y, use);
+            midpoints.of(e.y, t.y, t.z, use + 1);
+            midpoints.of(e.z, t.x, t.z, use + 2);
         }
+        // Writing the children (and the next level's edge numbers) is per parent: both threads.
+        const std::uint32_t* midpointOf = midpoints.ofEdge.data();
+        inParallel(triangleCount, [&](std::size_t begin, std::size_t end) {
+            for (std::size_t i = begin; i < end; ++i) {
+                const glm::uvec3 t = parents[i], e = edges.edges[i];
+                const std::uint32_t ab = midpointOf[e.x], bc = midpointOf[e.y], ac = midpointOf[e.z];
+                glm::uvec3* four = children + 4 * i;
+                four[0] = {t.x, ab, ac};
+                four[1] = {ab, t.y, bc};
+                four[2] = {bc, t.z, ac};
+                four[3] = {ab, bc, ac};
+                if (last) continue;
+                // The half of edge `number` that ends at vertex v, and the three inner edges.
+                auto half = [&](std::uint32_t number, std::uint32_t v) {
+                    return 2 * number + (edges.first[number] == v ? 0 : 1);
+                };
+                const std::uint32_t inner = std::uint32_t(2 * edgeCount + 3 * i);
+                const std::uint32_t abac = inner, abbc = inner + 1, bcac = inner + 2;
+                glm::uvec3* childEdges = &nextEdges.edges[4 * i];
+                childEdges[0] = {half(e.x, t.x), abac, half(e.z, t.x)};
+                childEdges[1] = {half(e.x, t.y), half(e.y, t.y), abbc};
+                childEdges[2] = {half(e.y, t.z), half(e.z, t.z), bcac};
+                childEdges[3] = {abbc, bcac, abac};
+                nextEdges.first[abac] = ab;
+                nextEdges.first[abbc] = ab;
+                nextEdges.first[bcac] = bc;
+            }
+        });
         // normalize((a + b)/2) for every midpoint of the level; its end points are older vertices.
         const std::uint32_t first = midpoints.first;
         const glm::uvec2* ends = midpoints.ends.data();
