@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <condition_variable>
+#include <functional>
 #include <limits>
+#include <mutex>
 #include <new>
 #include <span>
 #include <sstream>
@@ -28,29 +31,90 @@ constexpr std::array<glm::uvec3, 4> kTetrahedronFaces = {glm::uvec3{3, 2, 1}, gl
 
 constexpr std::uint32_t kNoVertex = 0xffffffffu;
 
-// Below this many items a second thread costs more to start than it saves.
+// Below this many items a second thread costs more than it saves.
 constexpr std::size_t kParallelItems = 1 << 15;
 
-// body(begin, end) over [0, n): on two threads for large n (this one takes the second half), else here.
-// The page has no threads (Emscripten without pthreads).
-template <typename Body> void inParallel(std::size_t n, const Body& body) {
 #if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
-    body(0, n);
+// The page has no threads (Emscripten without pthreads): every pass runs here.
+class Helper {
+public:
+    template <typename Job> bool start(const Job&) { return false; }
+    void wait() {}
+};
 #else
-    if (n < kParallelItems || std::thread::hardware_concurrency() < 2) {
-        body(0, n);
-        return;
+// A second thread kept for a builder's lifetime: each large pass hands it half the work instead of starting
+// a thread per pass (a level-8 build has four such passes, and starting a thread in a process that has
+// loaded a GL driver costs about 0.1–0.2 ms).
+class Helper {
+public:
+    Helper() = default;
+    Helper(const Helper&) = delete;
+    Helper& operator=(const Helper&) = delete;
+    ~Helper() {
+        if (!thread_.joinable()) return;
+        {
+            const std::lock_guard<std::mutex> lock(mutex_);
+            quit_ = true;
+        }
+        wake_.notify_one();
+        thread_.join();
     }
-    std::thread first;
-    try {
-        first = std::thread([&] { body(0, n / 2); });
-    } catch (const std::system_error&) { // no thread to be had (a process limit): all of it here
-        body(0, n);
-        return;
+    // Runs job on the helper thread and returns at once; false (job not run) if no thread can be had.
+    bool start(std::function<void()> job) {
+        if (!thread_.joinable()) {
+            try {
+                thread_ = std::thread([this] { serve(); });
+            } catch (const std::system_error&) { // a process limit: the caller does all of it
+                return false;
+            }
+        }
+        {
+            const std::lock_guard<std::mutex> lock(mutex_);
+            job_ = std::move(job);
+        }
+        wake_.notify_one();
+        return true;
     }
-    body(n / 2, n);
-    first.join();
+    // Returns once the job given to start has run.
+    void wait() {
+        std::unique_lock<std::mutex> lock(mutex_);
+        done_.wait(lock, [this] { return !job_; });
+    }
+
+private:
+    void serve() {
+        std::unique_lock<std::mutex> lock(mutex_);
+        for (;;) {
+            wake_.wait(lock, [this] { return job_ || quit_; });
+            if (quit_) return;
+            lock.unlock();
+            job_(); // job_ is only replaced after wait() has seen it cleared
+            lock.lock();
+            job_ = nullptr;
+            done_.notify_one();
+        }
+    }
+    std::thread thread_;
+    std::mutex mutex_;
+    std::condition_variable wake_, done_;
+    std::function<void()> job_;
+    bool quit_ = false;
+};
 #endif
+
+// body(begin, end) over [0, n): for large n the helper takes the first half and this thread the second,
+// else all of it here.
+template <typename Body> void inParallel(Helper& helper, std::size_t n, const Body& body) {
+    if (n < kParallelItems || std::thread::hardware_concurrency() < 2 ||
+        !helper.start([&] { body(0, n / 2); })) {
+        body(0, n);
+        return;
+    }
+    struct WaitForHelper {
+        Helper& helper;
+        ~WaitForHelper() { helper.wait(); } // also if body throws: the helper's half refers to this frame
+    } waitForHelper{helper};
+    body(n / 2, n);
 }
 
 // The midpoint vertices of one split, numbered on first use: the k-th midpoint made is vertex first + k,
@@ -215,6 +279,7 @@ struct SphereBuilder::Scratch {
     EdgeLevel edges, nextEdges;
     std::vector<glm::uvec3> next; // the triangles of the level being made (swapped with the mesh's)
     Midpoints midpoints;          // of the split being made; after the build, of the last split
+    Helper helper;                // the second thread of the large passes
 };
 
 namespace {
@@ -229,7 +294,8 @@ constexpr std::array<std::array<int, 3>, 3> kChildrenAtEdge = {{{0, 1, 3}, {1, 2
 // belonged to and lies in child k of each, one face per parent in parent order; a midpoint lies in three
 // children of each of the two parents that share its edge (users). The same additions in the same order:
 // the same sums, bit for bit, and no pass over all triangles per part.
-void averagedNormals(SphereMesh& mesh, std::span<const glm::uvec3> parentTriangles, const Midpoints& made) {
+void averagedNormals(Helper& helper, SphereMesh& mesh, std::span<const glm::uvec3> parentTriangles,
+                     const Midpoints& made) {
     const std::vector<glm::dvec3>& faceNormals = mesh.faceNormals;
     std::vector<glm::dvec3>& normals = mesh.vertexNormals;
     normals.resize(mesh.positions.size());
@@ -242,7 +308,7 @@ void averagedNormals(SphereMesh& mesh, std::span<const glm::uvec3> parentTriangl
     }
     // Each part owns a range of vertices: the part holding older vertices adds their faces from the parents
     // (no division: the other part meanwhile gathers and normalizes midpoints).
-    inParallel(normals.size(), [&](std::size_t begin, std::size_t end) {
+    inParallel(helper, normals.size(), [&](std::size_t begin, std::size_t end) {
         const std::size_t older = std::min<std::size_t>(end, made.first);
         if (begin < older) {
             std::fill(normals.begin() + std::ptrdiff_t(begin), normals.begin() + std::ptrdiff_t(older),
@@ -311,7 +377,7 @@ void SphereBuilder::buildInto(int level, VertexNormals normals) {
         }
         // Writing the children (and the next level's edge numbers) is per parent: both threads.
         const std::uint32_t* midpointOf = midpoints.ofEdge.data();
-        inParallel(triangleCount, [&](std::size_t begin, std::size_t end) {
+        inParallel(scratch_->helper, triangleCount, [&](std::size_t begin, std::size_t end) {
             for (std::size_t i = begin; i < end; ++i) {
                 const glm::uvec3 t = parents[i], e = edges.edges[i];
                 const std::uint32_t ab = midpointOf[e.x], bc = midpointOf[e.y], ac = midpointOf[e.z];
@@ -341,7 +407,7 @@ void SphereBuilder::buildInto(int level, VertexNormals normals) {
         const std::uint32_t first = midpoints.first;
         const glm::uvec2* ends = midpoints.ends.data();
         glm::dvec3* positions = mesh.positions.data();
-        inParallel(midpoints.count, [&](std::size_t begin, std::size_t end) {
+        inParallel(scratch_->helper, midpoints.count, [&](std::size_t begin, std::size_t end) {
             for (std::size_t k = begin; k < end; ++k)
                 positions[first + k] = glm::normalize((positions[ends[k].x] + positions[ends[k].y]) * 0.5);
         });
@@ -361,14 +427,14 @@ void SphereBuilder::buildInto(int level, VertexNormals normals) {
     const std::span<const glm::uvec3> parents(scratch_->next.data(), level > 0 ? triangleCount / 4 : 0);
 
     mesh.faceNormals.resize(triangleCount);
-    inParallel(triangleCount, [&](std::size_t begin, std::size_t end) {
+    inParallel(scratch_->helper, triangleCount, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i)
             mesh.faceNormals[i] = faceNormal(mesh.positions, mesh.triangles[i]);
     });
     if (normals == VertexNormals::Exact)
         mesh.vertexNormals.assign(mesh.positions.begin(), mesh.positions.end()); // the unit sphere's normal
     else
-        averagedNormals(mesh, parents, midpoints);
+        averagedNormals(scratch_->helper, mesh, parents, midpoints);
 }
 
 std::vector<SmoothVertex> smoothVertices(const SphereMesh& mesh) {
