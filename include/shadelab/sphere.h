@@ -43,7 +43,8 @@ SphereMesh buildSphere(int level, VertexNormals normals = VertexNormals::Average
 
 // Builds spheres into arrays it keeps: building again (another level, or the same one in a benchmark)
 // writes into memory already mapped instead of asking the kernel for fresh pages, which on some kernels
-// costs more than the generation itself. The same mesh as buildSphere, bit for bit.
+// costs more than the generation itself. For levels large enough to share, it also keeps one helper thread,
+// started on first use and joined by the destructor. The same mesh as buildSphere, bit for bit.
 class SphereBuilder {
 public:
     SphereBuilder();
