@@ -50,9 +50,10 @@ display=:$(head -n1 "$tmp/display")
 # coverage; its cat is measured as well, as glmark2 ships it.
 #
 # The sphere as DESIGN §1 builds it (the tetrahedron, each triangle split into (a,ab,ac), (ab,b,bc),
-# (bc,c,ac), (ab,bc,ac), midpoints numbered on first use): the vertices and triangles of shadelab's mesh in
-# its order, written as float text (9 significant digits round-trip a float). glmark2 computes its own
-# vertex normals (averaged, as shadelab's).
+# (bc,c,ac), (ab,bc,ac), midpoints numbered on first use, normalized as glm::normalize does): the vertices
+# and triangles of shadelab's mesh in its order, written as float text (9 significant digits round-trip a
+# float) — byte for byte the file buildSphere(6)'s positions and triangles give, printed the same way.
+# glmark2 computes its own vertex normals (averaged, as shadelab's).
 glmark2_data=${GLMARK2_DATA:-/usr/share/glmark2}
 [[ -d $glmark2_data/shaders ]] || fail "no glmark2 data at '$glmark2_data' (set GLMARK2_DATA to its folder)"
 mkdir -p "$tmp/glmark2-data/models"
@@ -69,8 +70,8 @@ for level in range(6):
         key = (min(a, b), max(a, b))
         if key not in midpoints:
             m = [(points[a][i] + points[b][i]) / 2 for i in range(3)]
-            length = math.sqrt(sum(c * c for c in m))
-            points.append(tuple(c / length for c in m))
+            inverse = 1 / math.sqrt((m[0] * m[0] + m[1] * m[1]) + m[2] * m[2])  # as glm::normalize
+            points.append(tuple(c * inverse for c in m))
             midpoints[key] = len(points) - 1
         return midpoints[key]
     split = []
