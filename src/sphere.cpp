@@ -43,8 +43,8 @@ public:
 };
 #else
 // A second thread kept for a builder's lifetime: each large pass hands it half the work instead of starting
-// a thread per pass (a level-8 build has four such passes, and starting a thread in a process that has
-// loaded a GL driver costs about 0.1–0.2 ms).
+// a thread per pass (a level-8 build has four such passes; clone3 took 0.15–0.25 ms under strace in the
+// shadelab process, which has a GL driver loaded).
 class Helper {
 public:
     Helper() = default;
@@ -277,7 +277,7 @@ void tetrahedronEdges(EdgeLevel& level) {
 
 struct SphereBuilder::Scratch {
     EdgeLevel edges, nextEdges;
-    std::vector<glm::uvec3> next; // the triangles of the level being made (swapped with the mesh's)
+    std::vector<glm::uvec3> next; // the other triangle array; after the build, the last split's parents
     Midpoints midpoints;          // of the split being made; after the build, of the last split
     Helper helper;                // the second thread of the large passes
 };
