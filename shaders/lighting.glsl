@@ -6,12 +6,16 @@
 //   SHADING_TOON          diffuse quantized into uToonBands bands, highlight thresholded at TOON_HIGHLIGHT
 //   SPECIALIZED           a program for one scene's light set-up (ProgramVariant in gl/program.h), with
 //     NUM_DIRECTIONAL, NUM_POINT, NUM_SPOT  light counts per type as compile-time constants
-//     HAS_AMBIENT       some light has a non-zero ambient term (summed on the CPU: uAmbientLight)
+//     HAS_AMBIENT       some light has a non-zero ambient term (summed on the CPU: uAmbientProduct)
 //     HAS_ATTENUATION   some point or spot light has attenuation other than (1, 0, 0)
 //     HAS_SPECULAR      some object's k_s and some light's I_s are non-zero
 //     NEEDS_NORMAL      some light is not ambient (ambient-only scenes read no normal attribute)
 //     VIEWER_AT_INFINITY  an orthographic projection: v = +z everywhere, a constant (else the local viewer)
 //   Without SPECIALIZED: the uber program — counts and types as uniforms, one loop over all lights.
+// The colours arrive with the object's material multiplied in on the CPU (k_a·I_a, k_d·I_d, k_s·I_s, per
+// object and light): formed here they would be products of uniforms evaluated per fragment, and llvmpipe
+// reads every uniform component a fragment shader uses with a bounds-checked gather of all eight lanes
+// (bench/README.md "What llvmpipe makes of the fragment shader").
 
 const int LIGHT_AMBIENT = 0;
 const int LIGHT_DIRECTIONAL = 1;
@@ -19,10 +23,10 @@ const int LIGHT_POINT = 2;
 const int LIGHT_SPOT = 3;
 
 struct Light {
-    int type;           // uber program only
-    vec3 ambient;       // uber program only (specialized programs sum it into uAmbientLight)
-    vec3 diffuse;
-    vec3 specular;
+    int type;             // uber program only
+    vec3 ambientProduct;  // k_a·I_a; uber program only (specialized programs sum it into uAmbientProduct)
+    vec3 diffuseProduct;  // k_d·I_d
+    vec3 specularProduct; // k_s·I_s
     vec3 positionView;
     vec3 directionView; // unit; the direction the light travels
     float cosCutoff;
@@ -39,7 +43,7 @@ uniform Light uLights[MAX_LIGHTS];
 uniform int uLightCount;
 #else
 #if HAS_AMBIENT
-uniform vec3 uAmbientLight; // Σ I_a over all lights
+uniform vec3 uAmbientProduct; // k_a·Σ I_a over all lights
 #endif
 #if NUM_DIRECTIONAL > 0
 uniform Light uDirectionalLights[NUM_DIRECTIONAL];
@@ -52,9 +56,6 @@ uniform Light uSpotLights[NUM_SPOT];
 #endif
 #endif
 
-uniform vec3 uMaterialAmbient;
-uniform vec3 uMaterialDiffuse;
-uniform vec3 uMaterialSpecular;
 uniform float uShininess;    // >= 1: pow(0, 0) is undefined in GLSL
 #ifndef SPECIALIZED
 uniform bool uOrthographic;  // parallel projection: the viewer direction is +z everywhere
@@ -108,13 +109,13 @@ vec3 directTerm(Light light, vec3 toLightView, float factor, vec3 normalView, ve
 #ifdef SHADING_TOON
     diffuse = ceil(diffuse * uToonBands) * uToonBandWidth;
 #endif
-    vec3 color = uMaterialDiffuse * light.diffuse * diffuse;
+    vec3 color = light.diffuseProduct * diffuse;
 #if HAS_SPECULAR
     float spec = lDotN > 0.0 ? specularTerm(normalView, toViewerView, toLightView, lDotN) : 0.0;
 #ifdef SHADING_TOON
     spec = spec > TOON_HIGHLIGHT ? 1.0 : 0.0;
 #endif
-    color += uMaterialSpecular * light.specular * spec;
+    color += light.specularProduct * spec;
 #endif
     return factor * color;
 }
@@ -157,7 +158,7 @@ vec3 shade(vec3 positionView, vec3 normalView, vec3 toViewerView) {
     vec3 color = vec3(0.0);
 #ifdef SPECIALIZED
 #if HAS_AMBIENT
-    color += uMaterialAmbient * uAmbientLight; // neither attenuated nor spot-limited
+    color += uAmbientProduct; // neither attenuated nor spot-limited
 #endif
 #if NUM_DIRECTIONAL > 0
     for (int i = 0; i < NUM_DIRECTIONAL; ++i)
@@ -173,7 +174,7 @@ vec3 shade(vec3 positionView, vec3 normalView, vec3 toViewerView) {
 #endif
 #else
     for (int i = 0; i < uLightCount; ++i) {
-        color += uMaterialAmbient * uLights[i].ambient; // neither attenuated nor spot-limited
+        color += uLights[i].ambientProduct; // neither attenuated nor spot-limited
         int type = uLights[i].type;
         if (type == LIGHT_DIRECTIONAL)
             color += shadeDirectional(uLights[i], positionView, normalView, toViewerView);

@@ -178,15 +178,12 @@ SurfaceProgram::SurfaceProgram(Program linked, const ProgramVariant& variant) : 
     at.viewFromObject = find("uViewFromObject");
     at.normalViewFromObject = find("uNormalViewFromObject");
     at.handedness = find("uHandedness");
-    at.materialAmbient = find("uMaterialAmbient");
-    at.materialDiffuse = find("uMaterialDiffuse");
-    at.materialSpecular = find("uMaterialSpecular");
     at.shininess = find("uShininess");
     at.orthographic = find("uOrthographic");
     at.toonBands = find("uToonBands");
     at.toonBandWidth = find("uToonBandWidth");
     at.lightCount = find("uLightCount");
-    at.ambientLight = find("uAmbientLight");
+    at.ambientProduct = find("uAmbientProduct");
     auto lightsOf = [&](const std::string& array, int count, bool uber) {
         std::vector<LightLocations> out(std::size_t(std::max(count, 0)));
         for (int i = 0; i < count; ++i) {
@@ -194,10 +191,10 @@ SurfaceProgram::SurfaceProgram(Program linked, const ProgramVariant& variant) : 
             LightLocations& l = out[std::size_t(i)];
             if (uber) {
                 l.type = find(prefix + "type");
-                l.ambient = find(prefix + "ambient");
+                l.ambientProduct = find(prefix + "ambientProduct");
             }
-            l.diffuse = find(prefix + "diffuse");
-            l.specular = find(prefix + "specular");
+            l.diffuseProduct = find(prefix + "diffuseProduct");
+            l.specularProduct = find(prefix + "specularProduct");
             l.positionView = find(prefix + "positionView");
             l.directionView = find(prefix + "directionView");
             l.cosCutoff = find(prefix + "cosCutoff");

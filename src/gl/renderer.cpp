@@ -36,49 +36,56 @@ void setVec3(GLint location, const glm::dvec3& value) {
     glUniform3fv(location, 1, glm::value_ptr(v));
 }
 
-// One light's uniforms; `light` is already in view space.
-void setLight(const LightLocations& at, const Light& light) {
-    setVec3(at.diffuse, capColor(light.diffuse));
-    setVec3(at.specular, capColor(light.specular));
-    setVec3(at.positionView, light.position);
-    setVec3(at.directionView, safeNormalize(light.direction, glm::dvec3(0, 0, -1)));
-    glUniform1f(at.cosCutoff, float(std::cos(light.cutoffDeg * std::numbers::pi / 180)));
-    glUniform1f(at.exponent, float(light.exponent));
-    setVec3(at.attenuation, light.attenuation);
-}
-
-// The uber program: every light in one array, its type a uniform.
-void setUberLights(const SurfaceLocations& at, const std::vector<Light>& lightsView) {
-    const int count = std::min<int>(int(lightsView.size()), kMaxLights); // validateScene rejects more
-    glUniform1i(at.lightCount, count);
-    for (int i = 0; i < count; ++i) {
-        const Light& light = lightsView[std::size_t(i)];
-        const LightLocations& l = at.lights[0][std::size_t(i)];
-        glUniform1i(l.type, lightTypeCode(light.type));
-        setVec3(l.ambient, capColor(light.ambient));
-        setLight(l, light);
+// Calls visit(locations, light) for each light the program has a slot for: the uber program's one array
+// in scene order, or a specialized program's array per type (in scene order within a type). Ambient lights
+// have no slot in a specialized program (their sum is uAmbientProduct).
+template <class Visit>
+void forEachLightSlot(const SurfaceLocations& at, bool specialized, const std::vector<Light>& lightsView,
+                      Visit visit) {
+    if (!specialized) {
+        const std::size_t count = std::min<std::size_t>(lightsView.size(), kMaxLights); // validateScene
+        for (std::size_t i = 0; i < count; ++i) visit(at.lights[0][i], lightsView[i]);
+        return;
     }
-}
-
-// A specialized program: one array per light type, in scene order within a type, and the ambient terms
-// of all lights summed (k_a·ΣI_a = Σk_a·I_a).
-void setSpecializedLights(const SurfaceLocations& at, const std::vector<Light>& lightsView) {
-    glm::dvec3 ambient(0);
     std::size_t counts[4] = {0, 0, 0, 0};
     for (const Light& light : lightsView) {
-        ambient += capColor(light.ambient);
-        const int type = lightTypeCode(light.type);
-        if (type == 0) continue;
-        setLight(at.lights[std::size_t(type)].at(counts[type]++), light);
+        const auto type = std::size_t(lightTypeCode(light.type));
+        if (type != 0) visit(at.lights[type].at(counts[type]++), light);
     }
-    setVec3(at.ambientLight, capColor(ambient));
 }
 
-void setMaterial(const SurfaceLocations& at, const Material& material) {
-    setVec3(at.materialAmbient, capColor(material.ambient));
-    setVec3(at.materialDiffuse, capColor(material.diffuse));
-    setVec3(at.materialSpecular, capColor(material.specular));
+// What the lights are and where, once per frame; `lightsView` is already in view space. Their colours
+// depend on the object too (setLightProducts).
+void setLightGeometry(const SurfaceLocations& at, bool specialized, const std::vector<Light>& lightsView) {
+    if (!specialized) glUniform1i(at.lightCount, std::min<int>(int(lightsView.size()), kMaxLights));
+    forEachLightSlot(at, specialized, lightsView, [](const LightLocations& l, const Light& light) {
+        glUniform1i(l.type, lightTypeCode(light.type)); // −1 in a specialized program: ignored
+        setVec3(l.positionView, light.position);
+        setVec3(l.directionView, safeNormalize(light.direction, glm::dvec3(0, 0, -1)));
+        glUniform1f(l.cosCutoff, float(std::cos(light.cutoffDeg * std::numbers::pi / 180)));
+        glUniform1f(l.exponent, float(light.exponent));
+        setVec3(l.attenuation, light.attenuation);
+    });
+}
+
+// Per object: the material multiplied into each light's colours on the CPU (k_a·I_a, k_d·I_d, k_s·I_s,
+// in double, each product rounded to float once), so the shaders read three colours per light instead
+// of forming products of six per fragment (shaders/lighting.glsl says why that matters on llvmpipe).
+// Capped colours multiply to at most 1e36: inside float's range (capColor).
+void setLightProducts(const SurfaceLocations& at, bool specialized, const std::vector<Light>& lightsView,
+                      const Material& material) {
+    const glm::dvec3 ka = capColor(material.ambient), kd = capColor(material.diffuse),
+                     ks = capColor(material.specular);
     glUniform1f(at.shininess, float(std::max(material.shininess, 1.0)));
+    forEachLightSlot(at, specialized, lightsView, [&](const LightLocations& l, const Light& light) {
+        setVec3(l.ambientProduct, ka * capColor(light.ambient)); // −1 in a specialized program: ignored
+        setVec3(l.diffuseProduct, kd * capColor(light.diffuse));
+        setVec3(l.specularProduct, ks * capColor(light.specular));
+    });
+    if (!specialized) return;
+    glm::dvec3 ambient(0); // k_a·ΣI_a = Σk_a·I_a
+    for (const Light& light : lightsView) ambient += capColor(light.ambient);
+    setVec3(at.ambientProduct, ka * capColor(ambient));
 }
 
 void setTransforms(const SurfaceLocations& at, const glm::dmat4& clipFromView,
@@ -202,19 +209,16 @@ void Renderer::renderScene(const Scene& scene, int width, int height, int x) {
     std::vector<Light> lightsView;
     lightsView.reserve(scene.lights.size());
     for (const Light& light : scene.lights) lightsView.push_back(transformLight(light, view.viewFromWorld));
-    if (variant.specialized)
-        setSpecializedLights(at, lightsView);
-    else
-        setUberLights(at, lightsView);
+    setLightGeometry(at, variant.specialized, lightsView);
     glUniform1i(at.orthographic, view.orthographic ? 1 : 0); // uber programs (specialized: a define)
     if (scene.shading == ShadingMode::Toon || variant.exactToon) {
         glUniform1f(at.toonBands, float(scene.toonBands));
         glUniform1f(at.toonBandWidth, float(1.0 / scene.toonBands));
     }
     if (scene.shading == ShadingMode::Exact) {
-        drawExact(sized, view, at, x);
+        drawExact(sized, view, variant, at, lightsView, x);
     } else {
-        drawMeshes(sized, view, variant, at);
+        drawMeshes(sized, view, variant, at, lightsView);
     }
     glUseProgram(0);
     glDisable(GL_CULL_FACE);
@@ -223,12 +227,12 @@ void Renderer::renderScene(const Scene& scene, int width, int height, int x) {
 }
 
 void Renderer::drawMeshes(const Scene& sized, const SceneView& view, const ProgramVariant& variant,
-                          const SurfaceLocations& at) {
+                          const SurfaceLocations& at, const std::vector<Light>& lightsView) {
     const MeshLayout layout = sized.shading == ShadingMode::Flat && !variant.flatGeometryShader
                                   ? MeshLayout::Flat
                                   : MeshLayout::Smooth;
     for (const SceneObject& object : sized.objects) {
-        setMaterial(at, object.material);
+        setLightProducts(at, variant.specialized, lightsView, object.material);
         const glm::dmat4 viewFromObject = view.viewFromWorld * worldFromObject(object);
         setTransforms(at, view.clipFromView, viewFromObject);
         cullBackFaces(object, viewFromObject, view.volume.near);
@@ -240,7 +244,8 @@ void Renderer::drawMeshes(const Scene& sized, const SceneView& view, const Progr
 
 // Exact shading: one proxy rectangle per object, its rays cast in shaders/exact.frag.glsl with what
 // ray_cast.cpp's prepareObject and PixelRays give the analytic reference.
-void Renderer::drawExact(const Scene& sized, const SceneView& view, const SurfaceLocations& at, int x) {
+void Renderer::drawExact(const Scene& sized, const SceneView& view, const ProgramVariant& variant,
+                         const SurfaceLocations& at, const std::vector<Light>& lightsView, int x) {
     if (!emptyVertexArray_) { // the core profile draws only with a vertex array bound, even an empty one
         Id id = 0;
         glGenVertexArrays(1, &id);
@@ -263,7 +268,7 @@ void Renderer::drawExact(const Scene& sized, const SceneView& view, const Surfac
                                               sized.width, sized.height);
         if (!(rect.x < rect.z)) continue;
         const ObjectInView prepared = prepareObject(object, view.viewFromWorld);
-        setMaterial(at, object.material);
+        setLightProducts(at, variant.specialized, lightsView, object.material);
         glUniform4fv(at.ndcRect, 1, glm::value_ptr(rect));
         glUniformMatrix3fv(at.objectFromView, 1, GL_FALSE,
                            glm::value_ptr(glm::mat3(prepared.objectFromView3)));

@@ -48,18 +48,19 @@ struct ProgramVariant {
 // Where a surface program keeps its uniforms, looked up once when it is built (not by name every frame).
 // −1 marks a uniform the variant does not declare (an absent light type, the ambient sum of an
 // ambient-free variant) or that the compiler removed as unused; glUniform* ignores −1.
+// The colours are products with the drawn object's material (k_a·I_a, k_d·I_d, k_s·I_s: set per object).
 struct LightLocations {
-    int type = -1, ambient = -1; // uber program only
-    int diffuse = -1, specular = -1, positionView = -1, directionView = -1, cosCutoff = -1, exponent = -1,
-        attenuation = -1;
+    int type = -1, ambientProduct = -1; // uber program only
+    int diffuseProduct = -1, specularProduct = -1, positionView = -1, directionView = -1, cosCutoff = -1,
+        exponent = -1, attenuation = -1;
 };
 struct SurfaceLocations {
     int clipFromObject = -1, viewFromObject = -1, normalViewFromObject = -1, handedness = -1;
     // Exact shading only (shaders/exact.*.glsl): the proxy rectangle and what casting a pixel's ray needs.
     int ndcRect = -1, viewport = -1, nearRect = -1, nearFar = -1, objectFromView = -1, centerView = -1,
         clipFromView = -1, depthZeroToOne = -1, alpha = -1;
-    int materialAmbient = -1, materialDiffuse = -1, materialSpecular = -1, shininess = -1;
-    int orthographic = -1, toonBands = -1, toonBandWidth = -1, lightCount = -1, ambientLight = -1;
+    int shininess = -1, orthographic = -1, toonBands = -1, toonBandWidth = -1, lightCount = -1;
+    int ambientProduct = -1; // specialized: k_a·ΣI_a
     // Uber program: lights[0] holds uLights[0..MAX_LIGHTS). Specialized: lights[1], [2], [3] hold the
     // directional, point and spot arrays (indexed by the LIGHT_* codes of shaders/lighting.glsl).
     std::array<std::vector<LightLocations>, 4> lights;

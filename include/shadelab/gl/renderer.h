@@ -57,9 +57,11 @@ private:
     };
     const LineProgram& lineProgram();
     void drawOverlay(const Scene& sized, const SceneView& view);
+    // `lightsView`: the scene's lights in view space, whose colours each object's material multiplies.
     void drawMeshes(const Scene& sized, const SceneView& view, const ProgramVariant& variant,
-                    const SurfaceLocations& at);
-    void drawExact(const Scene& sized, const SceneView& view, const SurfaceLocations& at, int x);
+                    const SurfaceLocations& at, const std::vector<Light>& lightsView);
+    void drawExact(const Scene& sized, const SceneView& view, const ProgramVariant& variant,
+                   const SurfaceLocations& at, const std::vector<Light>& lightsView, int x);
 
     bool specialize_ = true;
     bool flatGeometryShader_ = false;
