@@ -238,6 +238,7 @@ Scene glmark2Scene(const BenchOptions& o, const char* glmark2Mode) {
         m.ambient = glm::dvec3(0.2);
     } else { // cel, light-cel.frag: point light at (4, 3, 1), diffuse lit or not, thresholded highlight
         scene.shading = ShadingMode::Toon;
+        scene.lighting = LightingModel::Phong; // its highlight is pow(max(0, reflect(−L, N)·V), 10)
         scene.toonBands = kMinToonBands;
         light.type = LightType::Point;
         light.position = {4, 3, 1 + d};
