@@ -11,6 +11,7 @@
 //     HAS_SPECULAR      some object's k_s and some light's I_s are non-zero
 //     NEEDS_NORMAL      some light is not ambient (ambient-only scenes read no normal attribute)
 //     VIEWER_AT_INFINITY  an orthographic projection: v = +z everywhere, a constant (else the local viewer)
+//   VERTEX_STAGE, FRAGMENT_STAGE, GEOMETRY_STAGE  which stage this copy is compiled into (set by the loader)
 //   Without SPECIALIZED: the uber program — counts and types as uniforms, one loop over all lights.
 // The colours arrive with the object's material multiplied in on the CPU (k_a·I_a, k_d·I_d, k_s·I_s, per
 // object and light): formed here they would be products of uniforms evaluated per fragment, and llvmpipe
@@ -53,6 +54,21 @@ uniform Light uPointLights[NUM_POINT];
 #endif
 #if NUM_SPOT > 0
 uniform Light uSpotLights[NUM_SPOT];
+#endif
+#endif
+
+// Per-fragment lighting in a specialized program: each positional light's p_light − p (points first, then
+// spots) comes from the vertex stage, interpolated. It is affine in p, so interpolating it is as exact as
+// interpolating p itself; and the fragment stage no longer reads the light's position, three uniform
+// components per light that llvmpipe would gather for every eight fragments (see the colours above).
+#if defined(SPECIALIZED) && (defined(SHADING_PHONG) || defined(SHADING_TOON)) && !defined(SHADING_EXACT)
+#if NUM_POINT + NUM_SPOT > 0
+#define INTERPOLATED_TO_LIGHT
+#if defined(VERTEX_STAGE)
+out vec3 vToLightView[NUM_POINT + NUM_SPOT];
+#elif defined(FRAGMENT_STAGE)
+in vec3 vToLightView[NUM_POINT + NUM_SPOT];
+#endif
 #endif
 #endif
 
@@ -120,9 +136,15 @@ vec3 directTerm(Light light, vec3 toLightView, float factor, vec3 normalView, ve
     return factor * color;
 }
 
-// A light exactly on the surface lights it head-on: l falls back to the normal.
-vec3 toPositionalLight(Light light, vec3 positionView, vec3 normalView, out float attenuation) {
+// A light exactly on the surface lights it head-on: l falls back to the normal. `positional` numbers the
+// specialized program's positional lights (points first, then spots).
+vec3 toPositionalLight(Light light, int positional, vec3 positionView, vec3 normalView,
+                       out float attenuation) {
+#if defined(INTERPOLATED_TO_LIGHT) && defined(FRAGMENT_STAGE)
+    vec3 d = vToLightView[positional];
+#else
     vec3 d = light.positionView - positionView;
+#endif
 #if HAS_ATTENUATION
     float t = length(d);
     vec3 k = light.attenuation;
@@ -137,16 +159,16 @@ vec3 shadeDirectional(Light light, vec3 positionView, vec3 normalView, vec3 toVi
     return directTerm(light, -light.directionView, 1.0, normalView, toViewerView);
 }
 
-vec3 shadePoint(Light light, vec3 positionView, vec3 normalView, vec3 toViewerView) {
+vec3 shadePoint(Light light, int positional, vec3 positionView, vec3 normalView, vec3 toViewerView) {
     float attenuation;
-    vec3 toLightView = toPositionalLight(light, positionView, normalView, attenuation);
+    vec3 toLightView = toPositionalLight(light, positional, positionView, normalView, attenuation);
     return directTerm(light, toLightView, attenuation, normalView, toViewerView);
 }
 
 // spot = max(−l·d, 0)^e inside the cone, 0 outside; exponent 0 gives 1 even on a 90° cone's rim.
-vec3 shadeSpot(Light light, vec3 positionView, vec3 normalView, vec3 toViewerView) {
+vec3 shadeSpot(Light light, int positional, vec3 positionView, vec3 normalView, vec3 toViewerView) {
     float attenuation;
-    vec3 toLightView = toPositionalLight(light, positionView, normalView, attenuation);
+    vec3 toLightView = toPositionalLight(light, positional, positionView, normalView, attenuation);
     float cosAngle = dot(-toLightView, light.directionView);
     if (cosAngle < light.cosCutoff) return vec3(0.0);
     float spot = light.exponent > 0.0 ? pow(max(cosAngle, 0.0), light.exponent) : 1.0;
@@ -166,11 +188,11 @@ vec3 shade(vec3 positionView, vec3 normalView, vec3 toViewerView) {
 #endif
 #if NUM_POINT > 0
     for (int i = 0; i < NUM_POINT; ++i)
-        color += shadePoint(uPointLights[i], positionView, normalView, toViewerView);
+        color += shadePoint(uPointLights[i], i, positionView, normalView, toViewerView);
 #endif
 #if NUM_SPOT > 0
     for (int i = 0; i < NUM_SPOT; ++i)
-        color += shadeSpot(uSpotLights[i], positionView, normalView, toViewerView);
+        color += shadeSpot(uSpotLights[i], NUM_POINT + i, positionView, normalView, toViewerView);
 #endif
 #else
     for (int i = 0; i < uLightCount; ++i) {
@@ -179,9 +201,9 @@ vec3 shade(vec3 positionView, vec3 normalView, vec3 toViewerView) {
         if (type == LIGHT_DIRECTIONAL)
             color += shadeDirectional(uLights[i], positionView, normalView, toViewerView);
         else if (type == LIGHT_POINT)
-            color += shadePoint(uLights[i], positionView, normalView, toViewerView);
+            color += shadePoint(uLights[i], i, positionView, normalView, toViewerView);
         else if (type == LIGHT_SPOT)
-            color += shadeSpot(uLights[i], positionView, normalView, toViewerView);
+            color += shadeSpot(uLights[i], i, positionView, normalView, toViewerView);
     }
 #endif
     return color;

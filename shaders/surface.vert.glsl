@@ -51,7 +51,17 @@ void main() {
 #elif defined(SHADING_GOURAUD)
     vColor = lightAt(aPositionObject);
 #else
-    vPositionView = (uViewFromObject * vec4(aPositionObject, 1.0)).xyz;
+    vec3 positionView = (uViewFromObject * vec4(aPositionObject, 1.0)).xyz;
+    vPositionView = positionView;
     vNormalView = uNormalViewFromObject * aNormalObject;
+#ifdef INTERPOLATED_TO_LIGHT // lighting.glsl: p_light − p per positional light, points first
+#if NUM_POINT > 0
+    for (int i = 0; i < NUM_POINT; ++i) vToLightView[i] = uPointLights[i].positionView - positionView;
+#endif
+#if NUM_SPOT > 0
+    for (int i = 0; i < NUM_SPOT; ++i)
+        vToLightView[NUM_POINT + i] = uSpotLights[i].positionView - positionView;
+#endif
+#endif
 #endif
 }

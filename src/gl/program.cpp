@@ -50,7 +50,10 @@ Shader compileSource(GLenum stage, const std::string& source, const std::string&
 }
 
 Shader compileStage(GLenum stage, const char* file, const ProgramVariant& variant) {
-    const std::string source = glslHeader() + variant.defines() + "#line 1 " +
+    const char* stageDefine = stage == GL_VERTEX_SHADER     ? "#define VERTEX_STAGE\n"
+                              : stage == GL_FRAGMENT_SHADER ? "#define FRAGMENT_STAGE\n"
+                                                            : "#define GEOMETRY_STAGE\n";
+    const std::string source = glslHeader() + variant.defines() + stageDefine + "#line 1 " +
                                std::to_string(kLightingSourceNumber) + "\n" +
                                std::string(shaderText(kLightingFile)) + "#line 1 " +
                                std::to_string(kStageSourceNumber) + "\n" + std::string(shaderText(file));
