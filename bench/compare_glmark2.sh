@@ -6,7 +6,10 @@
 #
 # Environment: DURATION seconds per glmark2 scene (default 10: one full turn of its cat at 36°/s),
 # FRAMES timed shadelab frames per mode (default 200), ROUNDS alternations glmark2 → shadelab (default 1;
-# with more, each figure is the median over the rounds), KEEP=1 keeps the temporary folder.
+# with more, each figure is the median over the rounds), KEEP=1 keeps the temporary folder, PIN=1 pins
+# llvmpipe's rasterizer threads of both programs one to a CPU (llvmpipe-N to CPU N mod the CPU count): the
+# scheduler otherwise queues both on one CPU in some frames, a tail both programs share (bench/README.md
+# "The frame-time tail, and pinned threads").
 #
 # Needs: glmark2-x11, xvfb, python3 (Debian packages). Starts its own Xvfb on a free display.
 set -euo pipefail
@@ -15,6 +18,7 @@ shadelab=${1:-build/shadelab}
 duration=${DURATION:-10}
 frames=${FRAMES:-200}
 rounds=${ROUNDS:-1}
+pin=${PIN:-0}
 
 fail() {
     echo "compare_glmark2: $*" >&2
@@ -108,6 +112,31 @@ json.dump(scene, open(sys.argv[1], "w"), indent=2)
 EOF
 "$shadelab" render "$tmp/scene.json" --out "$tmp/coverage.png" >/dev/null
 
+# PIN=1: a launcher that pins each llvmpipe-N thread as it appears, then waits for the program. Both programs
+# are started through it (with PIN=0 it only runs them).
+cat >"$tmp/launch.py" <<'EOF'
+import os, subprocess, sys, time
+pin, command = sys.argv[1] == "1", sys.argv[2:]
+child = subprocess.Popen(command)
+pinned, cpus = set(), os.cpu_count() or 1
+while pin and len(pinned) < cpus and child.poll() is None:
+    try:
+        tids = os.listdir(f"/proc/{child.pid}/task")
+    except FileNotFoundError:
+        break
+    for tid in tids:
+        try:
+            name = open(f"/proc/{child.pid}/task/{tid}/comm").read().strip()
+        except OSError:
+            continue
+        if tid not in pinned and name.startswith("llvmpipe-") and name[9:].isdigit():
+            os.sched_setaffinity(int(tid), {int(name[9:]) % cpus})
+            pinned.add(tid)
+    time.sleep(0.005)
+sys.exit(child.wait())
+EOF
+launch=(python3 "$tmp/launch.py" "$pin")
+
 modes=(gouraud blinn-phong-inf phong cel)
 glmark2_round() {
     local out=$1 benchmarks=(-b "clear:duration=$duration") model mode
@@ -116,7 +145,8 @@ glmark2_round() {
             benchmarks+=(-b "shading:shading=$mode:model=$model:duration=$duration")
         done
     done
-    DISPLAY=$display glmark2 --data-path "$tmp/glmark2-data" --off-screen -s 800x600 "${benchmarks[@]}" \
+    DISPLAY=$display "${launch[@]}" glmark2 --data-path "$tmp/glmark2-data" --off-screen -s 800x600 \
+        "${benchmarks[@]}" \
         >"$out" 2>&1 || fail "glmark2 failed: $(tail -5 "$out")"
     grep -q "FrameTime" "$out" || fail "glmark2 printed no frame times: $(tail -5 "$out")"
 }
@@ -125,16 +155,16 @@ for round in $(seq "$rounds"); do
     echo "round $round/$rounds: glmark2 (9 scenes × ${duration} s) ..." >&2
     glmark2_round "$tmp/glmark2-$round.txt"
     echo "round $round/$rounds: shadelab bench (${frames} frames per configuration) ..." >&2
-    "$shadelab" bench --size 800x600 --frames "$frames" \
+    "${launch[@]}" "$shadelab" bench --size 800x600 --frames "$frames" \
         --filter 'frame/(glmark2-equivalent/|limits/(clear|fill)/)' \
         --json "$tmp/shadelab-$round.json" >"$tmp/shadelab-$round.txt" 2>&1 ||
         fail "shadelab bench failed: $(tail -5 "$tmp/shadelab-$round.txt")"
 done
 
-python3 - "$tmp" "$rounds" "$duration" <<'EOF'
+python3 - "$tmp" "$rounds" "$duration" "$pin" <<'EOF'
 import json, re, statistics, sys, zlib
 
-tmp, rounds, duration = sys.argv[1], int(sys.argv[2]), sys.argv[3]
+tmp, rounds, duration, pin = sys.argv[1], int(sys.argv[2]), sys.argv[3], sys.argv[4] == "1"
 
 def png_rgb(path):
     """The pixels of shadelab's 8-bit RGB PNG (non-interlaced), as rows of bytes."""
@@ -195,7 +225,8 @@ print(f"coverage: shadelab's render of the equivalent scene covers {covered} px 
       f"{sl('frame/glmark2-equivalent/phong', 'covered_px'):.0f} px); glmark2 frames the same sphere the "
       f"same way (179.8 px radius); its cat covers about 15-20 %")
 print(f"frame times in ms: glmark2's mean over {duration} s, shadelab's mean (median) over its frames; "
-      f"median over {rounds} round(s); ratio = shadelab mean / glmark2 mean\n")
+      f"median over {rounds} round(s); ratio = shadelab mean / glmark2 mean"
+      + ("; llvmpipe's threads pinned one to a CPU in both (PIN=1)" if pin else "") + "\n")
 equivalent = "frame/glmark2-equivalent/"
 rows = [("clear", "clear", "frame/limits/clear"),
         ("gouraud", "gouraud (directional light, diffuse only)", equivalent + "gouraud"),
