@@ -25,6 +25,7 @@ fail() {
     exit 1
 }
 [[ -x $shadelab ]] || fail "no shadelab binary at '$shadelab' (pass its path as the first argument)"
+[[ $pin == 0 || $pin == 1 ]] || fail "PIN is '$pin': set it to 1 (pin llvmpipe's threads) or 0 (the default)"
 for tool in glmark2 Xvfb python3; do
     command -v "$tool" >/dev/null || fail "$tool not found (apt-get install glmark2-x11 xvfb python3)"
 done

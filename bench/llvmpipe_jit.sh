@@ -84,15 +84,15 @@ for line in open(f"{out}/samples.txt"):
     fields = line.split()
     try: samples[int(fields[0], 16)] += 1
     except (IndexError, ValueError): pass
-lines, function = [], []
+function, in_function = [], True  # the mapping's first function: up to its first ret
 with open(f"{out}/annotated.s", "w") as annotated:
     for line in open(f"{out}/code.s"):
         m = re.match(r"\s*([0-9a-f]+):\t[0-9a-f ]+\t(.*)", line)
         if not m: continue
         address, text = int(m.group(1), 16), m.group(2)
         annotated.write(f"{samples.get(address, 0):6d}  {address:#x}  {text}\n")
-        if not lines or not lines[-1].startswith("ret"): function.append(text)  # up to the first ret
-        lines.append(text)
+        if in_function: function.append(text)
+        if text.startswith("ret"): in_function = False
 count = lambda pattern: sum(1 for t in function if re.match(pattern, t))
 print(f"generated code: {hot} of {total} samples ({100 * hot / max(total, 1):.0f} %) in the hottest "
       f"mapping; its first function has {len(function)} instructions")

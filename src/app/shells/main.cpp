@@ -29,15 +29,16 @@ void warnAbout(const Scene& scene, const std::string& file) {
                      printable(warning).c_str());
 }
 
-// llvmpipe allocates each frame's binned scene from the heap (64 KiB blocks) and frees it when the frame is
+// llvmpipe allocates each frame's binned scene on the heap, in blocks, and frees it when the frame is
 // rasterized. When those blocks end up at the top of glibc's heap, free() hands the pages back to the kernel
 // (the default trim threshold is 128 KiB, and it only rises if mmap-sized blocks are freed) and the next
-// frame faults them in again: 150 page faults a frame, 1.8 ms of the main thread's time at 800×600 on this
-// VM (72,136 faults for 400 phong frames against 11,809 — bench/README.md "The frame-time tail, and pinned
-// threads"). Whether the blocks land at the top depends on what was allocated before, so a fixed threshold
-// is set instead: up to 64 MiB of freed heap is kept for the next frame, and blocks below 32 MiB come from
-// the heap rather than from mmap (setting either turns glibc's dynamic thresholds off). A request glibc
-// refuses (or a sanitizer's allocator, which ignores mallopt) leaves the defaults: only speed depends on it.
+// frame faults them in again: 150 page faults a frame, 1.8 ms of the main thread's time at 800×600 on the
+// 2-vCPU VM where it was measured (72,136 faults for 400 phong frames against 11,809 — bench/README.md "The
+// frame-time tail, and pinned threads"). Whether the blocks land at the top depends on what was allocated
+// before, so a fixed threshold is set instead: up to 64 MiB of freed heap is kept for the next frame, and
+// blocks below 32 MiB come from the heap rather than from mmap (setting either turns glibc's dynamic
+// thresholds off). A request glibc refuses leaves its defaults, as does a sanitizer's own allocator: only
+// speed depends on it.
 void keepFreedHeapForTheNextFrame() {
 #if defined(__GLIBC__)
     mallopt(M_MMAP_THRESHOLD, 32 << 20);
