@@ -11,12 +11,18 @@
 //     HAS_SPECULAR      some object's k_s and some light's I_s are non-zero
 //     NEEDS_NORMAL      some light is not ambient (ambient-only scenes read no normal attribute)
 //     VIEWER_AT_INFINITY  an orthographic projection: v = +z everywhere, a constant (else the local viewer)
+//     VALUES_COMPILED_IN  the drawn object's values as constants instead of uniforms (Specialization::Values),
+//       with SHININESS, AMBIENT_PRODUCT (HAS_AMBIENT), TOON_BANDS and TOON_BAND_WIDTH (toon) defined as
+//       literals and DIRECTIONAL_VALUES, POINT_VALUES, SPOT_VALUES as LightValues[](...) lists; the lights'
+//       view-space positions and directions stay uniforms (they move with the camera); SHININESS_INTEGER
+//       as well where the shininess is a whole number up to 2047 (x^n by squaring)
 //   VERTEX_STAGE, FRAGMENT_STAGE, GEOMETRY_STAGE  which stage this copy is compiled into (set by the loader)
 //   Without SPECIALIZED: the uber program — counts and types as uniforms, one loop over all lights.
 // The colours arrive with the object's material multiplied in on the CPU (k_a·I_a, k_d·I_d, k_s·I_s, per
 // object and light): formed here they would be products of uniforms evaluated per fragment, and llvmpipe
 // reads every uniform component a fragment shader uses with a bounds-checked gather of all eight lanes
-// (bench/README.md "What llvmpipe makes of the fragment shader").
+// (bench/README.md "What llvmpipe makes of the fragment shader"); with VALUES_COMPILED_IN they are
+// constants, and none is gathered.
 
 const int LIGHT_AMBIENT = 0;
 const int LIGHT_DIRECTIONAL = 1;
@@ -35,6 +41,24 @@ struct Light {
     vec3 attenuation;   // a, b, c of 1/(a + b·t + c·t²)
 };
 
+// A light's values for the drawn object, compiled in (VALUES_COMPILED_IN): Light's fields of those names.
+struct LightValues {
+    vec3 diffuseProduct;
+    vec3 specularProduct;
+    vec3 attenuation;
+    float cosCutoff;
+    float exponent;
+};
+
+Light withValues(Light geometry, LightValues values) {
+    geometry.diffuseProduct = values.diffuseProduct;
+    geometry.specularProduct = values.specularProduct;
+    geometry.attenuation = values.attenuation;
+    geometry.cosCutoff = values.cosCutoff;
+    geometry.exponent = values.exponent;
+    return geometry;
+}
+
 #ifndef SPECIALIZED
 #define NEEDS_NORMAL 1
 #define HAS_AMBIENT 1
@@ -43,17 +67,49 @@ struct Light {
 uniform Light uLights[MAX_LIGHTS];
 uniform int uLightCount;
 #else
-#if HAS_AMBIENT
+#if HAS_AMBIENT && !defined(VALUES_COMPILED_IN)
 uniform vec3 uAmbientProduct; // k_a·Σ I_a over all lights
+#define AMBIENT_PRODUCT uAmbientProduct
 #endif
+// directionalLight(i), pointLight(i), spotLight(i): light i of its type, with its values for the object.
 #if NUM_DIRECTIONAL > 0
 uniform Light uDirectionalLights[NUM_DIRECTIONAL];
+#ifdef VALUES_COMPILED_IN
+const LightValues kDirectionalValues[NUM_DIRECTIONAL] = DIRECTIONAL_VALUES;
+#endif
+Light directionalLight(int i) {
+#ifdef VALUES_COMPILED_IN
+    return withValues(uDirectionalLights[i], kDirectionalValues[i]);
+#else
+    return uDirectionalLights[i];
+#endif
+}
 #endif
 #if NUM_POINT > 0
 uniform Light uPointLights[NUM_POINT];
+#ifdef VALUES_COMPILED_IN
+const LightValues kPointValues[NUM_POINT] = POINT_VALUES;
+#endif
+Light pointLight(int i) {
+#ifdef VALUES_COMPILED_IN
+    return withValues(uPointLights[i], kPointValues[i]);
+#else
+    return uPointLights[i];
+#endif
+}
 #endif
 #if NUM_SPOT > 0
 uniform Light uSpotLights[NUM_SPOT];
+#ifdef VALUES_COMPILED_IN
+const LightValues kSpotValues[NUM_SPOT] = SPOT_VALUES;
+#endif
+Light spotLight(int i) {
+#ifdef VALUES_COMPILED_IN
+    return withValues(uSpotLights[i], kSpotValues[i]);
+#else
+    return uSpotLights[i];
+#endif
+}
 #endif
 #endif
 
@@ -72,12 +128,17 @@ in vec3 vToLightView[NUM_POINT + NUM_SPOT];
 #endif
 #endif
 
+#ifndef VALUES_COMPILED_IN
 uniform float uShininess;    // >= 1: pow(0, 0) is undefined in GLSL
+uniform float uToonBands;    // SHADING_TOON only
+uniform float uToonBandWidth; // 1 / uToonBands, divided once on the CPU
+#define SHININESS uShininess
+#define TOON_BANDS uToonBands
+#define TOON_BAND_WIDTH uToonBandWidth
+#endif
 #ifndef SPECIALIZED
 uniform bool uOrthographic;  // parallel projection: the viewer direction is +z everywhere
 #endif
-uniform float uToonBands;    // SHADING_TOON only
-uniform float uToonBandWidth; // 1 / uToonBands, divided once on the CPU
 
 // normalize(v), or the fallback where v is too short to normalize (DESIGN §3 guards), for a v of any finite
 // magnitude (view-space positions reach 1e30): scaling by the largest component first keeps dot(v, v) from
@@ -108,13 +169,30 @@ vec3 toViewer(vec3 positionView, vec3 normalView) {
 #endif
 }
 
+// x^SHININESS for x >= 0. A shininess compiled in as a whole number (SHININESS_INTEGER, 1..2047) is taken
+// by squaring: the loop unrolls and folds to ⌊log₂ n⌋ squarings and a product per set bit (7 multiplies for
+// 100), exact to float rounding, where pow is exp2(log2(x)·n) — two polynomial approximations on llvmpipe.
+float specularPower(float x) {
+#ifdef SHININESS_INTEGER
+    float result = 1.0;
+    float square = x;
+    for (int bit = 0; bit < 11; ++bit) {
+        if (((SHININESS_INTEGER >> bit) & 1) != 0) result *= square;
+        square *= square;
+    }
+    return result;
+#else
+    return pow(x, SHININESS);
+#endif
+}
+
 float specularTerm(vec3 normalView, vec3 toViewerView, vec3 toLightView, float lDotN) {
 #ifdef LIGHTING_BLINN_PHONG
     vec3 halfView = normalizeBounded(toViewerView + toLightView, normalView); // |v + l| <= 2
-    return pow(max(dot(normalView, halfView), 0.0), uShininess);
+    return specularPower(max(dot(normalView, halfView), 0.0));
 #else
     vec3 reflectedView = -toLightView + 2.0 * lDotN * normalView;
-    return pow(max(dot(toViewerView, reflectedView), 0.0), uShininess);
+    return specularPower(max(dot(toViewerView, reflectedView), 0.0));
 #endif
 }
 
@@ -123,7 +201,7 @@ vec3 directTerm(Light light, vec3 toLightView, float factor, vec3 normalView, ve
     float lDotN = dot(toLightView, normalView);
     float diffuse = max(lDotN, 0.0);
 #ifdef SHADING_TOON
-    diffuse = ceil(diffuse * uToonBands) * uToonBandWidth;
+    diffuse = ceil(diffuse * TOON_BANDS) * TOON_BAND_WIDTH;
 #endif
     vec3 color = light.diffuseProduct * diffuse;
 #if HAS_SPECULAR
@@ -180,19 +258,19 @@ vec3 shade(vec3 positionView, vec3 normalView, vec3 toViewerView) {
     vec3 color = vec3(0.0);
 #ifdef SPECIALIZED
 #if HAS_AMBIENT
-    color += uAmbientProduct; // neither attenuated nor spot-limited
+    color += AMBIENT_PRODUCT; // neither attenuated nor spot-limited
 #endif
 #if NUM_DIRECTIONAL > 0
     for (int i = 0; i < NUM_DIRECTIONAL; ++i)
-        color += shadeDirectional(uDirectionalLights[i], positionView, normalView, toViewerView);
+        color += shadeDirectional(directionalLight(i), positionView, normalView, toViewerView);
 #endif
 #if NUM_POINT > 0
     for (int i = 0; i < NUM_POINT; ++i)
-        color += shadePoint(uPointLights[i], i, positionView, normalView, toViewerView);
+        color += shadePoint(pointLight(i), i, positionView, normalView, toViewerView);
 #endif
 #if NUM_SPOT > 0
     for (int i = 0; i < NUM_SPOT; ++i)
-        color += shadeSpot(uSpotLights[i], NUM_POINT + i, positionView, normalView, toViewerView);
+        color += shadeSpot(spotLight(i), NUM_POINT + i, positionView, normalView, toViewerView);
 #endif
 #else
     for (int i = 0; i < uLightCount; ++i) {

@@ -296,6 +296,7 @@ int main() {
         gl::loadGl(glfwGetProcAddress, "webgl", Api::Gles);
         p.rendererString = gl::rendererString();
         p.renderer = std::make_unique<gl::Renderer>();
+        p.renderer->setSpecialization(gl::Specialization::Lights); // as the window: sliders recompile nothing
         p.state = std::make_unique<DemoState>(Scene{});
     } catch (const std::exception& e) {
         EM_ASM({ shadelabFatal(UTF8ToString($0)); }, e.what());

@@ -12,6 +12,7 @@ namespace shadelab {
 namespace gl {
 class Renderer;
 struct ViewFigures;
+enum class Specialization;
 } // namespace gl
 
 class HeadlessRenderer {
@@ -29,8 +30,8 @@ public:
     Api api() const { return context_->api(); }
     // "EGL device 0 (software rasterizer)", "EGL surfaceless platform", "OSMesa".
     std::string origin() const { return context_->origin(); }
-    // Scene-specialized programs (default) or the uber programs; see gl/program.h.
-    void setSpecialize(bool specialize);
+    // How far programs are specialized (default: to each object's values); see gl/program.h.
+    void setSpecialization(gl::Specialization specialization);
     // Flat shading through shared vertices and a geometry shader (see gl/renderer.h).
     void setFlatGeometryShader(bool enabled);
     int programsBuilt() const;

@@ -57,8 +57,8 @@ HeadlessRenderer::~HeadlessRenderer() {
     }
 }
 
-void HeadlessRenderer::setSpecialize(bool specialize) {
-    renderer_->setSpecialize(specialize);
+void HeadlessRenderer::setSpecialization(gl::Specialization specialization) {
+    renderer_->setSpecialization(specialization);
 }
 void HeadlessRenderer::setFlatGeometryShader(bool enabled) {
     renderer_->setFlatGeometryShader(enabled);

@@ -54,38 +54,35 @@ void forEachLightSlot(const SurfaceLocations& at, bool specialized, const std::v
     }
 }
 
-// What the lights are and where, once per frame; `lightsView` is already in view space. Their colours
-// depend on the object too (setLightProducts).
+// What the lights are and where, once per frame and program; `lightsView` is already in view space. Their
+// colours depend on the object too (setLightValues).
 void setLightGeometry(const SurfaceLocations& at, bool specialized, const std::vector<Light>& lightsView) {
     if (!specialized) glUniform1i(at.lightCount, std::min<int>(int(lightsView.size()), kMaxLights));
     forEachLightSlot(at, specialized, lightsView, [](const LightLocations& l, const Light& light) {
         glUniform1i(l.type, lightTypeCode(light.type)); // −1 in a specialized program: ignored
         setVec3(l.positionView, light.position);
         setVec3(l.directionView, safeNormalize(light.direction, glm::dvec3(0, 0, -1)));
-        glUniform1f(l.cosCutoff, float(std::cos(light.cutoffDeg * std::numbers::pi / 180)));
-        glUniform1f(l.exponent, float(light.exponent));
-        setVec3(l.attenuation, light.attenuation);
     });
 }
 
-// Per object: the material multiplied into each light's colours on the CPU (k_a·I_a, k_d·I_d, k_s·I_s,
-// in double, each product rounded to float once), so the shaders read three colours per light instead
-// of forming products of six per fragment (shaders/lighting.glsl says why that matters on llvmpipe).
-// Capped colours multiply to at most 1e36: inside float's range (capColor).
-void setLightProducts(const SurfaceLocations& at, bool specialized, const std::vector<Light>& lightsView,
-                      const Material& material) {
-    const glm::dvec3 ka = capColor(material.ambient), kd = capColor(material.diffuse),
-                     ks = capColor(material.specular);
-    glUniform1f(at.shininess, float(std::max(material.shininess, 1.0)));
+// Per object: the material multiplied into each light's colours on the CPU (lightValues: k_a·I_a,
+// k_d·I_d, k_s·I_s in double, each rounded to float once), so the shaders read three colours per light
+// instead of forming products of six per fragment (shaders/lighting.glsl says why that matters on
+// llvmpipe); with the lights' attenuation and cones. A program with the values compiled in has none of
+// these uniforms (location −1: ignored).
+void setLightValues(const SurfaceLocations& at, bool specialized, const std::vector<Light>& lightsView,
+                    const Material& material) {
+    glUniform1f(at.shininess, shininessValue(material));
     forEachLightSlot(at, specialized, lightsView, [&](const LightLocations& l, const Light& light) {
-        setVec3(l.ambientProduct, ka * capColor(light.ambient)); // −1 in a specialized program: ignored
-        setVec3(l.diffuseProduct, kd * capColor(light.diffuse));
-        setVec3(l.specularProduct, ks * capColor(light.specular));
+        const LightValues v = lightValues(light, material);
+        glUniform3fv(l.ambientProduct, 1, glm::value_ptr(v.ambientProduct)); // uber programs only
+        glUniform3fv(l.diffuseProduct, 1, glm::value_ptr(v.diffuseProduct));
+        glUniform3fv(l.specularProduct, 1, glm::value_ptr(v.specularProduct));
+        glUniform3fv(l.attenuation, 1, glm::value_ptr(v.attenuation));
+        glUniform1f(l.cosCutoff, v.cosCutoff);
+        glUniform1f(l.exponent, v.exponent);
     });
-    if (!specialized) return;
-    glm::dvec3 ambient(0); // k_a·ΣI_a = Σk_a·I_a
-    for (const Light& light : lightsView) ambient += capColor(light.ambient);
-    setVec3(at.ambientProduct, ka * capColor(ambient));
+    if (specialized) glUniform3fv(at.ambientProduct, 1, glm::value_ptr(ambientProduct(lightsView, material)));
 }
 
 void setTransforms(const SurfaceLocations& at, const glm::dmat4& clipFromView,
@@ -148,8 +145,8 @@ glm::vec4 proxyRectangle(const glm::dmat4& clipFromView, const glm::dmat4& viewF
 
 Renderer::Renderer() = default;
 
-void Renderer::setSpecialize(bool specialize) {
-    specialize_ = specialize;
+void Renderer::setSpecialization(Specialization specialization) {
+    specialization_ = specialization;
 }
 
 const GpuMesh& Renderer::mesh(int level, VertexNormals normals, MeshLayout layout) {
@@ -200,25 +197,37 @@ void Renderer::renderScene(const Scene& scene, int width, int height, int x) {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_GREATER);
 
-    ProgramVariant variant = ProgramVariant::forScene(scene, specialize_);
+    ProgramVariant variant = ProgramVariant::forScene(scene, specialization_ != Specialization::None);
     variant.flatGeometryShader = flatGeometryShader_ && scene.shading == ShadingMode::Flat;
     variant.exactToon = exactToon_ && scene.shading == ShadingMode::Exact;
-    const SurfaceProgram& surface = program(variant);
-    const SurfaceLocations& at = surface.at;
-    glUseProgram(surface.program.get());
     std::vector<Light> lightsView;
     lightsView.reserve(scene.lights.size());
     for (const Light& light : scene.lights) lightsView.push_back(transformLight(light, view.viewFromWorld));
-    setLightGeometry(at, variant.specialized, lightsView);
-    glUniform1i(at.orthographic, view.orthographic ? 1 : 0); // uber programs (specialized: a define)
-    if (scene.shading == ShadingMode::Toon || variant.exactToon) {
-        glUniform1f(at.toonBands, float(scene.toonBands));
-        glUniform1f(at.toonBandWidth, float(1.0 / scene.toonBands));
-    }
+    // What every program the frame binds needs, set again whenever another program is bound.
+    const FrameUniforms setFrameUniforms = [&](const SurfaceLocations& at) {
+        setLightGeometry(at, variant.specialized, lightsView);
+        glUniform1i(at.orthographic, view.orthographic ? 1 : 0); // uber programs (specialized: a define)
+        if (scene.shading == ShadingMode::Toon || variant.exactToon) {
+            glUniform1f(at.toonBands, float(scene.toonBands));
+            glUniform1f(at.toonBandWidth, float(1.0 / scene.toonBands));
+        }
+    };
+    const ObjectProgram objectProgram = [&, bound = static_cast<const SurfaceProgram*>(nullptr)](
+                                            const SceneObject& object) mutable -> const SurfaceLocations& {
+        const SurfaceProgram& surface = program(
+            specialization_ == Specialization::Values ? variant.withValues(scene, object.material) : variant);
+        if (&surface != bound) {
+            glUseProgram(surface.program.get());
+            setFrameUniforms(surface.at);
+            bound = &surface;
+        }
+        setLightValues(surface.at, variant.specialized, lightsView, object.material);
+        return surface.at;
+    };
     if (scene.shading == ShadingMode::Exact) {
-        drawExact(sized, view, variant, at, lightsView, x);
+        drawExact(sized, view, objectProgram, x);
     } else {
-        drawMeshes(sized, view, variant, at, lightsView);
+        drawMeshes(sized, view, variant, objectProgram);
     }
     glUseProgram(0);
     glDisable(GL_CULL_FACE);
@@ -227,12 +236,12 @@ void Renderer::renderScene(const Scene& scene, int width, int height, int x) {
 }
 
 void Renderer::drawMeshes(const Scene& sized, const SceneView& view, const ProgramVariant& variant,
-                          const SurfaceLocations& at, const std::vector<Light>& lightsView) {
+                          const ObjectProgram& objectProgram) {
     const MeshLayout layout = sized.shading == ShadingMode::Flat && !variant.flatGeometryShader
                                   ? MeshLayout::Flat
                                   : MeshLayout::Smooth;
     for (const SceneObject& object : sized.objects) {
-        setLightProducts(at, variant.specialized, lightsView, object.material);
+        const SurfaceLocations& at = objectProgram(object);
         const glm::dmat4 viewFromObject = view.viewFromWorld * worldFromObject(object);
         setTransforms(at, view.clipFromView, viewFromObject);
         cullBackFaces(object, viewFromObject, view.volume.near);
@@ -244,8 +253,8 @@ void Renderer::drawMeshes(const Scene& sized, const SceneView& view, const Progr
 
 // Exact shading: one proxy rectangle per object, its rays cast in shaders/exact.frag.glsl with what
 // ray_cast.cpp's prepareObject and PixelRays give the analytic reference.
-void Renderer::drawExact(const Scene& sized, const SceneView& view, const ProgramVariant& variant,
-                         const SurfaceLocations& at, const std::vector<Light>& lightsView, int x) {
+void Renderer::drawExact(const Scene& sized, const SceneView& view, const ObjectProgram& objectProgram,
+                         int x) {
     if (!emptyVertexArray_) { // the core profile draws only with a vertex array bound, even an empty one
         Id id = 0;
         glGenVertexArrays(1, &id);
@@ -253,22 +262,24 @@ void Renderer::drawExact(const Scene& sized, const SceneView& view, const Progra
     }
     glDisable(GL_CULL_FACE);
     const ViewVolume& v = view.volume;
-    glUniform4f(at.viewport, float(x), 0.0f, float(sized.width), float(sized.height));
-    glUniform4f(at.nearRect, float(v.left), float(v.right), float(v.bottom), float(v.top));
-    // An infinite far plane clips nothing behind (as the reference): the largest float's order stands for it.
-    glUniform2f(at.nearFar, float(v.near), sized.depth == DepthMode::ReversedInfinite ? 3e38f : float(v.far));
-    glUniformMatrix4fv(at.clipFromView, 1, GL_FALSE, glm::value_ptr(glm::mat4(view.clipFromView)));
-    glUniform1f(at.depthZeroToOne, view.depth != DepthMode::Standard ? 1.0f : 0.0f);
     glBindVertexArray(emptyVertexArray_.get());
     for (std::size_t index = 0; index < sized.objects.size(); ++index) {
         const SceneObject& object = sized.objects[index];
-        glUniform1f(at.alpha, exactObjectIds_ ? float(index + 1) : 1.0f);
         const glm::dmat4 viewFromObject = view.viewFromWorld * worldFromObject(object);
         const glm::vec4 rect = proxyRectangle(view.clipFromView, viewFromObject, v.near, view.orthographic,
                                               sized.width, sized.height);
         if (!(rect.x < rect.z)) continue;
+        const SurfaceLocations& at = objectProgram(object);
+        glUniform4f(at.viewport, float(x), 0.0f, float(sized.width), float(sized.height));
+        glUniform4f(at.nearRect, float(v.left), float(v.right), float(v.bottom), float(v.top));
+        // An infinite far plane clips nothing behind (as the reference): the largest float's order stands
+        // for it.
+        glUniform2f(at.nearFar, float(v.near),
+                    sized.depth == DepthMode::ReversedInfinite ? 3e38f : float(v.far));
+        glUniformMatrix4fv(at.clipFromView, 1, GL_FALSE, glm::value_ptr(glm::mat4(view.clipFromView)));
+        glUniform1f(at.depthZeroToOne, view.depth != DepthMode::Standard ? 1.0f : 0.0f);
+        glUniform1f(at.alpha, exactObjectIds_ ? float(index + 1) : 1.0f);
         const ObjectInView prepared = prepareObject(object, view.viewFromWorld);
-        setLightProducts(at, variant.specialized, lightsView, object.material);
         glUniform4fv(at.ndcRect, 1, glm::value_ptr(rect));
         glUniformMatrix3fv(at.objectFromView, 1, GL_FALSE,
                            glm::value_ptr(glm::mat3(prepared.objectFromView3)));

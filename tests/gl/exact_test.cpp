@@ -104,13 +104,13 @@ class ExactAgainstReference : public testing::TestWithParam<ExactCase> {};
 TEST_P(ExactAgainstReference, InteriorAndSilhouetteWithinTheIssuesLimits) {
     SHADELAB_REQUIRE_GL(renderer);
     const Scene scene = exactScene(GetParam().scene());
-    for (bool specialize : {true, false}) {
-        renderer->setSpecialize(specialize);
+    for (const auto& [specialization, label] : kSpecializationLabels) {
+        renderer->setSpecialization(specialization);
         for (LightingModel model : kLightingModels) {
             Scene s = scene;
             s.lighting = model;
-            const std::string what = std::string(GetParam().name) + "/" + std::string(toString(model)) +
-                                     (specialize ? "/specialized" : "/uber");
+            const std::string what =
+                std::string(GetParam().name) + "/" + std::string(toString(model)) + "/" + label;
             const ImageF image = renderer->renderFloat(s);
             const ReferenceImage reference = renderReference(s);
             const InteriorError e = interiorError(image, reference);
@@ -123,7 +123,7 @@ TEST_P(ExactAgainstReference, InteriorAndSilhouetteWithinTheIssuesLimits) {
             EXPECT_LE(shift, 0.05) << what;
         }
     }
-    renderer->setSpecialize(true);
+    renderer->setSpecialization(gl::Specialization::Values);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, ExactAgainstReference, testing::ValuesIn(exactCases()),

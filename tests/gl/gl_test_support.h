@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "shadelab/gl/program.h"
 #include "shadelab/headless.h"
 #include "shadelab/reference.h"
 
@@ -35,6 +36,13 @@ std::vector<bool> sharedInterior(const ImageF& rendered, const ReferenceImage& r
 double silhouetteShiftPx(const ImageF& image, const ReferenceImage& reference);
 // Interior pixels (as interiorError counts them) with some colour channel off by more than `limit255`.
 std::size_t interiorPixelsOver(const ImageF& rendered, const ReferenceImage& reference, double limit255);
+
+// Each specialization with the name test messages give it.
+inline constexpr std::pair<gl::Specialization, const char*> kSpecializationLabels[] = {
+    {gl::Specialization::None, "uber"},
+    {gl::Specialization::Lights, "specialized"},
+    {gl::Specialization::Values, "values"},
+};
 
 // A sphere scene of size×size with one light of the given type, lit from the upper right front.
 Scene litSphereScene(int size, LightType light);

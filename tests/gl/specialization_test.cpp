@@ -1,6 +1,7 @@
-// Scene-specialized programs against the uber program: the same equation with absent terms left out,
-// so on every scene the two pictures agree within 1/255 (float sums in another order), and programs are
-// cached by their key.
+// Scene-specialized programs against the uber program: the same equation with absent terms left out
+// (and, with values compiled in, the same floats as constants), so on every scene the pictures agree
+// within 1/255 (float sums in another order), and programs are cached by their key.
+#include <cctype>
 #include <functional>
 
 #include "gl/gl_test_support.h"
@@ -90,13 +91,17 @@ TEST_P(Specialization, AgreesWithTheUberProgramWithin1Of255) {
             scene.shading = mode;
             scene.lighting = model;
             GetParam().change(scene);
-            renderer->setSpecialize(false);
+            renderer->setSpecialization(gl::Specialization::None);
             const Image uber = renderer->render(scene);
-            renderer->setSpecialize(true);
-            const Image specialized = renderer->render(scene);
-            // Every pixel within 1/255 (the limit), toon bands included: no outlier budget.
-            const Comparison c = compareImages(specialized, uber, Tolerance{1, 0.05, 0});
-            EXPECT_TRUE(c.passed) << toString(mode) << "/" << toString(model) << ": " << c.summary();
+            for (const auto& [specialization, label] : kSpecializationLabels) {
+                if (specialization == gl::Specialization::None) continue;
+                renderer->setSpecialization(specialization);
+                const Image specialized = renderer->render(scene);
+                // Every pixel within 1/255 (the limit), toon bands included: no outlier budget.
+                const Comparison c = compareImages(specialized, uber, Tolerance{1, 0.05, 0});
+                EXPECT_TRUE(c.passed)
+                    << toString(mode) << "/" << toString(model) << " " << label << ": " << c.summary();
+            }
         }
     }
 }
@@ -137,7 +142,7 @@ TEST_P(Specialization, FlatGeometryShaderMatchesDuplicatedVertices) {
 
 TEST(SpecializationCache, SwitchingBackNeverRecompiles) {
     SHADELAB_REQUIRE_GL(renderer);
-    renderer->setSpecialize(true);
+    renderer->setSpecialization(gl::Specialization::Lights);
     Scene a = litSphereScene(16, LightType::Point);
     Scene b = litSphereScene(16, LightType::Spot);
     renderer->render(a);
@@ -151,6 +156,34 @@ TEST(SpecializationCache, SwitchingBackNeverRecompiles) {
     a.lights.push_back(a.lights[0]); // two point lights: a new key
     renderer->render(a);
     EXPECT_EQ(renderer->programsBuilt(), built + 1);
+    // A colour or the shininess is a uniform of a program specialized to the lights: nothing to build.
+    a.objects[0].material.shininess = 7;
+    a.lights[0].diffuse = {0.5, 0.25, 1};
+    renderer->render(a);
+    EXPECT_EQ(renderer->programsBuilt(), built + 1);
+    renderer->setSpecialization(gl::Specialization::Values);
+}
+
+// With values compiled in, a program is built per distinct set of values — two objects of one material
+// share theirs — and switching back to values seen before builds nothing.
+TEST(SpecializationCache, ValuesBuildAProgramPerDistinctMaterial) {
+    SHADELAB_REQUIRE_GL(renderer);
+    renderer->setSpecialization(gl::Specialization::Values);
+    Scene scene = litSphereScene(16, LightType::Point);
+    scene.shading = ShadingMode::Gouraud; // a variant no other test of this process builds
+    scene.lighting = LightingModel::Phong;
+    scene.objects.push_back(scene.objects[0]);
+    scene.objects[1].center = {0.5, 0, -1};
+    const int before = renderer->programsBuilt();
+    renderer->render(scene);
+    EXPECT_EQ(renderer->programsBuilt(), before + 1) << "two objects of one material";
+    scene.objects[1].material.shininess = 5;
+    renderer->render(scene);
+    EXPECT_EQ(renderer->programsBuilt(), before + 2) << "a second material";
+    for (int i = 0; i < 3; ++i) renderer->render(scene);
+    scene.objects[1].material.shininess = scene.objects[0].material.shininess;
+    renderer->render(scene);
+    EXPECT_EQ(renderer->programsBuilt(), before + 2) << "values seen before";
 }
 
 TEST(SpecializationKey, LeavesOutWhatTheSceneDoesNotUse) {
@@ -172,6 +205,49 @@ TEST(SpecializationKey, LeavesOutWhatTheSceneDoesNotUse) {
     EXPECT_EQ(uber.name(), "phong/blinn-phong");
     EXPECT_EQ(uber.defines().find("SPECIALIZED"), std::string::npos);
     EXPECT_NE(v.defines().find("#define NUM_POINT 1"), std::string::npos);
+}
+
+// Every number withValues compiles in reads back as the float the uniform would have carried: 0.1 and
+// 0.7 are not floats, 1e18 is the colour cap, 1/3 the toon band width of three bands.
+TEST(SpecializationKey, ValuesReadBackAsTheUniformsFloats) {
+    Scene scene = litSphereScene(16, LightType::Spot);
+    scene.shading = ShadingMode::Toon;
+    scene.toonBands = 3;
+    Material& m = scene.objects[0].material;
+    m.ambient = {0.1, 0.2, 0.3};
+    m.diffuse = {0.7, 1e30, 0};
+    m.shininess = 33.3;
+    scene.lights[0].ambient = {0.05, 0, 1};
+    scene.lights[0].attenuation = {0.5, 0.1, 0.02};
+    const gl::ProgramVariant v = gl::ProgramVariant::forScene(scene, true).withValues(scene, m);
+    EXPECT_EQ(v.name(), "toon/blinn-phong+d0p0s1+values");
+    const gl::LightValues l = gl::lightValues(scene.lights[0], m);
+    const glm::vec3 ambient = gl::ambientProduct(scene.lights, m);
+    const std::vector<float> expected = {
+        float(m.shininess),  ambient.x,           ambient.y,          ambient.z,          3.0f,
+        float(1.0 / 3),      l.diffuseProduct.x,  l.diffuseProduct.y, l.diffuseProduct.z, l.specularProduct.x,
+        l.specularProduct.y, l.specularProduct.z, l.attenuation.x,    l.attenuation.y,    l.attenuation.z,
+        l.cosCutoff,         l.exponent};
+    EXPECT_EQ(l.diffuseProduct.y, 1e18f) << "capped";
+    // The numbers of the values' lines, in order (VALUES_COMPILED_IN has none; vec3 and LightValues are
+    // words).
+    std::vector<float> read;
+    const std::string text = v.values;
+    for (std::size_t i = 0; i < text.size();) {
+        const bool startsNumber = std::isdigit(static_cast<unsigned char>(text[i])) &&
+                                  (i == 0 || !std::isalnum(static_cast<unsigned char>(text[i - 1])));
+        if (!startsNumber) {
+            ++i;
+            continue;
+        }
+        std::size_t used = 0;
+        read.push_back(std::stof(text.substr(i), &used));
+        i += used;
+    }
+    ASSERT_EQ(read.size(), expected.size()) << text;
+    for (std::size_t i = 0; i < read.size(); ++i)
+        EXPECT_EQ(read[i], expected[i]) << "number " << i << " of\n" << text;
+    EXPECT_EQ(gl::ProgramVariant::forScene(scene, false).withValues(scene, m).values, "") << "uber: none";
 }
 
 } // namespace

@@ -2,6 +2,7 @@
 // Scene into whatever framebuffer is bound. Programs and meshes are built on first use and cached.
 #pragma once
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <span>
@@ -38,10 +39,11 @@ public:
     void drawLinesOver(const Scene& scene, std::span<const LineVertex> linesView, int width, int height,
                        int x = 0);
 
-    // Specialized programs (the default) or the uber program of each mode (the baseline they are measured
-    // and cross-checked against).
-    void setSpecialize(bool specialize);
-    bool specialize() const { return specialize_; }
+    // How far programs are specialized (gl/program.h): to each object's values (the default, as `render`
+    // draws), to the scene's lights (the window: a colour change recompiles nothing), or not at all (the
+    // uber program each is measured and cross-checked against).
+    void setSpecialization(Specialization specialization);
+    Specialization specialization() const { return specialization_; }
     // Flat shading from duplicated vertices with face data (the default) or from shared vertices with a
     // geometry shader; the same picture, measured against each other by `shadelab bench`.
     void setFlatGeometryShader(bool enabled) { flatGeometryShader_ = enabled; }
@@ -57,13 +59,15 @@ private:
     };
     const LineProgram& lineProgram();
     void drawOverlay(const Scene& sized, const SceneView& view);
-    // `lightsView`: the scene's lights in view space, whose colours each object's material multiplies.
+    // Binds the program that draws an object, with the frame's and the object's uniforms set; returns
+    // where the program keeps the rest.
+    using ObjectProgram = std::function<const SurfaceLocations&(const SceneObject&)>;
+    using FrameUniforms = std::function<void(const SurfaceLocations&)>;
     void drawMeshes(const Scene& sized, const SceneView& view, const ProgramVariant& variant,
-                    const SurfaceLocations& at, const std::vector<Light>& lightsView);
-    void drawExact(const Scene& sized, const SceneView& view, const ProgramVariant& variant,
-                   const SurfaceLocations& at, const std::vector<Light>& lightsView, int x);
+                    const ObjectProgram& objectProgram);
+    void drawExact(const Scene& sized, const SceneView& view, const ObjectProgram& objectProgram, int x);
 
-    bool specialize_ = true;
+    Specialization specialization_ = Specialization::Values;
     bool flatGeometryShader_ = false;
     int programsBuilt_ = 0;
     std::map<ProgramVariant, std::unique_ptr<SurfaceProgram>> programs_;

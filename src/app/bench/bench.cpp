@@ -58,21 +58,27 @@ Scene withLevel(Scene scene, int level) {
 
 } // namespace
 
+// The three specializations as the frame benchmarks name them.
+constexpr std::pair<gl::Specialization, const char*> kSpecializations[] = {
+    {gl::Specialization::None, "uber"},
+    {gl::Specialization::Lights, "specialized"},
+    {gl::Specialization::Values, "values"},
+};
+
 // Scene-specialized against uber programs, fixed level 8 against auto, the two flat layouts, and the
 // compile time of each program variant (issue 4).
 std::vector<RatioSpec> registerSpecializationBenchmarks(Gpu& gpu) {
     std::vector<RatioSpec> ratios;
     for (const BenchScene& s : issueScenes(gpu.options)) {
-        for (const bool specialized : {false, true}) {
+        for (const auto& [specialization, label] : kSpecializations) {
             for (const int level : {8, kAutoSubdivisions}) {
-                const std::string name = std::string("frame/") + s.name + "/" +
-                                         (specialized ? "specialized" : "uber") + "/" +
+                const std::string name = std::string("frame/") + s.name + "/" + label + "/" +
                                          (level == kAutoSubdivisions ? "auto" : "level8");
                 const Scene scene = withLevel(s.scene, level);
                 benchmark::RegisterBenchmark(
                     name.c_str(),
-                    [&gpu, scene, specialized](benchmark::State& state) {
-                        gpu.renderer.setSpecialize(specialized);
+                    [&gpu, scene, specialization = specialization](benchmark::State& state) {
+                        gpu.renderer.setSpecialization(specialization);
                         gpu.timeFrames(state, [&] { gpu.renderer.render(scene, scene.width, scene.height); });
                     })
                     ->UseManualTime()
@@ -98,7 +104,7 @@ std::vector<RatioSpec> registerSpecializationBenchmarks(Gpu& gpu) {
             benchmark::RegisterBenchmark(
                 name.c_str(),
                 [&gpu, scene, geometryShader](benchmark::State& state) {
-                    gpu.renderer.setSpecialize(true);
+                    gpu.renderer.setSpecialization(gl::Specialization::Values);
                     gpu.renderer.setFlatGeometryShader(geometryShader);
                     gpu.timeFrames(state, [&] { gpu.renderer.render(scene, scene.width, scene.height); });
                     gpu.renderer.setFlatGeometryShader(false);
@@ -120,6 +126,9 @@ std::vector<RatioSpec> registerSpecializationBenchmarks(Gpu& gpu) {
         for (const bool specialized : {false, true}) {
             const gl::ProgramVariant v = gl::ProgramVariant::forScene(s.scene, specialized);
             variants.emplace(v.name(), v);
+            if (!specialized) continue;
+            const gl::ProgramVariant withValues = v.withValues(s.scene, s.scene.objects.at(0).material);
+            variants.emplace(withValues.name(), withValues);
         }
     for (const auto& entry : variants) { // not a structured binding: clang 14 cannot capture one
         const gl::ProgramVariant variant = entry.second;
@@ -149,8 +158,10 @@ std::vector<RatioSpec> registerSpecializationBenchmarks(Gpu& gpu) {
                           base + "specialized/level8"});
         ratios.push_back({std::string(s.name) + ": uber / specialized (auto)", base + "uber/auto",
                           base + "specialized/auto"});
-        ratios.push_back({std::string(s.name) + ": level 8 / auto (specialized)", base + "specialized/level8",
-                          base + "specialized/auto"});
+        ratios.push_back({std::string(s.name) + ": specialized / values (auto)", base + "specialized/auto",
+                          base + "values/auto"});
+        ratios.push_back({std::string(s.name) + ": level 8 / auto (values)", base + "values/level8",
+                          base + "values/auto"});
     }
     for (const char* level : {"level6", "level8"})
         if (geometryStage)

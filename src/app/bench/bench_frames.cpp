@@ -77,7 +77,7 @@ void countFragments(benchmark::State& state, Gpu& gpu, const std::function<void(
 void registerFrame(Gpu& gpu, const std::string& name, const std::function<void()>& draw) {
     benchmark::RegisterBenchmark(name.c_str(),
                                  [&gpu, draw](benchmark::State& state) {
-                                     gpu.renderer.setSpecialize(true);
+                                     gpu.renderer.setSpecialization(gl::Specialization::Values);
                                      gpu.renderer.setFlatGeometryShader(false);
                                      gpu.timeFrames(state, draw);
                                      countFragments(state, gpu, draw);

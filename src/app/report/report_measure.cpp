@@ -45,7 +45,7 @@ struct GlRun {
           errorTarget(width, height, gl::ColorFormat::Rgba32F),
           tetrahedronSmooth(buildSphere(0), gl::MeshLayout::Smooth),
           tetrahedronFlat(buildSphere(0), gl::MeshLayout::Flat) {}
-    gl::Renderer renderer; // specialized programs, as `shadelab render` draws by default
+    gl::Renderer renderer; // programs with each object's values compiled in, as `shadelab render` draws
     gl::RenderTarget frameTarget, errorTarget;
     gl::GpuMesh tetrahedronSmooth, tetrahedronFlat; // the first draw after a compile
 };
@@ -168,8 +168,11 @@ std::vector<ReportRow> measureReport(HeadlessContext& context, const Scene& scen
                 row.autoLevel = levelConfigs[c] == kAutoSubdivisions;
                 for (const auto& [level, b] : built) row.meshBuildMs += b.buildMs;
                 setGeometry(configured, built, row);
-                const gl::ProgramVariant variant =
-                    gl::ProgramVariant::forScene(configured, gl.renderer.specialize());
+                // The first object's program (with values compiled in: one per distinct material).
+                gl::ProgramVariant variant = gl::ProgramVariant::forScene(
+                    configured, gl.renderer.specialization() != gl::Specialization::None);
+                if (gl.renderer.specialization() == gl::Specialization::Values && !configured.objects.empty())
+                    variant = variant.withValues(configured, configured.objects[0].material);
                 if (!compileTimes.count(variant))
                     compileTimes[variant] = compileMs(gl, variant, layoutOf(configured.shading));
                 row.compileMs = compileTimes[variant];

@@ -7,6 +7,7 @@
 #include "app/shells/commands.h"
 #include "shadelab/atomic_file.h"
 #include "shadelab/errors.h"
+#include "shadelab/gl/program.h"
 #include "shadelab/headless.h"
 #include "shadelab/reference.h"
 #include "shadelab/text.h"
@@ -72,7 +73,7 @@ int runRender(const Scene& scene, const ContextRequest& context, const std::file
     if (verbose)
         std::fprintf(stderr, "shadelab: %s, %s context: %s\n", renderer.origin().c_str(),
                      std::string(displayName(renderer.api())).c_str(), renderer.rendererString().c_str());
-    renderer.setSpecialize(specialize);
+    renderer.setSpecialization(specialize ? gl::Specialization::Values : gl::Specialization::None);
     writePng(renderer.render(scene), out);
     return kExitOk;
 }

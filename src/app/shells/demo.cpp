@@ -53,6 +53,9 @@ public:
           panel_(window_, uiScale_) {
         state_.showPanel = !options.hidePanel;
         state_.presenting = options.present;
+        // Specialized to the lights only: the panel's colour and shininess sliders then recompile nothing
+        // (a program per value would cost ~50 ms on llvmpipe at every step of a slider).
+        renderer_.setSpecialization(gl::Specialization::Lights);
         if (options.glDebug && !gl::enableDebugOutput(&debugSink_))
             std::fprintf(stderr,
                          "shadelab: --gl-debug: the context has no KHR_debug; no GL messages will show\n");
