@@ -4,20 +4,23 @@
 #
 #   bench/compare_glmark2.sh [SHADELAB]        SHADELAB: the binary (default: build/shadelab)
 #
-# Environment: DURATION seconds per glmark2 scene (default 10: one full turn of its cat at 36°/s),
-# FRAMES timed shadelab frames per mode (default 200), ROUNDS alternations glmark2 → shadelab (default 1;
-# with more, each figure is the median over the rounds), KEEP=1 keeps the temporary folder, PIN=1 pins
-# llvmpipe's rasterizer threads of both programs one to a CPU (llvmpipe-N to CPU N mod the CPU count): the
-# scheduler otherwise queues both on one CPU in some frames, a tail both programs share (bench/README.md
-# "The frame-time tail, and pinned threads").
+# Environment: ROUNDS (default 3) rounds; in each, every mode is measured as a pair run back to back —
+# glmark2 on the same sphere for DURATION seconds (default 4), then shadelab for FRAMES timed frames
+# (default 800, about as long) — so that both halves of a pair see the same machine: on a shared VM the
+# speed drifts by more than the differences measured here from one ten-second stretch to the next. Each
+# ratio is the median over the rounds of the pairs' ratios (min–max beside it). Each round also runs
+# glmark2's cat and shadelab's limits. KEEP=1 keeps the temporary folder, PIN=1 pins llvmpipe's rasterizer
+# threads of both programs one to a CPU (llvmpipe-N to CPU N mod the CPU count): the scheduler otherwise
+# queues both on one CPU in some frames, a tail both programs share (bench/README.md "The frame-time tail,
+# and pinned threads").
 #
 # Needs: glmark2-x11, xvfb, python3 (Debian packages). Starts its own Xvfb on a free display.
 set -euo pipefail
 
 shadelab=${1:-build/shadelab}
-duration=${DURATION:-10}
-frames=${FRAMES:-200}
-rounds=${ROUNDS:-1}
+duration=${DURATION:-4}
+frames=${FRAMES:-800}
+rounds=${ROUNDS:-3}
 pin=${PIN:-0}
 
 fail() {
@@ -139,33 +142,42 @@ EOF
 launch=(python3 "$tmp/launch.py" "$pin")
 
 modes=(gouraud blinn-phong-inf phong cel)
-glmark2_round() {
-    local out=$1 benchmarks=(-b "clear:duration=$duration") model mode
-    for model in shadelab-sphere cat; do
-        for mode in "${modes[@]}"; do
-            benchmarks+=(-b "shading:shading=$mode:model=$model:duration=$duration")
-        done
-    done
-    DISPLAY=$display "${launch[@]}" glmark2 --data-path "$tmp/glmark2-data" --off-screen -s 800x600 \
-        "${benchmarks[@]}" \
+# glmark2 with the given -b benchmarks, its output in $1.
+run_glmark2() {
+    local out=$1
+    shift
+    DISPLAY=$display "${launch[@]}" glmark2 --data-path "$tmp/glmark2-data" --off-screen -s 800x600 "$@" \
         >"$out" 2>&1 || fail "glmark2 failed: $(tail -5 "$out")"
     grep -q "FrameTime" "$out" || fail "glmark2 printed no frame times: $(tail -5 "$out")"
 }
+# shadelab bench of the configurations $2 matches, its JSON in $1.json.
+run_shadelab() {
+    "${launch[@]}" "$shadelab" bench --size 800x600 --frames "$frames" --filter "$2" --json "$1.json" \
+        >"$1.txt" 2>&1 || fail "shadelab bench failed: $(tail -5 "$1.txt")"
+}
 
 for round in $(seq "$rounds"); do
-    echo "round $round/$rounds: glmark2 (9 scenes × ${duration} s) ..." >&2
-    glmark2_round "$tmp/glmark2-$round.txt"
-    echo "round $round/$rounds: shadelab bench (${frames} frames per configuration) ..." >&2
-    "${launch[@]}" "$shadelab" bench --size 800x600 --frames "$frames" \
-        --filter 'frame/(glmark2-equivalent/|limits/(clear|fill)/)' \
-        --json "$tmp/shadelab-$round.json" >"$tmp/shadelab-$round.txt" 2>&1 ||
-        fail "shadelab bench failed: $(tail -5 "$tmp/shadelab-$round.txt")"
+    echo "round $round/$rounds: clear and each mode, glmark2 ${duration} s then shadelab ${frames} frames ..." >&2
+    run_glmark2 "$tmp/glmark2-$round-clear.txt" -b "clear:duration=$duration"
+    run_shadelab "$tmp/shadelab-$round-clear" 'frame/limits/clear/'
+    for mode in "${modes[@]}"; do
+        run_glmark2 "$tmp/glmark2-$round-$mode.txt" \
+            -b "shading:shading=$mode:model=shadelab-sphere:duration=$duration"
+        # phong's run times the one-colour culled sphere too: the two in one process, one moment.
+        extra=$([[ $mode == phong ]] && echo "|one-colour-culled" || true)
+        run_shadelab "$tmp/shadelab-$round-$mode" "frame/glmark2-equivalent/($mode$extra)/"
+    done
+    echo "round $round/$rounds: glmark2's cat, shadelab's limits ..." >&2
+    cat_benchmarks=()
+    for mode in "${modes[@]}"; do cat_benchmarks+=(-b "shading:shading=$mode:model=cat:duration=$duration"); done
+    run_glmark2 "$tmp/glmark2-$round-cat.txt" "${cat_benchmarks[@]}"
+    run_shadelab "$tmp/shadelab-$round-limits" 'frame/(glmark2-equivalent/one-colour(-culled)?|limits/fill)/'
 done
 
-python3 - "$tmp" "$rounds" "$duration" "$pin" <<'EOF'
+python3 - "$tmp" "$rounds" "$duration" "$pin" "$frames" <<'EOF'
 import json, re, statistics, sys, zlib
 
-tmp, rounds, duration, pin = sys.argv[1], int(sys.argv[2]), sys.argv[3], sys.argv[4] == "1"
+tmp, rounds, duration, pin, frames = sys.argv[1], int(sys.argv[2]), sys.argv[3], sys.argv[4] == "1", sys.argv[5]
 
 def png_rgb(path):
     """The pixels of shadelab's 8-bit RGB PNG (non-interlaced), as rows of bytes."""
@@ -201,53 +213,70 @@ width, height, channels, rows = png_rgb(f"{tmp}/coverage.png")
 covered = sum(1 for row in rows for x in range(0, len(row), channels)
               if tuple(row[x:x + 3]) != (255, 0, 255))  # the scene's background is magenta
 
-glmark2, shadelab = {}, {}
-for r in range(1, rounds + 1):
-    for line in open(f"{tmp}/glmark2-{r}.txt"):
+def glmark2_times(path):
+    """{(mode or benchmark, model): frame time in ms} of one glmark2 output."""
+    times = {}
+    for line in open(path):
         m = re.match(r"\[(\w+)\] (.*): FPS: \d+ FrameTime: ([\d.]+) ms", line)
         if m:
             mode, model = re.search(r"shading=([\w-]+)", m.group(2)), re.search(r"model=([\w-]+)", m.group(2))
-            key = (mode.group(1), model.group(1)) if mode else (m.group(1), None)
-            glmark2.setdefault(key, []).append(float(m.group(3)))
-    report = json.load(open(f"{tmp}/shadelab-{r}.json"))
-    renderer = report["renderer"]
-    for name, figures in report["results"].items():
-        shadelab.setdefault(name, []).append(figures)
+            times[(mode.group(1), model.group(1)) if mode else (m.group(1), None)] = float(m.group(3))
+    return times
 
-def med(values):
-    return statistics.median(values)
+def shadelab_results(stem):
+    report = json.load(open(f"{stem}.json"))
+    return report["renderer"], report["results"]
 
-def sl(name, key):
-    return med([f[key] for f in shadelab[name]])
-
-print(f"\nshadelab: {renderer}; glmark2 under Xvfb, --off-screen (glFinish per frame, as shadelab), 800x600")
-print(f"coverage: shadelab's render of the equivalent scene covers {covered} px "
-      f"({100 * covered / (width * height):.1f} % of {width}x{height}; the bench counted "
-      f"{sl('frame/glmark2-equivalent/phong', 'covered_px'):.0f} px); glmark2 frames the same sphere the "
-      f"same way (179.8 px radius); its cat covers about 15-20 %")
-print(f"frame times in ms: glmark2's mean over {duration} s, shadelab's mean (median) over its frames; "
-      f"median over {rounds} round(s); ratio = shadelab mean / glmark2 mean"
-      + ("; llvmpipe's threads pinned one to a CPU in both (PIN=1)" if pin else "") + "\n")
 equivalent = "frame/glmark2-equivalent/"
 rows = [("clear", "clear", "frame/limits/clear"),
         ("gouraud", "gouraud (directional light, diffuse only)", equivalent + "gouraud"),
         ("blinn-phong-inf", "phong shading, blinn-phong, directional", equivalent + "blinn-phong-inf"),
         ("phong", "phong shading, phong, point light", equivalent + "phong"),
         ("cel", "toon, 2 bands, point light", equivalent + "cel")]
+pairs = {g: [] for g, _, _ in rows}  # per round: (glmark2 ms, shadelab mean ms, shadelab median ms)
+cat, limits, covered_px, phong_over_culled = {g: [] for g, _, _ in rows[1:]}, {}, [], []
+for r in range(1, rounds + 1):
+    for g, _, name in rows:
+        key = ("clear", None) if g == "clear" else (g, "shadelab-sphere")
+        renderer, results = shadelab_results(f"{tmp}/shadelab-{r}-{g}")
+        figures = results[name]
+        pairs[g].append((glmark2_times(f"{tmp}/glmark2-{r}-{g}.txt")[key], figures["mean_ms"],
+                         figures["median_ms"]))
+        if g == "phong":
+            covered_px.append(figures["covered_px"])
+            phong_over_culled.append(figures["mean_ms"] / results[equivalent + "one-colour-culled"]["mean_ms"])
+    cat_times = glmark2_times(f"{tmp}/glmark2-{r}-cat.txt")
+    for g in cat:
+        cat[g].append(cat_times[(g, "cat")])
+    for name, figures in shadelab_results(f"{tmp}/shadelab-{r}-limits")[1].items():
+        limits.setdefault(name, []).append(figures)
+
+med = statistics.median
+print(f"\nshadelab: {renderer}; glmark2 under Xvfb, --off-screen (glFinish per frame, as shadelab), 800x600")
+print(f"coverage: shadelab's render of the equivalent scene covers {covered} px "
+      f"({100 * covered / (width * height):.1f} % of {width}x{height}; the bench counted "
+      f"{med(covered_px):.0f} px); glmark2 frames the same sphere the same way (179.8 px radius); its cat "
+      f"covers about 15-20 %")
+print(f"frame times in ms, medians over {rounds} round(s): glmark2's mean over {duration} s, shadelab's mean "
+      f"(median) over {frames} frames run straight after it; ratio = shadelab mean / glmark2 mean of the "
+      f"same round, median (min-max) over the rounds"
+      + ("; llvmpipe's threads pinned one to a CPU in both (PIN=1)" if pin else "") + "\n")
 print(f"{'':<16} {'glmark2, same sphere':>21}   {'shadelab':<42} {'ms':>6} {'(median)':>9}"
-      f"  {'ratio':>6}   {'glmark2 cat':>11}  {'ratio':>6}")
+      f"  {'ratio':>6} {'(min-max)':>12}   {'glmark2 cat':>11}  {'ratio':>6}")
 for g, label, name in rows:
-    sm, sd = sl(name, "mean_ms"), sl(name, "median_ms")
-    if g == "clear":
-        gs = gc = med(glmark2[("clear", None)])
-    else:
-        gs, gc = med(glmark2[(g, "shadelab-sphere")]), med(glmark2[(g, "cat")])
-    print(f"{g:<16} {gs:18.2f} ms   {label:<42} {sm:6.2f} {f'({sd:.2f})':>9}  {sm / gs:6.2f}"
+    gs, sm, sd = (med(p[i] for p in pairs[g]) for i in range(3))
+    ratios = [p[1] / p[0] for p in pairs[g]]
+    spread = f"({min(ratios):.2f}-{max(ratios):.2f})"
+    gc = med(cat[g]) if g in cat else gs
+    print(f"{g:<16} {gs:18.2f} ms   {label:<42} {sm:6.2f} {f'({sd:.2f})':>9}  {med(ratios):6.2f} {spread:>12}"
           f"   {gc:8.2f} ms  {sm / gc:6.2f}")
-print("\nshadelab's limits for this geometry (no lighting):")
+print("\nshadelab's limits for this geometry (no lighting), medians over the rounds:")
 for label, name in [("full-screen fill, 800x600", "frame/limits/fill"),
                     ("one-colour sphere, back faces drawn", equivalent + "one-colour"),
-                    ("one-colour sphere, back faces culled (as shadelab and glmark2)", equivalent + "one-colour-culled")]:
-    print(f"  {label:<58} {sl(name, 'mean_ms'):7.2f} ms  fragments/covered px "
-          f"{sl(name, 'fragments_per_px'):.2f}")
+                    ("one-colour sphere, back faces culled (as shadelab and glmark2)",
+                     equivalent + "one-colour-culled")]:
+    print(f"  {label:<58} {med(f['mean_ms'] for f in limits[name]):7.2f} ms  fragments/covered px "
+          f"{med(f['fragments_per_px'] for f in limits[name]):.2f}")
+print(f"  phong frame / one-colour culled sphere, both in phong's shadelab run: {med(phong_over_culled):.2f} "
+      f"({min(phong_over_culled):.2f}-{max(phong_over_culled):.2f})")
 EOF
