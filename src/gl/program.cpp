@@ -164,7 +164,9 @@ ProgramVariant ProgramVariant::withValues(const Scene& scene, const Material& ma
         text += "#define TOON_BAND_WIDTH " + glslFloat(float(1.0 / scene.toonBands)) + "\n";
     }
     // One LightValues(...) list per light type, in scene order within a type: the order of the uniform
-    // arrays the light geometry goes to (renderer.cpp forEachLightSlot).
+    // arrays the light geometry goes to (renderer.cpp forEachLightSlot), indexed as its LIGHT_* codes.
+    static_assert(int(LightType::Directional) == 1 && int(LightType::Point) == 2 &&
+                  int(LightType::Spot) == 3);
     std::string lists[4];
     for (const Light& light : scene.lights) {
         if (light.type == LightType::Ambient) continue;
