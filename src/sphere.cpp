@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <condition_variable>
+#include <cstring>
 #include <functional>
 #include <limits>
 #include <mutex>
@@ -202,6 +203,31 @@ ReciprocalSqrts widestReciprocalSqrts() {
 #endif
 
 const ReciprocalSqrts reciprocalSqrts = widestReciprocalSqrts();
+
+// Copies a batch into an output array that is not read again in the build, bypassing the cache where the CPU
+// can (x86's non-temporal stores): a plain store first reads the line it writes into, which for the
+// megabytes of the last split's children and face normals doubles their memory traffic. Call finishStreams
+// before another thread reads what was written.
+void stream(void* to, const void* from, std::size_t bytes) {
+#if defined(__x86_64__) || defined(__i386__)
+    auto* out = static_cast<char*>(to);
+    const auto* in = static_cast<const char*>(from);
+    const std::size_t head = std::min(bytes, (16 - reinterpret_cast<std::uintptr_t>(out) % 16) % 16);
+    std::memcpy(out, in, head);
+    std::size_t at = head;
+    for (; at + 16 <= bytes; at += 16)
+        _mm_stream_si128(reinterpret_cast<__m128i*>(out + at),
+                         _mm_loadu_si128(reinterpret_cast<const __m128i*>(in + at)));
+    std::memcpy(out + at, in + at, bytes - at);
+#else
+    std::memcpy(to, from, bytes);
+#endif
+}
+void finishStreams() {
+#if defined(__x86_64__) || defined(__i386__)
+    _mm_sfence();
+#endif
+}
 
 // out[i] = glm::normalize(vector(i)) for i in [begin, end), bit for bit, the divisions packed: a batch of
 // vectors and their squared lengths at a time (small enough to stay in L1).
@@ -438,7 +464,7 @@ void splitLast(Helper& helper, SphereMesh& mesh, std::span<const glm::uvec3> par
         constexpr std::size_t kBatch = 64; // parents: 256 faces, their corners and unit normals in L1
         glm::dvec3 v[4 * kBatch];
         double scale[4 * kBatch];
-        glm::uvec3 corners[kBatch], midpoints[kBatch];
+        glm::uvec3 corners[kBatch], midpoints[kBatch], childBatch[4 * kBatch];
         for (std::size_t at = begin; at < end; at += kBatch) {
             const std::size_t n = std::min(kBatch, end - at);
             for (std::size_t j = 0; j < n; ++j) {
@@ -447,7 +473,7 @@ void splitLast(Helper& helper, SphereMesh& mesh, std::span<const glm::uvec3> par
                 const std::uint32_t ab = made.ofEdge[e.x], bc = made.ofEdge[e.y], ac = made.ofEdge[e.z];
                 corners[j] = t;
                 midpoints[j] = {ab, bc, ac};
-                glm::uvec3* four = children + 4 * i;
+                glm::uvec3* four = childBatch + 4 * j;
                 four[0] = {t.x, ab, ac};
                 four[1] = {ab, t.y, bc};
                 four[2] = {bc, t.z, ac};
@@ -460,11 +486,10 @@ void splitLast(Helper& helper, SphereMesh& mesh, std::span<const glm::uvec3> par
                 cross[3] = glm::cross(pbc - pab, pac - pab);
                 for (int k = 0; k < 4; ++k) scale[4 * j + std::size_t(k)] = glm::dot(cross[k], cross[k]);
             }
+            stream(children + 4 * at, childBatch, 4 * n * sizeof(glm::uvec3));
             reciprocalSqrts(scale, 4 * n);
-            for (std::size_t f = 0; f < 4 * n; ++f) {
-                v[f] *= scale[f];
-                faceNormals[4 * at + f] = v[f];
-            }
+            for (std::size_t f = 0; f < 4 * n; ++f) v[f] *= scale[f];
+            stream(faceNormals + 4 * at, v, 4 * n * sizeof(glm::dvec3));
             if (!averaged) continue;
             for (std::size_t j = 0; j < n; ++j) {
                 const std::size_t i = at + j, face = 4 * i;
@@ -475,6 +500,7 @@ void splitLast(Helper& helper, SphereMesh& mesh, std::span<const glm::uvec3> par
                 for (int place = 0; place < 3; ++place) addMidpoint(midpoints[j][place], i, place, four);
             }
         }
+        finishStreams(); // before the join, after which the caller reads them
     });
     if (!averaged) {
         mesh.vertexNormals.assign(mesh.positions.begin(), mesh.positions.end()); // the unit sphere's normal
