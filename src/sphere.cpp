@@ -109,9 +109,14 @@ private:
 
 // body(begin, end) over [0, n): for large n the helper takes the first half and this thread the second,
 // else all of it here.
+// Whether a second core is there to share with (glibc reads it from /sys on every call: asked once).
+bool twoCores() {
+    static const bool two = std::thread::hardware_concurrency() >= 2;
+    return two;
+}
+
 template <typename Body> void inParallel(Helper& helper, std::size_t n, const Body& body) {
-    if (n < kParallelItems || std::thread::hardware_concurrency() < 2 ||
-        !helper.start([&] { body(0, n / 2); })) {
+    if (n < kParallelItems || !twoCores() || !helper.start([&] { body(0, n / 2); })) {
         body(0, n);
         return;
     }
@@ -374,7 +379,17 @@ struct LateAddition {
 struct LastSplit {
     std::vector<std::uint8_t> firstPartCorner; // per older vertex: 1 if a corner of a first-part parent
     std::vector<LateAddition> late;            // the second part's such additions, in its order
+    bool marked = false;                       // firstPartCorner filled during the numbering
 };
+
+// Marks the corners of the first part's parents [0, firstPart) for splitLast's second part.
+void markFirstPartCorners(LastSplit& split, const glm::uvec3* parents, std::size_t firstPart,
+                          std::size_t older) {
+    split.firstPartCorner.assign(older, 0);
+    for (std::size_t i = 0; i < firstPart; ++i)
+        for (int k = 0; k < 3; ++k) split.firstPartCorner[parents[i][k]] = 1;
+    split.marked = true;
+}
 
 } // namespace
 
@@ -382,8 +397,9 @@ struct SphereBuilder::Scratch {
     EdgeLevel edges, nextEdges;
     std::vector<glm::uvec3> next; // the other triangle array; after the build, the last split's parents
     Midpoints midpoints;          // of the split being made; after the build, of the last split
-    Helper helper;                // the second thread of the large passes
-    LastSplit lastSplit;          // the second part's bookkeeping in the last split
+    std::vector<glm::uvec2> pendingEnds; // the midpoint ends of the split before, its positions not yet made
+    Helper helper;                       // the second thread of the large passes
+    LastSplit lastSplit;                 // the second part's bookkeeping in the last split
 };
 
 namespace {
@@ -438,11 +454,8 @@ void splitLast(Helper& helper, SphereMesh& mesh, std::span<const glm::uvec3> par
     split.late.clear();
     inParallel(helper, parents.size(), [&](std::size_t begin, std::size_t end) {
         const bool second = begin > 0; // the first part's parents are [0, begin)
-        if (averaged && second) {
-            split.firstPartCorner.assign(made.first, 0);
-            for (std::size_t i = 0; i < begin; ++i)
-                for (int k = 0; k < 3; ++k) split.firstPartCorner[parents[i][k]] = 1;
-        }
+        if (averaged && second && !split.marked)
+            markFirstPartCorners(split, parents.data(), begin, made.first);
         auto addOlder = [&](std::uint32_t v, std::size_t face, const glm::dvec3& n) {
             if (second && split.firstPartCorner[v])
                 split.late.push_back({v, std::uint32_t(face)});
@@ -533,6 +546,10 @@ void SphereBuilder::buildInto(int level, VertexNormals normals) {
     std::copy(kTetrahedronFaces.begin(), kTetrahedronFaces.end(), from->begin());
     tetrahedronEdges(edges);
     std::size_t vertexCount = kTetrahedron.size(), triangleCount = kTetrahedronFaces.size();
+    std::vector<glm::uvec2>& pendingEnds = scratch_->pendingEnds;
+    std::uint32_t pendingFirst = 0;
+    std::size_t pendingCount = 0;
+    scratch_->lastSplit.marked = false;
     for (int n = 0; n < level; ++n) {
         const bool last = n + 1 == level; // the last split needs no edge numbers for a level after it
         const std::size_t edgeCount = edges.first.size();
@@ -547,12 +564,37 @@ void SphereBuilder::buildInto(int level, VertexNormals normals) {
             nextEdges.first.resize(2 * edgeCount + 3 * triangleCount);
         }
         // Numbering is sequential (first use decides); it only reads the parents and writes the midpoints.
+        // Meanwhile the helper makes the positions of the split before, which numbering does not read,
+        // and before the last split the marks splitLast's second part needs.
+        const bool mark = last && normals == VertexNormals::Averaged && triangleCount >= kParallelItems;
+        scratch_->lastSplit.marked = false;
+        auto overlapped = [&] {
+            normalizeEach(0, pendingCount, mesh.positions.data() + pendingFirst, [&](std::size_t k) {
+                return (mesh.positions[pendingEnds[k].x] + mesh.positions[pendingEnds[k].y]) * 0.5;
+            });
+            if (mark) markFirstPartCorners(scratch_->lastSplit, parents, triangleCount / 2, vertexCount);
+        };
+        const bool helped = (pendingCount + (mark ? triangleCount : 0) >= kParallelItems / 4) && twoCores() &&
+                            scratch_->helper.start(overlapped);
+        struct WaitForHelper {
+            Helper& helper;
+            bool helped;
+            ~WaitForHelper() {
+                if (helped) helper.wait();
+            }
+        } waitForHelper{scratch_->helper, helped};
         for (std::size_t i = 0; i < triangleCount; ++i) {
             const glm::uvec3 t = parents[i], e = edges.edges[i];
             const auto use = std::uint32_t(3 * i);
             midpoints.of(e.x, t.x, t.y, use);
             midpoints.of(e.y, t.y, t.z, use + 1);
             midpoints.of(e.z, t.x, t.z, use + 2);
+        }
+        if (helped) {
+            scratch_->helper.wait();
+            waitForHelper.helped = false;
+        } else {
+            overlapped();
         }
         // Writing the children (and the next level's edge numbers) is per parent: both threads. The last
         // split's children are written by splitLast, with their normals.
@@ -583,14 +625,22 @@ void SphereBuilder::buildInto(int level, VertexNormals normals) {
                     nextEdges.first[bcac] = bc;
                 }
             });
-        // normalize((a + b)/2) for every midpoint of the level; its end points are older vertices.
-        const std::uint32_t first = midpoints.first;
-        const glm::uvec2* ends = midpoints.ends.data();
-        glm::dvec3* positions = mesh.positions.data();
-        inParallel(scratch_->helper, midpoints.count, [&](std::size_t begin, std::size_t end) {
-            normalizeEach(begin, end, positions + first,
-                          [&](std::size_t k) { return (positions[ends[k].x] + positions[ends[k].y]) * 0.5; });
-        });
+        // normalize((a + b)/2) for every midpoint of the level; its end points are older vertices. Before a
+        // further split, left to the helper during its numbering.
+        if (last) {
+            const std::uint32_t first = midpoints.first;
+            const glm::uvec2* ends = midpoints.ends.data();
+            glm::dvec3* positions = mesh.positions.data();
+            inParallel(scratch_->helper, midpoints.count, [&](std::size_t begin, std::size_t end) {
+                normalizeEach(begin, end, positions + first, [&](std::size_t k) {
+                    return (positions[ends[k].x] + positions[ends[k].y]) * 0.5;
+                });
+            });
+        } else {
+            std::swap(midpoints.ends, pendingEnds);
+            pendingFirst = midpoints.first;
+            pendingCount = midpoints.count;
+        }
         if (!last) {
             // Half 2e starts at edge e's first end point, half 2e + 1 at its midpoint.
             for (std::size_t number = 0; number < edgeCount; ++number) {
