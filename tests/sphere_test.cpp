@@ -567,6 +567,22 @@ TEST(SphereGeometry, BitForBitTheSeedsGenerator) {
     }
 }
 
+// Levels 8 and 9 take the two-thread paths of the last split (the second thread's additions to vertices the
+// first also adds to are made after it, in order): positions, triangles, face and averaged vertex normals
+// as the single-pass generator of commit 3de8ecf produced them (recorded from it, -O3).
+TEST(SphereGeometry, BitForBitAtTheTwoThreadLevels) {
+    const std::pair<int, std::uint64_t> expected[] = {{8, 0x2384bee164416145ull}, {9, 0x6fe649e70257962eull}};
+    for (const auto& [level, checksum] : expected) {
+        const SphereMesh& mesh = sphere(level);
+        std::uint64_t hash = 14695981039346656037ull;
+        hash = fnv1a(mesh.positions, hash);
+        hash = fnv1a(mesh.triangles, hash);
+        hash = fnv1a(mesh.faceNormals, hash);
+        hash = fnv1a(mesh.vertexNormals, hash);
+        EXPECT_EQ(hash, checksum) << "level " << level;
+    }
+}
+
 // A builder reuses its arrays: whatever it built before, the next mesh is buildSphere's, bit for bit (the
 // large levels also take the two-thread paths).
 TEST(SphereBuilder, ReusedArraysGiveTheFreshMesh) {
