@@ -11,7 +11,7 @@
 //     HAS_SPECULAR      some object's k_s and some light's I_s are non-zero
 //     NEEDS_NORMAL      some light is not ambient (ambient-only scenes read no normal attribute)
 //     VIEWER_AT_INFINITY  an orthographic projection: v = +z everywhere, a constant (else the local viewer)
-//     VALUES_COMPILED_IN  the drawn object's values as constants instead of uniforms (Specialization::Values),
+//     VALUES_COMPILED_IN  the drawn object's values as constants, not uniforms (Specialization::Values),
 //       with SHININESS, AMBIENT_PRODUCT (HAS_AMBIENT), TOON_BANDS and TOON_BAND_WIDTH (toon) defined as
 //       literals and DIRECTIONAL_VALUES, POINT_VALUES, SPOT_VALUES as LightValues[](...) lists; the lights'
 //       view-space positions and directions stay uniforms (they move with the camera); SHININESS_INTEGER
@@ -71,45 +71,27 @@ uniform int uLightCount;
 uniform vec3 uAmbientProduct; // k_a·Σ I_a over all lights
 #define AMBIENT_PRODUCT uAmbientProduct
 #endif
-// directionalLight(i), pointLight(i), spotLight(i): light i of its type, with its values for the object.
+// One array of light geometry per type, and with VALUES_COMPILED_IN one of its values for the object;
+// LIGHT_OF(geometry, values, i) is light i of a type with both (without compiled-in values, the uniform
+// already holds them and the values array is neither declared nor named after expansion).
+#ifdef VALUES_COMPILED_IN
+#define VALUES_ARRAY(name, count, list) const LightValues name[count] = list;
+#define LIGHT_OF(geometry, values, i) withValues(geometry[i], values[i])
+#else
+#define VALUES_ARRAY(name, count, list)
+#define LIGHT_OF(geometry, values, i) geometry[i]
+#endif
 #if NUM_DIRECTIONAL > 0
 uniform Light uDirectionalLights[NUM_DIRECTIONAL];
-#ifdef VALUES_COMPILED_IN
-const LightValues kDirectionalValues[NUM_DIRECTIONAL] = DIRECTIONAL_VALUES;
-#endif
-Light directionalLight(int i) {
-#ifdef VALUES_COMPILED_IN
-    return withValues(uDirectionalLights[i], kDirectionalValues[i]);
-#else
-    return uDirectionalLights[i];
-#endif
-}
+VALUES_ARRAY(kDirectionalValues, NUM_DIRECTIONAL, DIRECTIONAL_VALUES)
 #endif
 #if NUM_POINT > 0
 uniform Light uPointLights[NUM_POINT];
-#ifdef VALUES_COMPILED_IN
-const LightValues kPointValues[NUM_POINT] = POINT_VALUES;
-#endif
-Light pointLight(int i) {
-#ifdef VALUES_COMPILED_IN
-    return withValues(uPointLights[i], kPointValues[i]);
-#else
-    return uPointLights[i];
-#endif
-}
+VALUES_ARRAY(kPointValues, NUM_POINT, POINT_VALUES)
 #endif
 #if NUM_SPOT > 0
 uniform Light uSpotLights[NUM_SPOT];
-#ifdef VALUES_COMPILED_IN
-const LightValues kSpotValues[NUM_SPOT] = SPOT_VALUES;
-#endif
-Light spotLight(int i) {
-#ifdef VALUES_COMPILED_IN
-    return withValues(uSpotLights[i], kSpotValues[i]);
-#else
-    return uSpotLights[i];
-#endif
-}
+VALUES_ARRAY(kSpotValues, NUM_SPOT, SPOT_VALUES)
 #endif
 #endif
 
@@ -170,8 +152,9 @@ vec3 toViewer(vec3 positionView, vec3 normalView) {
 }
 
 // x^SHININESS for x >= 0. A shininess compiled in as a whole number (SHININESS_INTEGER, 1..2047) is taken
-// by squaring: the loop unrolls and folds to ⌊log₂ n⌋ squarings and a product per set bit (7 multiplies for
-// 100), exact to float rounding, where pow is exp2(log2(x)·n) — two polynomial approximations on llvmpipe.
+// by squaring: the loop unrolls and folds to ⌊log₂ n⌋ squarings and a product per set bit (7 multiplies
+// for 100), exact to float rounding, where pow is exp2(log2(x)·n): two polynomial approximations on
+// llvmpipe.
 float specularPower(float x) {
 #ifdef SHININESS_INTEGER
     float result = 1.0;
@@ -262,15 +245,18 @@ vec3 shade(vec3 positionView, vec3 normalView, vec3 toViewerView) {
 #endif
 #if NUM_DIRECTIONAL > 0
     for (int i = 0; i < NUM_DIRECTIONAL; ++i)
-        color += shadeDirectional(directionalLight(i), positionView, normalView, toViewerView);
+        color += shadeDirectional(LIGHT_OF(uDirectionalLights, kDirectionalValues, i), positionView,
+                                  normalView, toViewerView);
 #endif
 #if NUM_POINT > 0
     for (int i = 0; i < NUM_POINT; ++i)
-        color += shadePoint(pointLight(i), i, positionView, normalView, toViewerView);
+        color += shadePoint(LIGHT_OF(uPointLights, kPointValues, i), i, positionView, normalView,
+                            toViewerView);
 #endif
 #if NUM_SPOT > 0
     for (int i = 0; i < NUM_SPOT; ++i)
-        color += shadeSpot(spotLight(i), NUM_POINT + i, positionView, normalView, toViewerView);
+        color += shadeSpot(LIGHT_OF(uSpotLights, kSpotValues, i), NUM_POINT + i, positionView, normalView,
+                           toViewerView);
 #endif
 #else
     for (int i = 0; i < uLightCount; ++i) {
