@@ -160,7 +160,8 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
     bool specialize = true;
     render
         ->add_option("--specialize", specialize,
-                     "on: programs specialized to the scene's lights and terms; off: the uber program")
+                     "on: programs specialized to the scene's lights and terms, each object's values "
+                     "compiled in; off: the uber program")
         ->transform(CLI::IsMember({"on", "off", "true", "false", "1", "0"}, CLI::ignore_case))
         ->capture_default_str();
     render->add_option("--out", renderOut, "Output PNG, or - for standard output (required)");
