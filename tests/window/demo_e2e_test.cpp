@@ -403,9 +403,15 @@ TEST_F(DemoWindow, ExactErrorSplitAndProfileShowWhatRenderGives) {
     // Grabs the divider (the camera stays), with the demo stopped meanwhile: it handles the whole drag
     // after the pointer has arrived at its end, as a loaded machine does, and must still place the press
     // where it happened (this failed once in CI, the press taken where the pointer was by then).
+    struct Resume {
+        pid_t pid;
+        ~Resume() { ::kill(pid, SIGCONT); } // also if the drag throws: the demo must still quit
+    };
     ASSERT_EQ(::kill(demo.pid(), SIGSTOP), 0);
-    demo.window().drag(1, kWidth / 2, kHeight / 2, -64, 0);
-    ASSERT_EQ(::kill(demo.pid(), SIGCONT), 0);
+    {
+        const Resume resume{demo.pid()};
+        demo.window().drag(1, kWidth / 2, kHeight / 2, -64, 0);
+    }
     const Scene moved =
         step("split-moved", [](const std::string& t) { return t.find("split:") != std::string::npos; });
     ASSERT_TRUE(moved.view.at.has_value());
