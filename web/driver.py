@@ -39,6 +39,9 @@ class Quiet(http.server.SimpleHTTPRequestHandler):
         super().end_headers()
 
 
+REQUEST_TIMEOUT = 60  # seconds: one WebDriver request, page load or script (the tests allow 240 s a session)
+
+
 class Page:
     """One Chromium with the page loaded and ready (window.shadelab.ready)."""
 
@@ -58,7 +61,13 @@ class Page:
         if downloads:
             options.add_experimental_option('prefs', {'download.default_directory': downloads,
                                                       'download.prompt_for_download': False})
+        # Every request to chromedriver, every page load and every script has a deadline: a wedged browser
+        # fails the call naming it instead of holding the test until its process is killed.
+        from selenium.webdriver.remote.remote_connection import RemoteConnection
+        RemoteConnection.set_timeout(REQUEST_TIMEOUT)
         self.browser = webdriver.Chrome(service=Service('/usr/bin/chromedriver'), options=options)
+        self.browser.set_page_load_timeout(REQUEST_TIMEOUT)
+        self.browser.set_script_timeout(REQUEST_TIMEOUT)
         if downloads:
             self.browser.execute_cdp_cmd('Browser.setDownloadBehavior',
                                          {'behavior': 'allow', 'downloadPath': downloads})

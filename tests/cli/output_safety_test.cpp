@@ -29,6 +29,7 @@
 #include <utility>
 #include <vector>
 
+#include <gtest/gtest-spi.h>
 #include <gtest/gtest.h>
 
 #include "cli/run_process.h"
@@ -66,6 +67,17 @@ bool hasTempFile(const fs::path& folder) {
 constexpr std::string_view kScene = R"({"image": {"width": 32, "height": 32}})";
 constexpr std::string_view kPrecious = "the bytes of an earlier file, which must survive\n";
 
+// Whether this process may drop to nobody: a forked child tries.
+bool canBecomeNobody() {
+    const pid_t pid = ::fork();
+    if (pid == 0)
+        ::_exit(::setresgid(kNogroup, kNogroup, kNogroup) == 0 && ::setresuid(kNobody, kNobody, kNobody) == 0
+                    ? 0
+                    : 1);
+    int status = 0;
+    return pid > 0 && ::waitpid(pid, &status, 0) == pid && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
 enum class User { Root, Nobody };
 inline void PrintTo(User user, std::ostream* os) {
     *os << (user == User::Root ? "root" : "nobody");
@@ -77,6 +89,9 @@ protected:
     void SetUp() override {
         if (::geteuid() != 0)
             GTEST_SKIP() << "runs as root (as CI does), to run shadelab both as root and as nobody";
+        if (nobody() && !canBecomeNobody())
+            GTEST_SKIP() << "this root cannot switch to uid " << kNobody
+                         << " (no CAP_SETUID, e.g. in a user namespace): the nobody cases cannot run";
         char pattern[] = "/tmp/shadelab-output-XXXXXX";
         ASSERT_NE(::mkdtemp(pattern), nullptr) << std::strerror(errno);
         dir_ = pattern;
@@ -154,10 +169,18 @@ TEST_P(OutputSafety, FifoReaderGetsTheWholePng) {
     const fs::path fifo = dir_ / "p";
     ASSERT_EQ(::mkfifo(fifo.c_str(), 0666), 0) << std::strerror(errno);
     own(fifo);
+    const int fd = ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    ASSERT_GE(fd, 0) << std::strerror(errno);
     std::string received;
-    std::thread reader([&] { received = readFile(fifo); });
+    bool closed = false;
+    std::thread reader([&] { closed = readToEndWithin(fd, 60s, received); });
     const Outcome r = run({"render", "--size", "24x16", "--out", "p"});
+    // A writer that never started: end the read now rather than at its deadline.
+    if (!r.started) ::close(::open(fifo.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC));
     reader.join();
+    ::close(fd);
+    EXPECT_TRUE(closed) << "no writer opened and closed the FIFO within 60 s (" << received.size()
+                        << " bytes read)";
     EXPECT_EQ(r.exitCode, 0) << describe(r);
     EXPECT_TRUE(isCompletePng(received)) << received.size() << " bytes";
     struct stat st {};
@@ -419,6 +442,23 @@ TEST(SilentDisplay, DemoFallsBackToTheShowcaseWithinSeconds) {
     EXPECT_NE(r.err.find("did not answer"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("showcase"), std::string::npos) << r.err;
     EXPECT_TRUE(isCompletePng(readFile(dir / "showcase.png")));
+    fs::remove_all(dir);
+}
+
+// A child that cannot start fails the test at once, with the step and the reason, instead of leaving the
+// test waiting for what it would have done (a FIFO reader waited 100 s for a writer that never ran).
+TEST(RunProcess, AChildThatCannotStartFailsAtOnceNamingWhy) {
+    char pattern[] = "/tmp/shadelab-start-XXXXXX";
+    ASSERT_NE(::mkdtemp(pattern), nullptr);
+    const fs::path dir = pattern;
+    writeFile(dir / "not-a-program", "#!/bin/sh\n"); // mode 0644: execve refuses it
+    RunOptions options;
+    options.program = (dir / "not-a-program").string();
+    const auto start = std::chrono::steady_clock::now();
+    Outcome r;
+    EXPECT_NONFATAL_FAILURE(r = runWith({"--help"}, dir, options), "executing failed: Permission denied");
+    EXPECT_LT(std::chrono::steady_clock::now() - start, 5s);
+    EXPECT_FALSE(r.started);
     fs::remove_all(dir);
 }
 

@@ -58,18 +58,13 @@ protected:
     fs::path dir_;
 };
 
-// Runs `gnuplot` on an existing report.gp the way a user re-draws it, with no shell in between.
+// Runs `gnuplot` on an existing report.gp the way a user re-draws it, with no shell in between; killed and
+// failed after 30 s.
 int runGnuplotOn(const fs::path& folder) {
-    const pid_t pid = ::fork();
-    if (pid == 0) {
-        const int out = ::open("/dev/null", O_WRONLY);
-        if (out < 0 || ::dup2(out, 1) < 0 || ::dup2(out, 2) < 0 || ::chdir(folder.c_str()) != 0) ::_exit(126);
-        ::execlp("gnuplot", "gnuplot", "report.gp", static_cast<char*>(nullptr));
-        ::_exit(127);
-    }
-    int status = 0;
-    ::waitpid(pid, &status, 0);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    RunOptions options;
+    options.program = "/usr/bin/gnuplot";
+    options.timeout = std::chrono::seconds(30);
+    return runWith({"report.gp"}, folder, options).exitCode;
 }
 
 // Every byte value 1-255 in a scene file name (a name cannot hold '/', so that one is a folder in the path),
@@ -171,7 +166,7 @@ TEST_F(ReportCli, FullDiskKeepsTheEarlierSet) {
     writeFile(dir_ / "s.json", kTinyScene);
     fs::create_directories(dir_ / "mnt");
     int pipeFds[2];
-    ASSERT_EQ(::pipe(pipeFds), 0);
+    ASSERT_EQ(::pipe2(pipeFds, O_CLOEXEC), 0); // shadelab and its gnuplot must not hold the write end
     const pid_t pid = ::fork();
     if (pid == 0) {
         ::close(pipeFds[0]);
@@ -214,12 +209,13 @@ TEST_F(ReportCli, FullDiskKeepsTheEarlierSet) {
     }
     ::close(pipeFds[1]);
     std::string message;
-    char buffer[4096];
-    for (ssize_t n; (n = ::read(pipeFds[0], buffer, sizeof buffer)) > 0;)
-        message.append(buffer, std::size_t(n));
+    // The child's own run of shadelab is killed after kTimeoutSeconds; this bounds the rest.
+    const bool reported = readToEndWithin(pipeFds[0], std::chrono::seconds(kTimeoutSeconds + 30), message);
     ::close(pipeFds[0]);
+    if (!reported) ::kill(pid, SIGKILL);
     int status = 0;
     ::waitpid(pid, &status, 0);
+    ASSERT_TRUE(reported) << "the full-disk child did not report within " << kTimeoutSeconds + 30 << " s";
     ASSERT_TRUE(WIFEXITED(status)) << message;
     if (WEXITSTATUS(status) == 3) {
         if (std::getenv("CI")) FAIL() << "cannot make a private tmpfs in CI: " << message;

@@ -1,6 +1,6 @@
-// Runs the shadelab binary (SHADELAB_EXE, defined by the test target) end to end through fork/execve, never
-// a shell, and captures its exit code, stdout and stderr separately. Shared by cli_test.cpp and
-// hostile_test.cpp; header-only because each test executable includes it once.
+// Runs the shadelab binary (SHADELAB_EXE, defined by the test target, or SHADELAB_TEST_EXE from the
+// environment) end to end through fork/execve, never a shell, and captures its exit code, stdout and stderr
+// separately. Shared by the tests of tests/cli/; header-only because each test executable includes it once.
 #pragma once
 
 #include <fcntl.h>
@@ -13,6 +13,7 @@
 
 #include <cerrno>
 #include <chrono>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -38,7 +39,52 @@ struct Outcome {
     int exitCode = -1; // -1 when the process did not exit normally
     int signal = 0;    // the signal that ended it, if one did
     std::string out, err;
+    bool started = false; // false: the child failed before exec (run.err says where); the test has failed
 };
+
+// The binary under test: SHADELAB_TEST_EXE when set (scripts/test.sh points it at a copy in a folder only
+// root can enter, as a clone in /root is), otherwise the one this build made.
+inline std::string shadelabExe() {
+    const char* chosen = std::getenv("SHADELAB_TEST_EXE");
+    return chosen != nullptr && *chosen != '\0' ? std::string(chosen) : std::string(SHADELAB_EXE);
+}
+
+// A copy of the binary that every user can execute, whatever the modes of the checkout's parents (a clone
+// in /root, mode 0700, cannot be entered by nobody): a folder of its own under /tmp, mode 0755, removed
+// when the test process exits. The binary embeds its shaders, fonts and scenes, so it needs nothing else.
+inline const std::string& shadelabExeForAnyUser() {
+    struct Copy {
+        std::filesystem::path folder, exe;
+        std::string error;
+        Copy() {
+            char pattern[] = "/tmp/shadelab-exe-XXXXXX";
+            if (::mkdtemp(pattern) == nullptr) {
+                error = std::string("mkdtemp /tmp/shadelab-exe-XXXXXX: ") + std::strerror(errno);
+                return;
+            }
+            folder = pattern;
+            exe = folder / "shadelab";
+            std::error_code failed;
+            std::filesystem::copy_file(shadelabExe(), exe, failed);
+            if (!failed) {
+                using std::filesystem::perms;
+                std::filesystem::permissions(folder,
+                                             perms::owner_all | perms::group_read | perms::group_exec |
+                                                 perms::others_read | perms::others_exec,
+                                             failed);
+            }
+            if (failed) error = "copying " + shadelabExe() + " to " + exe.string() + ": " + failed.message();
+        }
+        ~Copy() {
+            std::error_code ignored;
+            if (!folder.empty()) std::filesystem::remove_all(folder, ignored);
+        }
+    };
+    static const Copy copy;
+    if (!copy.error.empty()) ADD_FAILURE() << copy.error;
+    static const std::string path = copy.exe.string();
+    return path;
+}
 
 inline std::string describe(const Outcome& run) {
     const bool binary = run.out.find('\0') != std::string::npos || run.out.starts_with("\x89PNG");
@@ -79,6 +125,31 @@ inline std::vector<char*> nullTerminated(std::vector<std::string>& strings) {
     return pointers;
 }
 
+// Reads `fd` (a pipe, or a FIFO opened O_RDONLY | O_NONBLOCK before its writer starts) until every writer
+// has closed it, appending to `bytes`. False when `limit` passes first: the caller fails naming what it
+// waited for, rather than waiting forever on a writer that never came or never closed.
+inline bool readToEndWithin(int fd, std::chrono::seconds limit, std::string& bytes) {
+    const auto deadline = std::chrono::steady_clock::now() + limit;
+    while (std::chrono::steady_clock::now() < deadline) {
+        pollfd poller{fd, POLLIN, 0};
+        if (::poll(&poller, 1, 100) < 0) {
+            if (errno == EINTR) continue;
+            return false;
+        }
+        if (poller.revents & POLLIN) {
+            char buffer[65536];
+            const ssize_t n = ::read(fd, buffer, sizeof buffer);
+            if (n > 0) bytes.append(buffer, std::size_t(n));
+            if (n == 0) return true;
+            if (n < 0 && errno != EINTR && errno != EAGAIN) return false;
+            continue;
+        }
+        // Linux reports POLLHUP on a FIFO's read end only once a writer has opened it and all have closed.
+        if (poller.revents & (POLLHUP | POLLERR)) return true;
+    }
+    return false;
+}
+
 // How runWith starts the child and watches it.
 struct RunOptions {
     std::vector<std::string> environment; // "NAME=value" each; empty: the test's own environment
@@ -93,11 +164,28 @@ struct RunOptions {
     std::optional<std::string> program;            // run this instead of shadelab (args follow it)
 };
 
+// What a child that failed between fork and exec tells its parent, through a close-on-exec pipe that stays
+// empty when exec succeeds.
+struct StartFailure {
+    enum Step : int { Redirect, User, Folder, Limit, Exec } step;
+    int error; // errno
+};
+
+inline std::string describe(const StartFailure& failure, const std::string& program) {
+    static constexpr const char* kSteps[] = {"redirecting its standard streams", "dropping to the test user",
+                                             "entering its working folder", "setting its memory limit",
+                                             "executing"};
+    return "could not start " + program + ": " + kSteps[failure.step] +
+           " failed: " + std::strerror(failure.error);
+}
+
 // Runs shadelab with `args` in the folder `cwd` through fork/execve (never a shell); stdout and stderr are
 // read as they come, so neither pipe can fill and block it.
 inline Outcome runWith(const std::vector<std::string>& args, const std::filesystem::path& cwd,
                        const RunOptions& options = {}) {
-    std::vector<std::string> argStrings{options.program ? *options.program : std::string(SHADELAB_EXE)};
+    std::vector<std::string> argStrings{options.program ? *options.program
+                                        : options.user  ? shadelabExeForAnyUser()
+                                                        : shadelabExe()};
     argStrings.insert(argStrings.end(), args.begin(), args.end());
     std::vector<std::string> envStrings =
         options.environment.empty() ? childEnvironment(Display::Inherit) : options.environment;
@@ -106,39 +194,64 @@ inline Outcome runWith(const std::vector<std::string>& args, const std::filesyst
     const std::string stdoutPath = options.stdoutPath ? options.stdoutPath->string() : std::string();
 
     Outcome run;
-    int outPipe[2], errPipe[2], inPipe[2];
+    int outPipe[2], errPipe[2], inPipe[2], startPipe[2];
     if (::pipe2(outPipe, O_CLOEXEC) != 0 || ::pipe2(errPipe, O_CLOEXEC) != 0 ||
-        ::pipe2(inPipe, O_CLOEXEC) != 0) {
+        ::pipe2(inPipe, O_CLOEXEC) != 0 || ::pipe2(startPipe, O_CLOEXEC) != 0) {
         ADD_FAILURE() << "pipe2: " << std::strerror(errno);
         return run;
     }
     const pid_t pid = ::fork();
     if (pid == 0) {
         // Only async-signal-safe calls between fork and exec; dup2 clears O_CLOEXEC on 0, 1 and 2.
+        auto fail = [&](StartFailure::Step step) {
+            const StartFailure failure{step, errno};
+            [[maybe_unused]] const ssize_t ignored = ::write(startPipe[1], &failure, sizeof failure);
+            ::_exit(127);
+        };
         const int in = options.stdinText ? inPipe[0] : ::open("/dev/null", O_RDONLY);
         const int out = options.stdoutPath ? ::open(stdoutPath.c_str(), O_WRONLY) : outPipe[1];
         if (in < 0 || out < 0 || ::dup2(in, 0) < 0 || ::dup2(out, 1) < 0 || ::dup2(errPipe[1], 2) < 0)
-            ::_exit(126);
+            fail(StartFailure::Redirect);
         if (options.user &&
             (::setgroups(0, nullptr) != 0 || ::setresgid(options.group, options.group, options.group) != 0 ||
              ::setresuid(*options.user, *options.user, *options.user) != 0))
-            ::_exit(125);
-        if (::chdir(folder.c_str()) != 0) ::_exit(124);
+            fail(StartFailure::User);
+        if (::chdir(folder.c_str()) != 0) fail(StartFailure::Folder);
         const rlimit limit{options.addressSpace, options.addressSpace};
-        if (options.addressSpace != RLIM_INFINITY && ::setrlimit(RLIMIT_AS, &limit) != 0) ::_exit(123);
+        if (options.addressSpace != RLIM_INFINITY && ::setrlimit(RLIMIT_AS, &limit) != 0)
+            fail(StartFailure::Limit);
         ::execve(argv[0], argv.data(), envp.data());
-        ::_exit(127);
+        fail(StartFailure::Exec);
     }
     ::close(outPipe[1]);
     ::close(errPipe[1]);
     ::close(inPipe[0]);
+    ::close(startPipe[1]);
+    auto closeAll = [&] {
+        for (int fd : {outPipe[0], errPipe[0], inPipe[1], startPipe[0]}) ::close(fd);
+    };
     if (pid < 0) {
         ADD_FAILURE() << "fork: " << std::strerror(errno);
-        ::close(outPipe[0]);
-        ::close(errPipe[0]);
-        ::close(inPipe[1]);
+        closeAll();
         return run;
     }
+    // Empty at exec (close-on-exec), or the step that failed: a child that never started fails the test
+    // now, before anything waits on what it would have done.
+    StartFailure failure{};
+    ssize_t got = 0;
+    while ((got = ::read(startPipe[0], &failure, sizeof failure)) < 0 && errno == EINTR) {
+    }
+    ::close(std::exchange(startPipe[0], -1));
+    if (got == ssize_t(sizeof failure)) {
+        closeAll();
+        int status = 0;
+        while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+        }
+        run.err = describe(failure, argStrings[0]);
+        ADD_FAILURE() << run.err;
+        return run;
+    }
+    run.started = true;
     if (options.stdinText && ::write(inPipe[1], options.stdinText->data(), options.stdinText->size()) < 0)
         ADD_FAILURE() << "write to stdin: " << std::strerror(errno);
     ::close(inPipe[1]);
@@ -173,8 +286,17 @@ inline Outcome runWith(const std::vector<std::string>& args, const std::filesyst
     }
     for (pollfd& fd : fds)
         if (fd.fd >= 0) ::close(fd.fd);
+    // Both pipes are closed: the child has exited, or closed them and runs on; the same deadline holds.
     int status = 0;
-    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    pid_t waited = 0;
+    while ((waited = ::waitpid(pid, &status, WNOHANG)) == 0 && std::chrono::steady_clock::now() < deadline)
+        ::usleep(2000);
+    if (waited == 0) {
+        ::kill(pid, SIGKILL);
+        ADD_FAILURE() << argStrings[0] << " closed its output but did not exit within "
+                      << options.timeout.count() << " s; killed";
+    }
+    while (waited <= 0 && (waited = ::waitpid(pid, &status, 0)) < 0 && errno == EINTR) {
     }
     if (WIFEXITED(status)) run.exitCode = WEXITSTATUS(status);
     if (WIFSIGNALED(status)) {
@@ -182,8 +304,6 @@ inline Outcome runWith(const std::vector<std::string>& args, const std::filesyst
         run.err += "\n[killed by signal " + std::to_string(run.signal) + "]";
     }
     if (options.signalWhen && !signalled) ADD_FAILURE() << "the condition for sending the signal never came";
-    if (run.exitCode == 127 && run.out.empty() && run.err.empty())
-        ADD_FAILURE() << "could not execute " << argStrings[0];
     return run;
 }
 

@@ -743,6 +743,7 @@ TEST_F(Browser, WithoutWebGl2ThePageSaysSo) {
 TEST_F(Browser, RenderScriptWritesThePngOrSaysWhy) {
     RunOptions options;
     options.program = SHADELAB_WEB_SH;
+    options.timeout = std::chrono::seconds(60); // four runs, each well under the test's ctest TIMEOUT
     const Outcome ok =
         runWith({"render", "--size", "120x90", "--shading", "flat", "--out", "w.png"}, dir_, options);
     ASSERT_EQ(ok.exitCode, 0) << ok.err;

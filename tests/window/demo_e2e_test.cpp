@@ -337,13 +337,17 @@ TEST_F(DemoWindow, OverlayLightDragAndProbeShowWhatRenderGives) {
     EXPECT_EQ(plainScene.overlay, Overlay::None);
 
     demo.window().key("w");
-    pollUntil([&] { return demo.window().title().ends_with("| overlay: wireframe"); });
+    EXPECT_TRUE(pollUntil([&] { return demo.window().title().ends_with("| overlay: wireframe"); }))
+        << "W: the title did not say the overlay within " << kWaitText << "; it is " << demo.window().title();
     const auto [wireScene, wire] = savedAndRendered("wireframe");
     EXPECT_EQ(wireScene.overlay, Overlay::Wireframe);
     EXPECT_FALSE(compareImages(wire, plain, kWindowTolerance).passed) << "W drew no edges";
 
     demo.window().rightDrag(kWidth / 2, kHeight / 2, -80, 0);
-    pollUntil([&] { return demo.window().title().find("| light 1 (point) at (") != std::string::npos; });
+    EXPECT_TRUE(pollUntil([&] {
+        return demo.window().title().find("| light 1 (point) at (") != std::string::npos;
+    })) << "the light drag: the title did not name the light within "
+        << kWaitText << "; it is " << demo.window().title();
     const auto [litScene, lit] = savedAndRendered("light");
     EXPECT_LT(litScene.lights[0].position.x, wireScene.lights[0].position.x) << "dragged left";
     EXPECT_NEAR(glm::length(litScene.lights[0].position), glm::length(wireScene.lights[0].position), 1e-6);

@@ -5,9 +5,13 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <condition_variable>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <memory>
+#include <mutex>
 #include <stdexcept>
 #include <thread>
 
@@ -202,6 +206,37 @@ int shiftOf(unsigned long mask) {
     return shift;
 }
 
+// libX11's calls block until the server answers: a stopped or wedged Xvfb would hold the test forever. This
+// ends the test process with a message naming the call when `limit` passes before it is destroyed.
+class Watchdog {
+public:
+    Watchdog(Seconds limit, std::string what)
+        : thread_([this, limit, what = std::move(what)] {
+              std::unique_lock lock(mutex_);
+              if (!done_.wait_for(lock, limit, [this] { return finished_; })) {
+                  std::fprintf(stderr, "%s did not finish within %d s: the X server does not answer\n",
+                               what.c_str(), int(limit.count()));
+                  std::_Exit(1);
+              }
+          }) {}
+    ~Watchdog() {
+        {
+            const std::lock_guard lock(mutex_);
+            finished_ = true;
+        }
+        done_.notify_one();
+        thread_.join();
+    }
+    Watchdog(const Watchdog&) = delete;
+    Watchdog& operator=(const Watchdog&) = delete;
+
+private:
+    std::mutex mutex_;
+    std::condition_variable done_;
+    bool finished_ = false;
+    std::thread thread_;
+};
+
 } // namespace
 
 // libX11's XGetImage, what the xwd tool itself calls: the window's pixels as a ZPixmap, each pixel's
@@ -211,6 +246,7 @@ Image XWindow::capture() const {
     std::string name;
     for (const std::string& entry : env_)
         if (entry.starts_with("DISPLAY=")) name = entry.substr(8);
+    const Watchdog watchdog(kWaitLimit, "capturing window " + id_ + " on display " + name);
     ::Display* display = XOpenDisplay(name.c_str());
     if (!display) throw std::runtime_error("XOpenDisplay(\"" + name + "\") failed");
     const std::unique_ptr<::Display, int (*)(::Display*)> closer(display, XCloseDisplay);
