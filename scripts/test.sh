@@ -1,19 +1,84 @@
 #!/usr/bin/env bash
-# Sets up and builds shadelab, then runs everything CI runs, in this order:
-#   1. formatting (.clang-format) of src/, include/ and tests/
-#   2. the browser build (scripts/web.sh build), the release build (warnings are errors) and the whole
-#      test suite: CPU tests, GL tests on every headless backend (EGL with OpenGL and with OpenGL ES,
-#      OSMesa), the command line end to end, the demo window under Xvfb, the page in headless Chromium
-#   3. clang-tidy (.clang-tidy) on src/
-#   4. a Debug build with AddressSanitizer + UndefinedBehaviorSanitizer running the whole suite again
-#      (LeakSanitizer on; only Mesa's and the system GL stack's own allocations are suppressed)
-#   5. the fuzzers for a fixed budget (scripts/fuzz.sh), when present
-# Extra arguments go to every ctest run (e.g. -R cpu.). SHADELAB_QUICK=1 stops after step 2.
+# Sets up and builds shadelab, then runs everything CI runs, and prints how long each stage took:
+#   1. setup: the Debian packages that are missing (one apt transaction for all), the release build
+#      (warnings are errors)
+#   2. the browser build (scripts/web.sh build); formatting (.clang-format) of src/, include/, tests/, web/
+#   3. the whole test suite on the release build: CPU tests, GL tests on every headless backend (EGL with
+#      OpenGL and with OpenGL ES, OSMesa), the command line end to end, the demo window under Xvfb, the page
+#      in headless Chromium. Meanwhile, at the lowest CPU priority, the sanitizer tree is built with the
+#      cores the tests leave idle.
+#   4. the permission-dropping tests again with the binary in a folder only root can enter, as a clone in
+#      /root is
+#   5. clang-tidy (.clang-tidy) on src/, and the fuzzers' build, at the lowest priority beside step 6
+#   6. the suite under AddressSanitizer + UndefinedBehaviorSanitizer (+ LeakSanitizer; only Mesa's and the
+#      system GL stack's own allocations are suppressed), Debug build: the CPU, command-line, window and
+#      EGL + OpenGL tests whole, and of the OpenGL ES and OSMesa copies of the GL tests the ones that
+#      exercise those contexts' own code (the rest is the same renderer code on the same driver). The
+#      page's tests are left out: the page is WebAssembly, not built with the sanitizers.
+#   7. the fuzzers for a fixed budget (scripts/fuzz.sh)
+# Extra arguments go to every ctest run (e.g. -R cpu.). SHADELAB_QUICK=1 stops after step 3.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+root=$PWD
 jobs=$(nproc)
+logs=$(mktemp -d "${TMPDIR:-/tmp}/shadelab-test-logs.XXXXXX")
+
+# ---- stage timing: a table of every stage's duration, printed at the end, whether it passed or not ----
+names=()
+seconds=()
+began=$(date +%s)
+stage_began=$began
+stage_name=""
+stage() {
+  local now
+  now=$(date +%s)
+  if [ -n "$stage_name" ]; then
+    names+=("$stage_name")
+    seconds+=($((now - stage_began)))
+  fi
+  stage_name=$1
+  stage_began=$now
+  [ -n "$1" ] && printf '\n=== %s\n' "$1"
+  return 0
+}
+# A stage that ran beside others: its own start and end.
+background_stage() { names+=("$1 (beside the others)"); seconds+=($(($3 - $2))); }
+print_table() {
+  local status=$?
+  stage ""
+  printf '\n=== stage durations (%s, %s cores)\n' "$(date -u +%Y-%m-%dT%H:%MZ)" "$jobs"
+  for i in "${!names[@]}"; do
+    printf '%-72s %4d:%02d\n' "${names[$i]}" $((seconds[i] / 60)) $((seconds[i] % 60))
+  done
+  local total=$(($(date +%s) - began))
+  printf '%-72s %4d:%02d\n' "total" $((total / 60)) $((total % 60))
+  [ "$status" -eq 0 ] || printf 'FAILED (exit %d) in: %s\n' "$status" "${names[-1]:-setup}"
+}
+trap print_table EXIT
+
+# Runs a command in the background at the lowest CPU priority, its output to $logs/NAME.log; `finish NAME`
+# waits for it, prints its log if it failed, and records its duration.
+declare -A pids starts
+in_background() {
+  local name=$1
+  shift
+  starts[$name]=$(date +%s)
+  nice -n 19 "$@" >"$logs/$name.log" 2>&1 &
+  pids[$name]=$!
+}
+finish() {
+  local name=$1 status=0
+  wait "${pids[$name]}" || status=$?
+  background_stage "$name" "${starts[$name]}" "$(date +%s)"
+  if [ "$status" -ne 0 ]; then
+    echo "shadelab: $name failed (exit $status); its log ($logs/$name.log):"
+    tail -n 200 "$logs/$name.log"
+    exit "$status"
+  fi
+}
+
+stage "setup: packages and the release build"
 SHADELAB_CMAKE_ARGS="-DSHADELAB_WERROR=ON" scripts/setup.sh
-stage() { printf '\n=== %s\n' "$*"; }
 
 stage "browser build (WebGL 2, emscripten)"
 scripts/web.sh build
@@ -21,23 +86,52 @@ scripts/web.sh build
 stage "format check (clang-format)"
 git ls-files 'src/*.cpp' 'src/*.h' 'include/*.h' 'tests/*.cpp' 'tests/*.h' 'web/*.cpp' | xargs clang-format --dry-run --Werror
 
+build_asan() {
+  cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DSHADELAB_SANITIZE=ON -DSHADELAB_WERROR=ON &&
+    cmake --build build-asan -j"$jobs"
+}
+if [ "${SHADELAB_QUICK:-}" != 1 ]; then in_background "sanitizer build" build_asan; fi
+
 stage "tests (release build)"
-ctest --test-dir build --output-on-failure -j"$jobs" "$@"
+# The window and page tests first: they wait on Xvfb and Chromium, so -j overlaps them with the rest.
+ctest --test-dir build --output-on-failure -j"$jobs" -L 'web|window' "$@"
+ctest --test-dir build --output-on-failure -j"$jobs" -LE 'web|window' "$@"
 [ "${SHADELAB_QUICK:-}" = 1 ] && exit 0
 
-stage "clang-tidy"
-git ls-files 'src/*.cpp' | xargs -P"$jobs" -n1 clang-tidy -p build --quiet
+stage "permission-dropping tests, the binary in a folder only root can enter"
+if [ "$(id -u)" -eq 0 ]; then
+  # mktemp -d makes the folder 0700, as /root is: nobody cannot reach anything beneath it.
+  private=$(mktemp -d)
+  cp build/shadelab "$private/"
+  SHADELAB_TEST_EXE="$private/shadelab" build/tests/output_safety_test --gtest_brief=1
+  rm -rf "$private"
+else
+  echo "skipped: not root (the tests switch to uid 65534, which needs root)"
+fi
 
+in_background "clang-tidy" bash -c "git ls-files 'src/*.cpp' | xargs -P$jobs -n1 clang-tidy -p build --quiet"
+stage "sanitizer build (what the release tests left)"
+finish "sanitizer build"
+build_fuzzers() {
+  cmake -S fuzz -B build-fuzz -DCMAKE_CXX_COMPILER=clang++ && cmake --build build-fuzz -j"$jobs"
+}
+in_background "fuzzers' build" build_fuzzers
 stage "tests under AddressSanitizer + UndefinedBehaviorSanitizer (debug build)"
-cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DSHADELAB_SANITIZE=ON -DSHADELAB_WERROR=ON >/dev/null
-cmake --build build-asan -j"$jobs"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0"
-ctest --test-dir build-asan --output-on-failure -j"$jobs" "$@"
+export LSAN_OPTIONS="suppressions=$root/tests/sanitizers/lsan.supp:print_suppressions=0"
+ctest --test-dir build-asan --output-on-failure -j"$jobs" -L window "$@"
+ctest --test-dir build-asan --output-on-failure -j"$jobs" -L '^(cpu|cli|egl|gl)$' "$@"
+# The OpenGL ES and OSMesa contexts' own code, and the ES shader path, once each under the sanitizers.
+ctest --test-dir build-asan --output-on-failure -j"$jobs" \
+  -R '^(gles|osmesa)\.(Cases/References|ReferenceFiles|Scenes/Specialization|DepthPrecision)\.' "$@"
+unset ASAN_OPTIONS UBSAN_OPTIONS LSAN_OPTIONS
 
-if [ -x scripts/fuzz.sh ]; then
-  stage "fuzzing"
-  scripts/fuzz.sh
-fi
+stage "clang-tidy (what the sanitizer tests left)"
+finish "clang-tidy"
+finish "fuzzers' build"
+
+stage "fuzzing"
+scripts/fuzz.sh
+
 stage "all stages passed"
