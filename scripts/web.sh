@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The browser build of shadelab (WebGL 2, Debian's emscripten):
 #   scripts/web.sh build                 installs what is missing, builds into build-web/
-#   scripts/web.sh serve [PORT]          serves build-web/ on 127.0.0.1 (default port 8000), prints the URL
+#   scripts/web.sh serve [PORT]          serves the page (build-web/site/) on 127.0.0.1 (default port 8000,
+#                                        1..65535), prints the URL
 #   scripts/web.sh render [SCENE.json] [--shading S] [--lighting L] [--subdivisions N] [--size WxH]
 #                         [--depth D] [--tolerance-px T] --out FILE.png
 #                                        draws the scene in headless Chromium through the WebGL 2 build and
@@ -40,11 +41,9 @@ build)
   echo "shadelab: built $root/build-web (scripts/web.sh serve to open it)"
   ;;
 serve)
-  port="${2:-8000}"
-  [[ "$port" =~ ^[0-9]{1,5}$ ]] || { echo "shadelab: serve: PORT must be a number, got '$port'" >&2; exit 2; }
-  [ -f "$root/build-web/shadelab.wasm" ] || { echo "shadelab: no browser build: run scripts/web.sh build" >&2; exit 1; }
-  echo "shadelab: open http://127.0.0.1:$port/ (Ctrl-C stops the server)"
-  exec /usr/bin/python3 -m http.server "$port" --bind 127.0.0.1 --directory "$root/build-web"
+  [ -f "$root/build-web/site/shadelab.wasm" ] || { echo "shadelab: no browser build: run scripts/web.sh build" >&2; exit 1; }
+  # Only the page's own files (build-web/site/): no listings, no links out; the port is checked there.
+  exec /usr/bin/python3 "$root/web/serve.py" "$root/build-web/site" "${2:-8000}"
   ;;
 render)
   shift

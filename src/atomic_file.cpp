@@ -5,8 +5,10 @@
 #include <cerrno>
 #include <climits>
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <optional>
 #include <utility>
 
 #include <fcntl.h>
@@ -113,6 +115,73 @@ bool writeAll(int fd, const char* data, std::size_t size) {
     return true;
 }
 
+// The descriptor that a path names when it is one of this process's own: /dev/stdout, /dev/stderr,
+// /dev/stdin, /dev/fd/N, /proc/self/fd/N, /proc/thread-self/fd/N, /proc/<this pid>/fd/N. Following such a
+// path as a link would reach the file behind the descriptor and replace it.
+std::optional<int> descriptorNamedBy(const fs::path& path) {
+    const std::string text = path.lexically_normal().string();
+    if (text == "/dev/stdin") return 0;
+    if (text == "/dev/stdout") return 1;
+    if (text == "/dev/stderr") return 2;
+    const std::string prefixes[] = {"/dev/fd/", "/proc/self/fd/", "/proc/thread-self/fd/",
+                                    "/proc/" + std::to_string(::getpid()) + "/fd/"};
+    for (const std::string& prefix : prefixes) {
+        if (!text.starts_with(prefix)) continue;
+        const std::string number = text.substr(prefix.size());
+        if (number.empty() || number.size() > 9 ||
+            number.find_first_not_of("0123456789") != std::string::npos)
+            return std::nullopt;
+        return std::stoi(number);
+    }
+    return std::nullopt;
+}
+
+OutputTarget descriptorTarget(const fs::path& userPath, int fd, const std::string& name) {
+    const int flags = ::fcntl(fd, F_GETFL);
+    if (flags < 0)
+        throw InputError(name + ": " + quoted(userPath) + " names descriptor " + std::to_string(fd) +
+                         ", which is not open; give a file name, or - for standard output");
+    if ((flags & O_ACCMODE) == O_RDONLY)
+        throw InputError(name + ": " + quoted(userPath) + " names descriptor " + std::to_string(fd) +
+                         ", which is open for reading only; give a file name, or - for standard output");
+    struct stat st {};
+    if (::fstat(fd, &st) == 0 && S_ISDIR(st.st_mode))
+        throw InputError(name + ": " + quoted(userPath) + " names descriptor " + std::to_string(fd) +
+                         ", which is a directory; give a file name, or - for standard output");
+    return {OutputTarget::Kind::Descriptor, userPath, name, fd};
+}
+
+// fs.protected_symlinks: in a sticky world-writable folder (/tmp), the kernel follows a link only for its
+// owner or the folder's owner, so that nobody can plant a link there for another user to write through.
+void refuseUnprotectedLink(const fs::path& link, const struct stat& linkStat, const std::string& name) {
+    const fs::path folder = link.has_parent_path() ? link.parent_path() : fs::path(".");
+    struct stat st {};
+    if (::stat(folder.c_str(), &st) != 0) return;
+    const bool stickyWorldWritable = (st.st_mode & S_ISVTX) && (st.st_mode & S_IWOTH);
+    if (!stickyWorldWritable || linkStat.st_uid == ::geteuid() || linkStat.st_uid == st.st_uid) return;
+    throw InputError(name + ": " + quoted(link) + " is a symbolic link of uid " +
+                     std::to_string(linkStat.st_uid) + " in the sticky world-writable folder " +
+                     quoted(folder) +
+                     ", which the kernel (fs.protected_symlinks) would not follow for you; remove the link "
+                     "or choose another path");
+}
+
+// The caller must be able to replace an existing file and to create the temporary file beside it.
+void refuseUnwritable(const fs::path& path, const fs::path& folder, const std::string& name) {
+    if (::faccessat(AT_FDCWD, path.c_str(), W_OK, AT_EACCESS) != 0 && errno != ENOENT) {
+        const std::string reason = osError();
+        struct stat st {};
+        std::array<char, 8> mode{'?'};
+        if (::stat(path.c_str(), &st) == 0)
+            std::snprintf(mode.data(), mode.size(), "%04o", st.st_mode & 07777u);
+        throw InputError(name + ": " + quoted(path) + " exists and you may not write it (mode " +
+                         mode.data() + ": " + reason + "); make it writable or choose another path");
+    }
+    if (::faccessat(AT_FDCWD, folder.c_str(), W_OK | X_OK, AT_EACCESS) != 0)
+        throw InputError(name + ": cannot create files in the folder " + quoted(folder) + " (" + osError() +
+                         "): the output is written beside its name and renamed; choose another folder");
+}
+
 } // namespace
 
 [[noreturn]] void failWrite(std::string_view what, const fs::path& path, const std::string& reason) {
@@ -130,8 +199,12 @@ OutputTarget resolveOutput(const fs::path& userPath, std::string_view field) {
         if (hops > 40)
             throw InputError(name + ": " + quoted(userPath) +
                              " is a loop of symbolic links; give a path that ends at a file");
+        if (path.is_absolute())
+            if (const std::optional<int> fd = descriptorNamedBy(path))
+                return descriptorTarget(userPath, *fd, name);
         struct stat st {};
         if (::lstat(path.c_str(), &st) == 0 && S_ISLNK(st.st_mode)) {
+            refuseUnprotectedLink(path, st, name);
             std::array<char, PATH_MAX> buffer{};
             const ssize_t n = ::readlink(path.c_str(), buffer.data(), buffer.size() - 1);
             if (n < 0) throw InputError(name + ": cannot read the link " + quoted(path) + ": " + osError());
@@ -140,7 +213,10 @@ OutputTarget resolveOutput(const fs::path& userPath, std::string_view field) {
             continue;
         }
         if (::stat(path.c_str(), &st) == 0) {
-            if (S_ISREG(st.st_mode)) return {OutputTarget::Kind::Regular, path, name};
+            if (S_ISREG(st.st_mode)) {
+                refuseUnwritable(path, path.has_parent_path() ? path.parent_path() : fs::path("."), name);
+                return {OutputTarget::Kind::Regular, path, name};
+            }
             if (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode))
                 return {OutputTarget::Kind::WriteThrough, path, name};
             throw InputError(name + ": " + quoted(userPath) + " is " + kindName(st.st_mode) +
@@ -163,6 +239,7 @@ OutputTarget resolveOutput(const fs::path& userPath, std::string_view field) {
     if (!S_ISDIR(st.st_mode))
         throw InputError(name + ": " + quoted(folder) +
                          " is a file, not a folder; choose a path inside a folder");
+    refuseUnwritable(path, folder, name);
     return {OutputTarget::Kind::Regular, path, name};
 }
 
@@ -293,6 +370,9 @@ void PendingOutput::commit() {
     }
     case OutputTarget::Kind::Stdout:
         if (!writeAll(STDOUT_FILENO, s.buffer, s.size)) s.fail(osError());
+        break;
+    case OutputTarget::Kind::Descriptor:
+        if (!writeAll(s.target.descriptor, s.buffer, s.size)) s.fail(osError());
         break;
     case OutputTarget::Kind::WriteThrough: {
         // No O_CREAT, no O_TRUNC: the device or FIFO is used as it is. A FIFO waits here for its reader.

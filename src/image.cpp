@@ -10,6 +10,7 @@
 #include <cstring>
 #include <iomanip>
 #include <sstream>
+#include <stdexcept>
 #include <system_error>
 #include <utility>
 
@@ -71,25 +72,39 @@ ValueScan scanValues(const ImageF& image, float lo, float hi) {
 }
 
 std::string Comparison::summary() const {
-    if (!sizeMatches) return "FAIL: the image sizes differ";
     std::ostringstream text;
+    if (!sizeMatches) {
+        text << "FAIL: the image sizes differ: actual " << actualWidth << "x" << actualHeight << ", expected "
+             << expectedWidth << "x" << expectedHeight;
+        return text.str();
+    }
     text << (passed ? "pass" : "FAIL") << ": max delta " << maxDelta << ", mean delta " << std::fixed
-         << std::setprecision(4) << meanDelta << " (limit " << tolerance.meanDelta << "), " << outliers
-         << " pixel(s) over the max-delta limit " << tolerance.maxDelta << " (budget "
-         << tolerance.outlierBudget << ")";
+         << std::setprecision(4) << meanDelta;
+    if (comparedPixels != pixels) text << " over the " << comparedPixels << " compared pixels of " << pixels;
+    text << " (limit " << tolerance.meanDelta << "), " << outliers << " pixel(s) over the max-delta limit "
+         << tolerance.maxDelta << " (budget " << tolerance.outlierBudget << ")";
     return text.str();
 }
 
-Comparison compareImages(const Image& actual, const Image& expected, const Tolerance& tolerance) {
+Comparison compareImages(const Image& actual, const Image& expected, const Tolerance& tolerance,
+                         const Image* mask) {
     Comparison result;
     result.tolerance = tolerance;
+    result.actualWidth = actual.width;
+    result.actualHeight = actual.height;
+    result.expectedWidth = expected.width;
+    result.expectedHeight = expected.height;
     if (actual.width != expected.width || actual.height != expected.height) {
         result.sizeMatches = false;
         return result;
     }
-    const std::size_t pixels = std::size_t(actual.width) * std::size_t(actual.height);
+    if (mask && (mask->width != actual.width || mask->height != actual.height))
+        throw std::invalid_argument("compareImages: the mask's size differs from the images'");
+    result.pixels = std::size_t(actual.width) * std::size_t(actual.height);
     std::uint64_t deltaSum = 0;
-    for (std::size_t i = 0; i < pixels * 4; i += 4) {
+    for (std::size_t i = 0; i < result.pixels * 4; i += 4) {
+        if (mask && mask->rgba[i] == 0 && mask->rgba[i + 1] == 0 && mask->rgba[i + 2] == 0) continue;
+        ++result.comparedPixels;
         int pixelMax = 0;
         for (std::size_t c = 0; c < 3; ++c) {
             const int delta = std::abs(int(actual.rgba[i + c]) - int(expected.rgba[i + c]));
@@ -99,7 +114,7 @@ Comparison compareImages(const Image& actual, const Image& expected, const Toler
         result.maxDelta = std::max(result.maxDelta, pixelMax);
         if (pixelMax > tolerance.maxDelta) ++result.outliers;
     }
-    result.meanDelta = pixels ? double(deltaSum) / (3.0 * double(pixels)) : 0.0;
+    result.meanDelta = result.comparedPixels ? double(deltaSum) / (3.0 * double(result.comparedPixels)) : 0.0;
     result.passed = result.outliers <= tolerance.outlierBudget && result.meanDelta <= tolerance.meanDelta;
     return result;
 }

@@ -134,14 +134,24 @@ void checkMaterial(const Material& m, const std::string& path) {
 // frame, and the ray-object tests of the analytic reference (pixels × objects), which render and reference
 // share as one notion of a valid scene.
 void checkWork(const Scene& scene) {
+    // A split view draws every object once per side, each side at its own level where it sets one.
+    const bool split = scene.view.kind == ViewKind::Split;
     double triangles = 0;
-    for (const SceneObject& object : scene.objects)
-        triangles += double(sphereTriangleCount(subdivisionLevel(scene, object)));
+    for (const SceneObject& object : scene.objects) {
+        const int level = subdivisionLevel(scene, object);
+        if (!split) {
+            triangles += double(sphereTriangleCount(level));
+            continue;
+        }
+        for (const SplitSide* side : {&scene.view.left, &scene.view.right})
+            triangles += double(sphereTriangleCount(side->level.value_or(level)));
+    }
     if (triangles > double(kMaxTrianglesPerFrame))
-        fail("objects", "the scene draws " + formatNumber(triangles) +
-                            " triangles per frame (each object 4^(level+1)); at most " +
-                            std::to_string(kMaxTrianglesPerFrame) +
-                            " are allowed: lower the objects' subdivisions or draw fewer objects");
+        fail(split ? "view" : "objects",
+             "the scene draws " + formatNumber(triangles) + " triangles per frame (each object 4^(level+1)" +
+                 (split ? ", once per side of the split" : "") + "); at most " +
+                 std::to_string(kMaxTrianglesPerFrame) + " are allowed: lower the subdivisions" +
+                 (split ? " (the sides' @levels included)" : "") + " or draw fewer objects");
     const double rayTests = double(scene.width) * scene.height * double(scene.objects.size());
     if (rayTests > double(kMaxReferenceRayTests))
         fail("objects", "the analytic reference would test " + formatNumber(rayTests) +

@@ -8,7 +8,7 @@
   driver.py session
       reads one JSON request per line on standard input and answers one JSON line each (tests/web/).
 
-The page is served from build-web/ on 127.0.0.1 (an ephemeral port) for the run: wasm cannot be fetched
+The page is served from build-web/site/ on 127.0.0.1 (an ephemeral port) for the run: wasm cannot be fetched
 from file://. Exit codes as shadelab's: 0 success, 2 bad input (the page's message), 1 anything else.
 Input is data: scene text and names reach the page only as JavaScript arguments, never as code.
 """
@@ -24,19 +24,15 @@ import threading
 import time
 import zlib
 
-ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'build-web')
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from serve import PageHandler  # noqa: E402  (the page's files only, as scripts/web.sh serve)
+
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'build-web', 'site')
 FLAGS = ['shading', 'lighting', 'subdivisions', 'size', 'depth', 'tolerance-px', 'overlay', 'view']
 CHROME_ARGS = ['--headless=new', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--no-sandbox',
                '--disable-dev-shm-usage', '--window-size=1280,800', '--force-device-scale-factor=1']
 
 
-class Quiet(http.server.SimpleHTTPRequestHandler):
-    def log_message(self, *args):
-        pass
-
-    def end_headers(self):
-        self.send_header('Cache-Control', 'no-store')
-        super().end_headers()
 
 
 REQUEST_TIMEOUT = 60  # seconds: one WebDriver request, page load or script (the tests allow 240 s a session)
@@ -50,7 +46,7 @@ class Page:
         from selenium.webdriver.chrome.service import Service
         if not os.path.exists(os.path.join(root, 'shadelab.wasm')):
             raise RuntimeError(root + ' holds no browser build: run scripts/web.sh build')
-        handler = functools.partial(Quiet, directory=root)
+        handler = functools.partial(PageHandler, directory=root)
         self.server = http.server.ThreadingHTTPServer(('127.0.0.1', 0), handler)
         threading.Thread(target=self.server.serve_forever, daemon=True).start()
         options = webdriver.ChromeOptions()

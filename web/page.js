@@ -117,7 +117,18 @@ async function loadUrl(url, name) {
   } catch (e) {
     return url + ': cannot fetch the scene (' + e.message + ')';
   }
-  return loadText(text, name || decodeURIComponent(url.split('/').pop() || url));
+  return loadText(text, name || fileNameOf(url));
+}
+
+// The last part of a URL for messages, its %-escapes decoded; a % that is no escape stays as it is (a
+// URIError here used to stop the page with nothing shown).
+function fileNameOf(url) {
+  const last = url.split('/').pop() || url;
+  try {
+    return decodeURIComponent(last);
+  } catch (e) {
+    return last;
+  }
 }
 
 // "" or the message, which stays on the page; the previous scene stays drawn behind it.

@@ -6,6 +6,12 @@
 //   - a symbolic link is followed, and its target is replaced that way (the link stays a link);
 //   - "-" is standard output, and a character device or FIFO is written through directly (no temporary
 //     file): `--out /dev/null` works, `/dev/full` fails with the OS error, a FIFO's reader gets the file;
+//   - /dev/stdout, /dev/stderr, /dev/fd/N and /proc/self/fd/N are this process's open descriptor, written
+//     through as "-" is (never the file behind it replaced: a log opened for appending keeps its lines);
+//   - a symbolic link in a sticky world-writable folder (/tmp) that belongs to neither the caller nor the
+//     folder's owner is refused, as the kernel's fs.protected_symlinks refuses to follow it;
+//   - an existing file the caller may not write, or a folder where the caller may not create the
+//     temporary file, is refused before any work;
 //   - a folder, block device or socket is refused (InputError) before any work is done;
 //   - the content is produced completely in memory or in the temporary file first, so a failure while
 //     producing it never touches the output; a write, flush, fsync or close that fails is an error;
@@ -25,17 +31,20 @@ namespace shadelab {
 // Where an output path really goes, resolved once before any work.
 struct OutputTarget {
     enum class Kind {
-        Stdout,      // "-"
-        Regular,     // an existing regular file or a new one: temporary file, then rename
-        WriteThrough // a character device or a FIFO: opened and written directly
+        Stdout,       // "-"
+        Regular,      // an existing regular file or a new one: temporary file, then rename
+        WriteThrough, // a character device or a FIFO: opened and written directly
+        Descriptor    // /dev/stdout, /dev/fd/N…: this process's open descriptor, written directly
     };
     Kind kind = Kind::Regular;
-    std::filesystem::path path; // symbolic links resolved; empty for Stdout
+    std::filesystem::path path; // symbolic links resolved; empty for Stdout; as given for Descriptor
     std::string field;          // the argument that named it, for messages ("--out")
+    int descriptor = -1;        // Descriptor: the open descriptor
 };
 
 // Throws InputError naming `field`, the path and the fix for an empty path, a folder, a block device, a
-// socket, a missing folder, or a loop of symbolic links.
+// socket, a missing folder, a loop of symbolic links, a link the kernel would not follow, a descriptor that
+// is not open for writing, or a file or folder the caller may not write.
 OutputTarget resolveOutput(const std::filesystem::path& userPath, std::string_view field);
 
 // True when both paths name the same existing file (device and inode, after following links).

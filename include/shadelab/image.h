@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -42,11 +43,22 @@ Image toImage8(const ImageF& image);
 // Writes an opaque RGB PNG (alpha dropped) to a temporary file beside `path`, then renames it over `path`.
 // Throws RuntimeError naming the path on any failure, leaving nothing behind.
 void writePng(const Image& image, const std::filesystem::path& path);
-// Reads a PNG as RGBA (alpha 255 if the file has none). Throws RuntimeError naming the path.
+// The PNG file writePng writes, as bytes in memory.
+std::string encodePng(const Image& image);
+// Reads a PNG's stored samples as 8-bit RGBA (alpha 255 if the file has none): any colour type, 16-bit
+// samples scaled to 8 (v/257, rounded), no gamma applied (gAMA, sRGB, iCCP are ignored), so two files that
+// hold the same samples read the same. A header claiming more pixels than the file can hold is refused
+// before anything is allocated for it. Throws RuntimeError naming the path.
 Image readPng(const std::filesystem::path& path);
-// Decodes a complete PNG held in memory (signature, every row, and the closing IEND chunk) as RGBA.
+// Decodes a complete PNG held in memory (signature, every row, and the closing IEND chunk) as readPng does.
 // Throws RuntimeError "<what>: <reason>" for anything truncated or corrupt.
 Image decodePng(std::string_view bytes, std::string_view what);
+// The width and height a PNG's header (IHDR) claims, read without decoding anything; nullopt if the bytes
+// do not start as a PNG.
+struct PngSize {
+    std::uint32_t width = 0, height = 0;
+};
+std::optional<PngSize> pngSize(std::string_view bytes);
 
 // Counts the non-finite values and the values outside [lo, hi] in a float image.
 struct ValueScan {
@@ -62,14 +74,19 @@ struct Tolerance {
 };
 struct Comparison {
     bool sizeMatches = true;
+    int actualWidth = 0, actualHeight = 0, expectedWidth = 0, expectedHeight = 0;
     int maxDelta = 0;
-    double meanDelta = 0;
-    int outliers = 0; // pixels with a channel difference > tolerance.maxDelta
+    double meanDelta = 0;                       // over the compared pixels
+    int outliers = 0;                           // pixels with a channel difference > tolerance.maxDelta
+    std::size_t comparedPixels = 0, pixels = 0; // fewer compared than there are when a mask leaves some out
     bool passed = false;
     Tolerance tolerance; // the limits this was judged against, for summary()
     std::string summary() const;
 };
-Comparison compareImages(const Image& actual, const Image& expected, const Tolerance& tolerance);
+// Per-channel differences of the colour channels. With a `mask` of the same size, pixels that are black in
+// it are not compared: they count in no figure, the mean included.
+Comparison compareImages(const Image& actual, const Image& expected, const Tolerance& tolerance,
+                         const Image* mask = nullptr);
 // |actual − expected| per channel, amplified ×8 and clamped, opaque; for looking at a failure.
 Image diffImage(const Image& actual, const Image& expected);
 

@@ -23,6 +23,7 @@
 #include "shadelab/camera.h"
 #include "shadelab/errors.h"
 #include "shadelab/scene.h"
+#include "shadelab/scene_values.h"
 #include "shadelab/sphere.h"
 #include "shadelab/subdivision.h"
 #include "shadelab/window.h"
@@ -1134,6 +1135,40 @@ TEST(DemoProbe, ClickPinsTheProbeAndTheBackgroundRemovesIt) {
         EXPECT_NE(text.find(word), std::string::npos) << word << " in\n" << text;
     EXPECT_FALSE(state.probeAt(2, 2));
     EXPECT_FALSE(state.probe().has_value());
+}
+
+// + goes through the scene's work limit (kMaxTrianglesPerFrame), as --subdivisions does: 64 objects at level
+// 9 draw 64 × 4^10 = 67.1 M triangles, the limit itself; level 10 would draw four times that. + then
+// changes nothing and the status line says why (it drew 268 M triangles and took 45 s to quit).
+TEST(DemoState, LevelUpBeyondTheWorkLimitIsRefused) {
+    Scene scene;
+    scene.objects.assign(64, scene.objects.at(0));
+    for (SceneObject& o : scene.objects) o.subdivisions = 9;
+    DemoState state(scene);
+    state.apply(Command::LevelUp);
+    EXPECT_EQ(state.current().objects.at(0).subdivisions, 9);
+    EXPECT_NE(state.levelRefusal.find("level 10 refused"), std::string::npos) << state.levelRefusal;
+    EXPECT_NE(state.levelRefusal.find("triangles per frame"), std::string::npos) << state.levelRefusal;
+    EXPECT_NE(statusText(state).find("level 10 refused"), std::string::npos) << statusText(state);
+    state.apply(Command::LevelDown);
+    EXPECT_EQ(state.current().objects.at(0).subdivisions, 8);
+    EXPECT_EQ(state.levelRefusal, "");
+
+    // A split draws every object once per side: at level 9 that is twice the limit, so V is refused too,
+    // and a split's own @levels count (render --view split:phong@10,gouraud@10 drew 2 × 268 M triangles).
+    DemoState split(scene);
+    split.apply(Command::ToggleSplitView);
+    EXPECT_EQ(split.current().view.kind, ViewKind::Scene);
+    EXPECT_NE(split.levelRefusal.find("split view refused"), std::string::npos) << split.levelRefusal;
+    Scene sides = scene;
+    for (SceneObject& o : sides.objects) o.subdivisions = 0;
+    sides.view = parseViewOrThrow("split:phong@10,gouraud@10", "--view");
+    try {
+        checkSceneLimits(sides);
+        ADD_FAILURE() << "a split of 64 level-10 spheres passed the work limit";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("once per side of the split"), std::string::npos) << e.what();
+    }
 }
 
 } // namespace

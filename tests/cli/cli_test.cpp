@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cctype>
 #include <cerrno>
@@ -27,6 +28,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <png.h>
 
 #include "cli/run_process.h"
 #include "shadelab/image.h"
@@ -204,6 +206,171 @@ TEST_F(CliTest, CompareJudgesAsTheTestsDo) {
     const Outcome missing = shadelab({"compare", "a.png", "nothere.png"});
     EXPECT_EQ(missing.exitCode, 2) << describe(missing);
     EXPECT_NE(missing.err.find("nothere.png"), std::string::npos) << describe(missing);
+}
+
+shadelab::Image filled(int width, int height, std::uint8_t value) {
+    shadelab::Image image(width, height);
+    for (std::size_t i = 0; i < image.rgba.size(); ++i) image.rgba[i] = i % 4 == 3 ? 255 : value;
+    return image;
+}
+
+// The mean is over the compared pixels: a mask that keeps one row must not dilute a difference everywhere
+// (10/255 apart failed --mean 5 without a mask and passed with one, "mean 1.0").
+TEST_F(CliTest, CompareMeanIsOverTheComparedPixels) {
+    shadelab::writePng(filled(16, 16, 100), dir_ / "a.png");
+    shadelab::writePng(filled(16, 16, 110), dir_ / "b.png");
+    shadelab::Image mask = filled(16, 16, 0);
+    std::fill_n(mask.rgba.begin(), 16 * 4, std::uint8_t(255)); // the first row is compared
+    shadelab::writePng(mask, dir_ / "mask.png");
+    const Outcome plain = shadelab({"compare", "a.png", "b.png", "--max", "255", "--mean", "5"});
+    EXPECT_EQ(plain.exitCode, 1) << describe(plain);
+    const Outcome masked =
+        shadelab({"compare", "a.png", "b.png", "--max", "255", "--mean", "5", "--mask", "mask.png"});
+    EXPECT_EQ(masked.exitCode, 1) << describe(masked);
+    EXPECT_NE(masked.out.find("mean delta 10.0000 over the 16 compared pixels of 256"), std::string::npos)
+        << masked.out;
+    const Outcome help = shadelab({"compare", "--help"});
+    EXPECT_NE(help.out.find("over the compared pixels"), std::string::npos) << help.out;
+}
+
+// A 16-bit PNG holding the samples s·257 of an 8-bit one, written by libpng as linear data with a gAMA
+// chunk of 1.0 (PNG_FORMAT_LINEAR_RGB).
+void writeSixteenBitPng(const shadelab::Image& image, const fs::path& path) {
+    std::vector<std::uint16_t> samples;
+    for (std::size_t i = 0; i < image.rgba.size(); ++i)
+        if (i % 4 != 3) samples.push_back(std::uint16_t(image.rgba[i] * 257));
+    png_image png{};
+    png.version = PNG_IMAGE_VERSION;
+    png.width = png_uint_32(image.width);
+    png.height = png_uint_32(image.height);
+    png.format = PNG_FORMAT_LINEAR_RGB;
+    ASSERT_TRUE(png_image_write_to_file(&png, path.c_str(), 0, samples.data(), 0, nullptr)) << png.message;
+}
+
+// compare reads the stored samples: a 16-bit file (with its gAMA chunk) and the 8-bit file of the same
+// picture are identical ("max delta 58" before: the 16-bit file was converted as linear light to sRGB).
+TEST_F(CliTest, CompareReadsTheStoredSamplesOfSixteenBitFiles) {
+    shadelab::Image picture(16, 8);
+    for (std::size_t i = 0; i < picture.rgba.size(); ++i) picture.rgba[i] = std::uint8_t(i * 37 % 256);
+    shadelab::writePng(picture, dir_ / "eight.png");
+    writeSixteenBitPng(picture, dir_ / "sixteen.png");
+    ASSERT_EQ(readFile(dir_ / "sixteen.png")[24], 16) << "IHDR's bit depth: the file is not 16-bit";
+    const Outcome r = shadelab({"compare", "sixteen.png", "eight.png"});
+    EXPECT_EQ(r.exitCode, 0) << describe(r);
+    EXPECT_TRUE(r.out.starts_with("pass: max delta 0,")) << r.out;
+}
+
+std::uint32_t crc32Of(std::string_view bytes) {
+    std::uint32_t crc = 0xffffffffu;
+    for (const char byte : bytes) {
+        crc ^= std::uint8_t(byte);
+        for (int bit = 0; bit < 8; ++bit) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
+    }
+    return ~crc;
+}
+
+std::string pngChunk(std::string_view type, std::string_view data) {
+    auto big32 = [](std::uint32_t v) {
+        return std::string{char(v >> 24), char(v >> 16 & 0xff), char(v >> 8 & 0xff), char(v & 0xff)};
+    };
+    const std::string body = std::string(type) + std::string(data);
+    return big32(std::uint32_t(data.size())) + body + big32(crc32Of(body));
+}
+
+// A 69-byte file whose (valid) header claims 32768x32768 pixels cost 4.2 GB and 16 s before "image too
+// large": the header is checked against what the file can hold before anything is allocated.
+TEST_F(CliTest, CompareRefusesAForgedHeaderBeforeAllocating) {
+    std::string ihdr = {0, 0, char(0x80), 0, 0, 0, char(0x80), 0, 8, 2, 0, 0, 0}; // 32768x32768, 8-bit RGB
+    const std::string idat = {0x78, 0x01, 0x01, 0x00, 0x00, char(0xff), char(0xff)};
+    const std::string forged = std::string("\x89PNG\r\n\x1a\n", 8) + pngChunk("IHDR", ihdr) +
+                               pngChunk("IDAT", idat) + pngChunk("IEND", "");
+    writeFile(dir_ / "forged.png", forged);
+    shadelab::writePng(filled(8, 8, 0), dir_ / "b.png");
+    const auto start = std::chrono::steady_clock::now();
+    const Outcome r = shadelab({"compare", "forged.png", "b.png"});
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
+    EXPECT_EQ(r.exitCode, 2) << describe(r);
+    EXPECT_NE(r.err.find("32768x32768"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("cannot hold"), std::string::npos) << r.err;
+}
+
+// --diff is an output: never one of the inputs (by inode, so no link or hard link either), never standard
+// output (which carries the summary); refused with exit 2 before anything is read.
+TEST_F(CliTest, CompareDiffNamingAnInputIsRefused) {
+    shadelab::writePng(filled(8, 8, 0), dir_ / "a.png");
+    shadelab::writePng(filled(8, 8, 200), dir_ / "b.png");
+    shadelab::writePng(filled(8, 8, 255), dir_ / "mask.png");
+    fs::create_symlink("b.png", dir_ / "link.png");
+    fs::create_hard_link(dir_ / "mask.png", dir_ / "hard.png");
+    const std::string before =
+        readFile(dir_ / "a.png") + readFile(dir_ / "b.png") + readFile(dir_ / "mask.png");
+    for (const char* diff : {"a.png", "b.png", "link.png", "hard.png"}) {
+        const Outcome r = shadelab({"compare", "a.png", "b.png", "--mask", "mask.png", "--diff", diff});
+        EXPECT_EQ(r.exitCode, 2) << diff << ": " << describe(r);
+        EXPECT_NE(r.err.find("--diff"), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find("is the input file"), std::string::npos) << r.err;
+        EXPECT_TRUE(r.out.empty()) << "refused before comparing: " << r.out;
+    }
+    EXPECT_EQ(readFile(dir_ / "a.png") + readFile(dir_ / "b.png") + readFile(dir_ / "mask.png"), before);
+    EXPECT_TRUE(fs::is_symlink(dir_ / "link.png"));
+    const Outcome dash = shadelab({"compare", "a.png", "b.png", "--diff", "-"});
+    EXPECT_EQ(dash.exitCode, 2) << describe(dash);
+    EXPECT_NE(dash.err.find("--diff -"), std::string::npos) << dash.err;
+    EXPECT_TRUE(dash.out.empty()) << "no PNG interleaved with the summary";
+}
+
+// Different sizes: both named, and the difference image still written (a pixel only one image has is a
+// full difference).
+TEST_F(CliTest, CompareOfDifferentSizesNamesBothAndWritesTheDiff) {
+    shadelab::writePng(filled(16, 16, 0), dir_ / "a.png");
+    shadelab::writePng(filled(16, 8, 0), dir_ / "b.png");
+    const Outcome r = shadelab({"compare", "a.png", "b.png", "--diff", "d.png"});
+    EXPECT_EQ(r.exitCode, 1) << describe(r);
+    EXPECT_NE(r.out.find("actual 16x16, expected 16x8"), std::string::npos) << r.out;
+    const std::optional<PngSize> size = pngSize(readFile(dir_ / "d.png"));
+    ASSERT_TRUE(size) << "no difference image";
+    EXPECT_EQ(size->width, 16u);
+    EXPECT_EQ(size->height, 16u);
+}
+
+// A name with a newline or an escape sequence is escaped in every message, so it cannot forge a line such
+// as "pass: …" on standard error or recolour a terminal.
+TEST_F(CliTest, ControlBytesInArgumentsAreEscapedInEveryMessage) {
+    const std::string evil = "x\npass: max delta 0\x1b[0m";
+    writeFile(dir_ / (evil + ".png"), "not a PNG");
+    shadelab::writePng(filled(8, 8, 0), dir_ / "b.png");
+    const std::vector<std::vector<std::string>> runs = {
+        {"compare", evil + ".png", "b.png"},
+        {"compare", "b.png", evil + "-missing.png"},
+        {"render", "--backend", evil, "--out", "o.png"},
+        {"render", "--api", evil, "--out", "o.png"},
+        {"render", "--egl-device", evil, "--out", "o.png"},
+        {"report", "--levels", evil, "--out", "R"},
+    };
+    for (const std::vector<std::string>& args : runs) {
+        const Outcome r = shadelab(args);
+        EXPECT_EQ(r.exitCode, 2) << args[0] << " " << args[1] << ": " << describe(r);
+        EXPECT_EQ(r.err.find("\npass:"), std::string::npos) << "a forged line: " << r.err;
+        EXPECT_EQ(r.err.find('\x1b'), std::string::npos) << "a raw escape: " << r.err;
+        EXPECT_NE(r.err.find("pass: max delta 0"), std::string::npos) << "the name, quoted back: " << r.err;
+    }
+}
+
+// A split view's levels go through the work limit as --subdivisions does: 64 spheres at level 10 on two
+// sides drew 2 × 268 M triangles (35 s, exit 0) although --subdivisions 10 alone is refused.
+TEST_F(CliTest, SplitViewLevelsGoThroughTheWorkLimit) {
+    std::string objects;
+    for (int i = 0; i < 64; ++i)
+        objects += std::string(i ? ", " : "") + R"({"center": [)" + std::to_string(i % 8 - 4) + ", " +
+                   std::to_string(i / 8 - 4) + R"(, 0], "radius": 0.4, "subdivisions": 0})";
+    writeFile(dir_ / "many.json", R"({"image": {"width": 64, "height": 64}, "objects": [)" + objects + "]}");
+    const auto start = std::chrono::steady_clock::now();
+    const Outcome r =
+        shadelab({"render", "many.json", "--view", "split:phong@10,gouraud@10", "--out", "s.png"});
+    EXPECT_EQ(r.exitCode, 2) << describe(r);
+    EXPECT_NE(r.err.find("once per side of the split"), std::string::npos) << r.err;
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(10)) << "refused before drawing";
+    EXPECT_FALSE(fs::exists(dir_ / "s.png"));
 }
 
 // Issue 15: reference takes render's context flags (checked, no effect), so one command line switches.

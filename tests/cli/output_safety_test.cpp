@@ -218,6 +218,76 @@ TEST_P(OutputSafety, SymlinkIsFollowedAndItsTargetReplaced) {
     EXPECT_FALSE(hasTempFile(dir_));
 }
 
+// /dev/stdout and its kin are the open descriptor, written through as "-" is: the file behind it is never
+// replaced (a log appended to with >> kept only the PNG), and a pipe behind it gets the PNG.
+TEST_P(OutputSafety, DescriptorPathsWriteThroughTheOpenDescriptor) {
+    for (const char* spelling : {"/dev/stdout", "/dev/fd/1", "/proc/self/fd/1"}) {
+        const fs::path log = make("log.txt", "H\n");
+        RunOptions options;
+        options.stdoutPath = log;
+        options.stdoutAppends = true;
+        const Outcome r = run({"render", "--size", "16x16", "--out", spelling}, options);
+        EXPECT_EQ(r.exitCode, 0) << spelling << ": " << describe(r);
+        const std::string bytes = readFile(log);
+        EXPECT_TRUE(bytes.starts_with("H\n")) << spelling << ": the line before the PNG was lost";
+        EXPECT_TRUE(isCompletePng(bytes.substr(std::min<std::size_t>(2, bytes.size()))))
+            << spelling << ": " << bytes.size() << " bytes";
+
+        const Outcome piped = run({"render", "--size", "16x16", "--out", spelling});
+        EXPECT_EQ(piped.exitCode, 0) << spelling << " into a pipe: " << describe(piped);
+        EXPECT_TRUE(isCompletePng(piped.out)) << spelling << " into a pipe";
+    }
+    const Outcome closed = run({"render", "--size", "16x16", "--out", "/dev/fd/200"});
+    EXPECT_EQ(closed.exitCode, 2) << describe(closed);
+    EXPECT_NE(closed.err.find("descriptor 200, which is not open"), std::string::npos) << closed.err;
+    EXPECT_FALSE(hasTempFile(dir_));
+}
+
+// fs.protected_symlinks: a link in a sticky world-writable folder that belongs to neither the caller nor the
+// folder's owner is not followed (root's render replaced the file a planted link in /tmp pointed to).
+TEST_P(OutputSafety, PlantedLinkInAStickyFolderIsRefused) {
+    ASSERT_EQ(::chmod(dir_.c_str(), 01777), 0) << std::strerror(errno);
+    const fs::path victim = make("victim.txt", kPrecious);
+    ASSERT_EQ(::symlink("victim.txt", (dir_ / "shot.png").c_str()), 0);
+    constexpr uid_t kStranger = 4242; // neither the caller nor the folder's owner
+    ASSERT_EQ(::lchown((dir_ / "shot.png").c_str(), kStranger, kStranger), 0) << std::strerror(errno);
+    const Outcome r = run({"render", "--size", "16x16", "--out", "shot.png"});
+    EXPECT_EQ(r.exitCode, 2) << describe(r);
+    EXPECT_NE(r.err.find("fs.protected_symlinks"), std::string::npos) << r.err;
+    EXPECT_EQ(readFile(victim), kPrecious);
+    EXPECT_TRUE(fs::is_symlink(dir_ / "shot.png"));
+
+    // The caller's own link there is followed, as the kernel follows it.
+    ASSERT_EQ(::symlink("victim.txt", (dir_ / "mine.png").c_str()), 0);
+    own(dir_ / "mine.png");
+    const Outcome mine = run({"render", "--size", "16x16", "--out", "mine.png"});
+    EXPECT_EQ(mine.exitCode, 0) << describe(mine);
+    EXPECT_TRUE(isCompletePng(readFile(victim)));
+    EXPECT_FALSE(hasTempFile(dir_));
+}
+
+// A file the caller may not write, and a folder where it may not create the temporary file, are refused
+// before any work (a 0444 file was replaced by rename, exit 0).
+TEST_P(OutputSafety, UnwritableFileAndFolderAreRefusedUpFront) {
+    if (!nobody()) GTEST_SKIP() << "root may write any file and folder; the nobody case tests this";
+    const fs::path readOnly = make("ro.png", kPrecious);
+    ASSERT_EQ(::chmod(readOnly.c_str(), 0444), 0);
+    const Outcome r = run({"render", "--size", "16x16", "--out", "ro.png"});
+    EXPECT_EQ(r.exitCode, 2) << describe(r);
+    EXPECT_NE(r.err.find("you may not write it (mode 0444"), std::string::npos) << r.err;
+    EXPECT_EQ(readFile(readOnly), kPrecious);
+
+    fs::create_directory(dir_ / "locked");
+    own(dir_ / "locked");
+    ASSERT_EQ(::chmod((dir_ / "locked").c_str(), 0555), 0);
+    for (const char* command : {"render", "reference"}) {
+        const Outcome f = run({command, "--size", "16x16", "--out", "locked/x.png"});
+        EXPECT_EQ(f.exitCode, 2) << command << ": " << describe(f);
+        EXPECT_NE(f.err.find("cannot create files in the folder"), std::string::npos) << f.err;
+    }
+    EXPECT_TRUE(fs::is_empty(dir_ / "locked"));
+}
+
 TEST_P(OutputSafety, FolderBlockDeviceAndSocketAreRefused) {
     fs::create_directory(dir_ / "folder.png");
     own(dir_ / "folder.png");
@@ -362,6 +432,21 @@ TEST_F(ResourceLimits, RenderUnderASmallAddressSpaceIsRefusedUpFront) {
     EXPECT_EQ(r.signal, 0) << describe(r);
     EXPECT_NE(r.err.find("needs about"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("the limit (ulimit -v) is 488 MiB"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir_ / "x.png"));
+}
+
+// `reference` gets render's estimate before the work (a bare std::bad_alloc under ulimit -v before).
+TEST_F(ResourceLimits, ReferenceUnderASmallAddressSpaceIsRefusedUpFront) {
+    SKIP_UNDER_ASAN();
+    RunOptions options;
+    // 8192² needs about 27 bytes a pixel: 1.8 GB. (Far lower limits stop the process before main: the
+    // GL stack's libraries are loaded at start-up, and LLVM's initializers abort below about 200 MB.)
+    options.addressSpace = 900'000 * 1024;
+    const Outcome r = runWith({"reference", "--size", "8192x8192", "--out", "x.png"}, dir_, options);
+    EXPECT_EQ(r.exitCode, 1) << describe(r);
+    EXPECT_EQ(r.signal, 0) << describe(r);
+    EXPECT_NE(r.err.find("the reference of 8192x8192 needs about"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("ulimit -v"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(dir_ / "x.png"));
 }
 

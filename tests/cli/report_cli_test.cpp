@@ -159,6 +159,23 @@ TEST_F(ReportCli, TruncatedPlotKeepsTheEarlierSet) {
     expectOldSet(dir_ / "R");
 }
 
+// --no-plot writes no report.gp or report.png: the earlier run's are removed with the renames, so the folder
+// holds one run's set (they were left beside the new data with nothing said).
+TEST_F(ReportCli, NoPlotRemovesTheEarlierPlot) {
+    writeFile(dir_ / "s.json", kTinyScene);
+    writeOldSet(dir_ / "R");
+    std::vector<std::string> args = quickReport("s.json", "R");
+    args.push_back("--no-plot");
+    const Outcome r = runShadelab(args, dir_);
+    ASSERT_EQ(r.exitCode, 0) << describe(r);
+    EXPECT_NE(readFile(dir_ / "R" / "report.csv"), kPrecious);
+    EXPECT_NE(readFile(dir_ / "R" / "report.json"), kPrecious);
+    EXPECT_FALSE(fs::exists(dir_ / "R" / "report.gp"));
+    EXPECT_FALSE(fs::exists(dir_ / "R" / "report.png"));
+    EXPECT_NE(r.out.find("removed the earlier run's report.png"), std::string::npos) << r.out;
+    EXPECT_TRUE(noTemp(dir_ / "R"));
+}
+
 // A full disk: the report folder on a 512 KiB tmpfs in a private mount namespace, filled up but for 24
 // KiB. Every write must fail cleanly: exit 1 naming the file, the earlier set whole, no temporary file.
 TEST_F(ReportCli, FullDiskKeepsTheEarlierSet) {

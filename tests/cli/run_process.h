@@ -157,6 +157,7 @@ struct RunOptions {
     gid_t group = 65534;                  // nogroup
     std::optional<std::string> stdinText; // written to its standard input (small); otherwise /dev/null
     std::optional<std::filesystem::path> stdoutPath; // its standard output goes there; otherwise captured
+    bool stdoutAppends = false;                      // stdoutPath opened O_APPEND, as `>>` does
     std::function<bool()> signalWhen; // polled every 2 ms; when it is first true, `signal` is sent
     int signal = 0;
     std::chrono::seconds timeout{kTimeoutSeconds}; // then it is killed and the test fails
@@ -209,7 +210,9 @@ inline Outcome runWith(const std::vector<std::string>& args, const std::filesyst
             ::_exit(127);
         };
         const int in = options.stdinText ? inPipe[0] : ::open("/dev/null", O_RDONLY);
-        const int out = options.stdoutPath ? ::open(stdoutPath.c_str(), O_WRONLY) : outPipe[1];
+        const int out = options.stdoutPath
+                            ? ::open(stdoutPath.c_str(), O_WRONLY | (options.stdoutAppends ? O_APPEND : 0))
+                            : outPipe[1];
         if (in < 0 || out < 0 || ::dup2(in, 0) < 0 || ::dup2(out, 1) < 0 || ::dup2(errPipe[1], 2) < 0)
             fail(StartFailure::Redirect);
         if (options.user &&
@@ -217,6 +220,10 @@ inline Outcome runWith(const std::vector<std::string>& args, const std::filesyst
              ::setresuid(*options.user, *options.user, *options.user) != 0))
             fail(StartFailure::User);
         if (::chdir(folder.c_str()) != 0) fail(StartFailure::Folder);
+        // The signal the test sends acts as it would from a terminal, whatever the test runner inherited:
+        // a shell's background job (`cmd &`) starts with SIGINT ignored, and shadelab keeps an ignored
+        // signal ignored (as nohup asks).
+        if (options.signal != 0) ::signal(options.signal, SIG_DFL);
         const rlimit limit{options.addressSpace, options.addressSpace};
         if (options.addressSpace != RLIM_INFINITY && ::setrlimit(RLIMIT_AS, &limit) != 0)
             fail(StartFailure::Limit);

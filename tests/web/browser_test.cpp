@@ -6,13 +6,22 @@
 // A session is a batch of requests run by one browser (driver.py session); each test builds one, runs it,
 // and reads the answers. Without the browser build or Chromium the tests skip with the reason, except in
 // CI (CI set), where they fail.
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <signal.h>
+#include <sys/socket.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -736,6 +745,92 @@ TEST_F(Browser, WithoutWebGl2ThePageSaysSo) {
     if (!session.run(dir_)) return;
     EXPECT_NE(session.answer(open).at("failed").get<std::string>().find("no WebGL 2"), std::string::npos)
         << session.answer(open);
+}
+
+// A % in ?scene= that is no escape: the page starts and says it cannot fetch that scene (a URIError stopped
+// it with nothing shown).
+TEST_F(Browser, APercentThatIsNoEscapeInTheSceneUrlIsAMessage) {
+    Session session;
+    const std::size_t open = session.open("?scene=scenes/50%off.json");
+    const std::size_t message = session.message();
+    if (!session.run(dir_)) return;
+    EXPECT_EQ(session.answer(open).at("failed"), "") << session.answer(open);
+    const std::string shown = session.answer(message).at("message").get<std::string>();
+    EXPECT_NE(shown.find("50%off.json: cannot fetch the scene (HTTP 404)"), std::string::npos) << shown;
+}
+
+// A free TCP port on 127.0.0.1 (bound and released; the server takes it right after).
+int freePort() {
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    socklen_t size = sizeof address;
+    if (::bind(fd, reinterpret_cast<sockaddr*>(&address), size) != 0 ||
+        ::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &size) != 0) {
+        ::close(fd);
+        return -1;
+    }
+    ::close(fd);
+    return ntohs(address.sin_port);
+}
+
+// The status code of GET `target` from 127.0.0.1:`port` (HTTP/1.0), or -1 when nothing answers.
+int httpStatus(int port, const std::string& target) {
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    const timeval limit{5, 0}; // a server that accepts and never answers fails here, not at ctest's timeout
+    ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &limit, sizeof limit);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    address.sin_port = htons(std::uint16_t(port));
+    std::string reply;
+    if (::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0) {
+        const std::string request = "GET " + target + " HTTP/1.0\r\nHost: 127.0.0.1\r\n\r\n";
+        if (::write(fd, request.data(), request.size()) == ssize_t(request.size())) {
+            char buffer[256];
+            const ssize_t n = ::read(fd, buffer, sizeof buffer);
+            if (n > 0) reply.assign(buffer, std::size_t(n));
+        }
+    }
+    ::close(fd);
+    return reply.starts_with("HTTP/1.") && reply.size() > 12 ? std::stoi(reply.substr(9, 3)) : -1;
+}
+
+// scripts/web.sh serve serves the page and nothing else: no build files, no listings, no links out of the
+// page's folder; a port outside 1..65535 is refused (70000 bound 4464 and printed the wrong URL).
+TEST_F(Browser, ServeGivesThePageAndNothingElse) {
+    RunOptions options;
+    options.program = SHADELAB_WEB_SH;
+    options.timeout = std::chrono::seconds(30);
+    for (const char* port : {"70000", "0", "http"}) {
+        const Outcome bad = runWith({"serve", port}, dir_, options);
+        EXPECT_EQ(bad.exitCode, 2) << port << ": " << describe(bad);
+        EXPECT_NE(bad.err.find("1..65535"), std::string::npos) << bad.err;
+    }
+
+    const int port = freePort();
+    ASSERT_GT(port, 0);
+    const pid_t server = ::fork();
+    if (server == 0) {
+        ::execl(SHADELAB_WEB_SH, SHADELAB_WEB_SH, "serve", std::to_string(port).c_str(),
+                static_cast<char*>(nullptr));
+        ::_exit(127);
+    }
+    ASSERT_GT(server, 0);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    int index = -1;
+    while ((index = httpStatus(port, "/")) < 0 && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    EXPECT_EQ(index, 200) << "the page's index.html (the server did not answer within 20 s if -1)";
+    EXPECT_EQ(httpStatus(port, "/shadelab.wasm"), 200);
+    EXPECT_EQ(httpStatus(port, "/scenes/index.json"), 200);
+    for (const char* outside : {"/CMakeCache.txt", "/../CMakeCache.txt", "/generated/",
+                                "/header-only/glm/glm.hpp", "/scenes/", "/%2e%2e/CMakeCache.txt"})
+        EXPECT_EQ(httpStatus(port, outside), 404) << outside;
+    ::kill(server, SIGTERM);
+    int status = 0;
+    ::waitpid(server, &status, 0);
 }
 
 // scripts/web.sh render: the browser's `shadelab render` (a PNG of the scene's size; exit 2 with the CLI's

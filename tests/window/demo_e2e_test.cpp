@@ -6,6 +6,7 @@
 // Esc must exit 0 with zero KHR_debug messages. Without Xvfb or xdotool the tests skip with the
 // reason, except in CI (CI set), where that fails.
 #include <sys/resource.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <cctype>
@@ -219,9 +220,11 @@ protected:
         return path;
     }
 
-    DemoProcess& startDemo(const std::string& name, std::vector<std::string> args) {
+    DemoProcess& startDemo(const std::string& name, std::vector<std::string> args,
+                           const std::vector<std::string>& environment = {}) {
         const auto start = Clock::now();
-        demos_.push_back(std::make_unique<DemoProcess>(tools_, *server_, scratch(), name, std::move(args)));
+        demos_.push_back(
+            std::make_unique<DemoProcess>(tools_, *server_, scratch(), name, std::move(args), environment));
         demos_.back()->window().focus();
         std::printf("%s: window %s up and focused in %.0f ms\n", name.c_str(),
                     demos_.back()->window().id().c_str(), msSince(start));
@@ -646,6 +649,69 @@ TEST_F(DemoWindow, ScreenshotTakesTheNextFreeNumberAndNeverOverwrites) {
     int files = 0;
     for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++files;
     EXPECT_EQ(files, 4) << "temporaries left in " << dir;
+    expectCleanQuit(demo);
+}
+
+// S never opens or replaces what is already in the screenshot folder. Its temporaries had predictable names
+// (.shadelab-shot-<pid>.json/.png) and were written through whatever was there: a planted link made S
+// replace the file it pointed to, a planted FIFO hung the demo (Esc did nothing). Links and a FIFO planted
+// at the old temporaries' names and at the next shadelab-NNN names must all be left as they are.
+TEST_F(DemoWindow, ScreenshotOpensNothingPlantedInTheFolder) {
+    const fs::path dir = scratch() / "planted-screenshots";
+    fs::create_directories(dir);
+    const fs::path victim = scratch() / "victim.txt";
+    std::ofstream(victim) << "precious";
+    DemoProcess& demo = startDemo("planted", {"--size", "320x240", "--hide-panel", "--gl-debug"});
+    const std::string shot = ".shadelab-shot-" + std::to_string(demo.pid());
+    fs::create_symlink(victim, dir / (shot + ".json"));
+    ASSERT_EQ(::mkfifo((dir / (shot + ".png")).c_str(), 0666), 0) << std::strerror(errno);
+    fs::create_symlink(victim, dir / "shadelab-001.png");
+    ASSERT_EQ(::mkfifo((dir / "shadelab-002.json").c_str(), 0666), 0) << std::strerror(errno);
+    demo.window().key("s");
+    EXPECT_TRUE(pollUntil([&] { return fs::exists(dir / "shadelab-003.png"); }))
+        << "S saved no shadelab-003.png within " << kWaitText << ":\n"
+        << demo.err();
+    EXPECT_TRUE(fs::exists(dir / "shadelab-003.json"));
+    EXPECT_EQ(readText(victim), "precious") << "S wrote through a planted link";
+    EXPECT_TRUE(fs::is_symlink(dir / (shot + ".json")));
+    EXPECT_TRUE(fs::is_symlink(dir / "shadelab-001.png"));
+    EXPECT_TRUE(fs::is_fifo(dir / (shot + ".png")));
+    EXPECT_TRUE(fs::is_fifo(dir / "shadelab-002.json"));
+    int files = 0;
+    for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++files;
+    EXPECT_EQ(files, 6) << "temporaries left in " << dir;
+    expectCleanQuit(demo);
+}
+
+// On a file system without hard links (link() fails with EPERM: vfat, some FUSE file systems) S claims the
+// next free name exclusively and renames into it ("Operation not permitted", nothing saved, before).
+TEST_F(DemoWindow, ScreenshotWithoutHardLinksClaimsTheNextFreeName) {
+    const fs::path dir = scratch() / "no-links-screenshots";
+    fs::create_directories(dir);
+    const std::string earlier = "an earlier launch's screenshot";
+    std::ofstream(dir / "shadelab-001.png") << earlier;
+    std::ofstream(dir / "shadelab-001.json") << earlier;
+    // The sanitizers' runtime wants to be first among the libraries; the preloaded one is not instrumented.
+    const char* asan = std::getenv("ASAN_OPTIONS");
+    DemoProcess& demo = startDemo("no-links", {"--size", "320x240", "--hide-panel", "--gl-debug"},
+                                  {std::string("LD_PRELOAD=") + SHADELAB_NO_HARD_LINKS,
+                                   "ASAN_OPTIONS=" + std::string(asan ? asan : "") +
+                                       (asan && *asan ? ":" : "") + "verify_asan_link_order=0"});
+    demo.window().key("s");
+    // Without links the name is held by an empty file for the moment before the rename.
+    ASSERT_TRUE(pollUntil([&] {
+        std::error_code error;
+        return fs::file_size(dir / "shadelab-002.png", error) > 0 && !error;
+    })) << "S saved no shadelab-002.png within "
+        << kWaitText << ":\n"
+        << demo.err();
+    EXPECT_TRUE(fs::exists(dir / "shadelab-002.json"));
+    EXPECT_EQ(readText(dir / "shadelab-001.png"), earlier);
+    EXPECT_EQ(readText(dir / "shadelab-001.json"), earlier);
+    EXPECT_EQ(readPng(dir / "shadelab-002.png").width, 320);
+    int files = 0;
+    for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++files;
+    EXPECT_EQ(files, 4) << "temporaries or placeholders left in " << dir;
     expectCleanQuit(demo);
 }
 

@@ -1,19 +1,29 @@
 #include "window/demo_process.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <stdexcept>
 
 namespace shadelab::window_test {
 
 DemoProcess::DemoProcess(const XTools& tools, const XServer& server, const fs::path& scratch,
-                         const std::string& name, std::vector<std::string> args)
+                         const std::string& name, std::vector<std::string> args,
+                         const std::vector<std::string>& environment)
     : screenshotDir_(scratch / (name + "-screenshots")) {
     fs::create_directories(screenshotDir_);
     std::vector<std::string> argv = {SHADELAB_EXE};
     argv.insert(argv.end(), args.begin(), args.end());
     argv.insert(argv.end(), {"--screenshot-dir", screenshotDir_.string()});
+    std::vector<std::string> env;
+    for (const std::string& entry : server.environment()) {
+        const std::string prefix = entry.substr(0, entry.find('=') + 1);
+        if (std::none_of(environment.begin(), environment.end(),
+                         [&](const std::string& added) { return added.starts_with(prefix); }))
+            env.push_back(entry);
+    }
+    env.insert(env.end(), environment.begin(), environment.end());
     child_ = std::make_unique<Child>(
-        SpawnOptions{argv, server.environment(), scratch / (name + ".out"), scratch / (name + ".err")});
+        SpawnOptions{argv, env, scratch / (name + ".out"), scratch / (name + ".err")});
     const auto diedBecause = [this]() -> std::string {
         if (child_->running()) return "";
         return "the demo exited (" + child_->waitExit(Seconds(0))->describe() + ")\n" + child_->logs();

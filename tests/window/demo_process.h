@@ -15,14 +15,16 @@ namespace shadelab::window_test {
 
 class DemoProcess {
 public:
-    // Starts the demo and waits (bounded) for its window; `name` labels its log files.
+    // Starts the demo and waits (bounded) for its window; `name` labels its log files. `environment`
+    // ("NAME=value") is added to the X server's, replacing any inherited NAME.
     DemoProcess(const XTools& tools, const XServer& server, const fs::path& scratch, const std::string& name,
-                std::vector<std::string> args);
+                std::vector<std::string> args, const std::vector<std::string>& environment = {});
 
     const XWindow& window() const { return *window_; }
     // Presses S and waits (bounded) for the next shadelab-NNN.png; returns the path without extension,
     // where NNN.json (written first) is the exact state the PNG shows.
     fs::path screenshot();
+    const fs::path& screenshotDir() const { return screenshotDir_; }
     // Presses Escape and waits (bounded) for the exit; throws if it does not exit.
     ExitStatus quit();
     std::string err() const { return child_->err(); }

@@ -27,6 +27,7 @@
 #include "shadelab/gl/program.h"
 #include "shadelab/gl/render_target.h"
 #include "shadelab/gl/renderer.h"
+#include "shadelab/text.h"
 
 namespace shadelab::app {
 namespace {
@@ -263,14 +264,39 @@ void writeJson(const Collector& c, const std::vector<Ratio>& rs, const BenchOpti
     });
 }
 
+// Google Benchmark would report a bad expression, run nothing and exit 0. The regex engines compile
+// groups by recursion, a frame or more a level (20,000 nested groups overflowed the stack): the nesting and
+// length are bounded before any engine sees the expression.
+void checkFilter(const std::string& filter) {
+    constexpr std::size_t kMaxLength = 1000;
+    constexpr int kMaxNesting = 32;
+    auto refuse = [&](const std::string& why) {
+        throw InputError("--filter: " + why + ", got " + quotedValue(filter));
+    };
+    if (filter.size() > kMaxLength)
+        refuse("at most " + std::to_string(kMaxLength) + " characters (" + std::to_string(filter.size()) +
+               ")");
+    int depth = 0, deepest = 0;
+    for (std::size_t i = 0; i < filter.size(); ++i) {
+        if (filter[i] == '\\')
+            ++i;
+        else if (filter[i] == '(')
+            deepest = std::max(deepest, ++depth);
+        else if (filter[i] == ')')
+            --depth;
+    }
+    if (deepest > kMaxNesting) refuse("groups nested at most " + std::to_string(kMaxNesting) + " deep");
+    try {
+        (void)std::regex(filter, std::regex::extended);
+    } catch (const std::regex_error& e) {
+        refuse(std::string("not a regular expression (") + e.what() + ")");
+    }
+}
+
 } // namespace
 
 int runBench(const BenchOptions& options) {
-    try { // Google Benchmark would report a bad expression, run nothing and exit 0
-        (void)std::regex(options.filter, std::regex::extended);
-    } catch (const std::regex_error& e) {
-        throw InputError("--filter: not a regular expression: \"" + options.filter + "\" (" + e.what() + ")");
-    }
+    checkFilter(options.filter);
     // Compile times must be compiles: Mesa's on-disk shader cache would turn repeats into look-ups.
     ::setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
     Gpu gpu(options);

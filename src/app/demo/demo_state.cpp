@@ -8,10 +8,21 @@
 #include <cstdio>
 
 #include "app/demo/demo_format.h"
+#include "shadelab/errors.h"
 #include "shadelab/subdivision.h"
 
 namespace shadelab::app {
 namespace {
+
+// "" or why `scene` asks for more than the scene limits allow (checkSceneLimits' message).
+std::string overLimits(const Scene& scene) {
+    try {
+        checkSceneLimits(scene);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
 
 Light pointLight(glm::dvec3 position, glm::dvec3 color) {
     Light light;
@@ -128,11 +139,18 @@ bool DemoState::apply(Command command) {
         if (scene_.view.kind == ViewKind::Split) {
             scene_.view = View{};
         } else { // the mode (which 1-5 then change) beside exact; beside exact itself, Gouraud and Phong
-            scene_.view = View{};
-            scene_.view.kind = ViewKind::Split;
+            View split;
+            split.kind = ViewKind::Split;
             const bool exact = scene_.shading == ShadingMode::Exact;
-            scene_.view.left.shading = exact ? ShadingMode::Gouraud : scene_.shading;
-            scene_.view.right.shading = exact ? ShadingMode::Phong : ShadingMode::Exact;
+            split.left.shading = exact ? ShadingMode::Gouraud : scene_.shading;
+            split.right.shading = exact ? ShadingMode::Phong : ShadingMode::Exact;
+            Scene candidate = drawn(); // a split draws every object twice: within the limits?
+            candidate.view = split;
+            if (const std::string why = overLimits(candidate); !why.empty()) {
+                levelRefusal = "split view refused: " + why;
+                break;
+            }
+            scene_.view = split;
         }
         break;
     case Command::ToggleLighting:
@@ -314,10 +332,19 @@ std::optional<ProbeReport> DemoState::probe() const {
 }
 
 // Each object one level up or down from the level it is drawn at ("auto" resolved first).
+// A change that would draw more than the scene limits allow (README "Limits and memory": the triangles of
+// every object, of both sides of a split) is refused, and levelRefusal says why.
 void DemoState::changeLevels(int delta) {
     const Scene scene = drawn();
-    for (SceneObject& o : scene_.objects)
+    Scene changed = scene_;
+    for (SceneObject& o : changed.objects)
         o.subdivisions = std::clamp(subdivisionLevel(scene, o) + delta, 0, kMaxSubdivisions);
+    if (const std::string why = overLimits(changed); !why.empty()) {
+        levelRefusal = "level " + std::to_string(level() + delta) + " refused: " + why;
+        return;
+    }
+    levelRefusal.clear();
+    scene_.objects = std::move(changed.objects);
 }
 
 // β ≈ 4α keeps the highlight's size: the half-vector's angle is half the reflection's (DESIGN §3).

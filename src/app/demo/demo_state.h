@@ -130,6 +130,8 @@ public:
     // Applies a command; returns false for the commands the window carries out itself (screenshot, quit).
     bool apply(Command command);
 
+    // Why the last + or - (the page's level slider presses them) changed nothing, or "".
+    std::string levelRefusal;
     bool matchHighlight = true; // B keeps the highlight size: β = 4α going to Blinn-Phong, α = β/4 back
     bool showHelp = false;
     bool showPanel = true;

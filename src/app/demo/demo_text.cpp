@@ -39,7 +39,8 @@ std::string statusText(const DemoState& state) {
            (state.orthographic() ? "orthographic" : "perspective") + ", " +
            (scene.vertexNormals == VertexNormals::Averaged ? "averaged" : "exact") +
            " normals\nmaterial: " + state.materialName() + ", lights: " + state.lightsName() +
-           (state.viewReport.empty() ? "" : "\n" + state.viewReport);
+           (state.viewReport.empty() ? "" : "\n" + state.viewReport) +
+           (state.levelRefusal.empty() ? "" : "\n" + state.levelRefusal);
 }
 
 double probeError255(const ProbeReport& probe) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <regex>
+#include <string_view>
 
 #include "shadelab/errors.h"
 #include "shadelab/scene_values.h"
@@ -42,12 +43,39 @@ int parseLevel(const std::string& text) {
     return level;
 }
 
-// A decimal number of pixels: an optional sign, digits, an optional fraction and exponent. Not hex (0x10),
-// not inf or nan, not empty, nothing after the number. Its range is the scene's (checkTolerancePx), so a
-// negative number is refused there, as tolerance_px's is.
+// A decimal number: an optional sign, digits, an optional fraction and exponent. Not hex (0x10), not inf or
+// nan, not empty, nothing after the number. Scanned by hand: std::regex matches `[0-9]+` by recursion, one
+// frame a character, and a 50,000-digit argument overflowed the stack.
+bool isDecimal(std::string_view text) {
+    std::size_t i = 0;
+    auto sign = [&] {
+        if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
+    };
+    auto digits = [&] {
+        const std::size_t start = i;
+        while (i < text.size() && text[i] >= '0' && text[i] <= '9') ++i;
+        return i - start;
+    };
+    sign();
+    const std::size_t whole = digits();
+    std::size_t fraction = 0;
+    if (i < text.size() && text[i] == '.') {
+        ++i;
+        fraction = digits();
+    }
+    if (whole == 0 && fraction == 0) return false;
+    if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+        ++i;
+        sign();
+        if (digits() == 0) return false;
+    }
+    return i == text.size();
+}
+
+// A decimal number of pixels. Its range is the scene's (checkTolerancePx), so a negative number is refused
+// there, as tolerance_px's is.
 double parseTolerance(const std::string& text) {
-    static const std::regex kDecimal(R"([-+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?)");
-    if (!std::regex_match(text, kDecimal))
+    if (!isDecimal(text))
         throw InputError("--tolerance-px: expected a positive decimal number of pixels such as 0.5, got " +
                          quotedValue(printable(text)));
     const double value = std::strtod(text.c_str(), nullptr);

@@ -34,8 +34,20 @@ double renderBytes(const Scene& scene) {
                      triangles = double(sphereTriangleCount(level));
         // Smooth: position + normal floats and 32-bit indices; flat: three such vertices per triangle.
         bytes += scene.shading == ShadingMode::Flat ? triangles * 3 * 24 : vertices * 24 + triangles * 12;
+        // The overlay's lines (overlay.h: two 24-byte vertices a segment), on the CPU and in their buffer:
+        // every edge (1.5 per triangle), and with normals one segment per face and per vertex.
+        double segments = 0;
+        if (scene.overlay != Overlay::None) segments += 1.5 * triangles;
+        if (scene.overlay == Overlay::Normals) segments += triangles + vertices;
+        bytes += segments * 2 * 24 * 2;
     }
     return bytes;
+}
+
+double referenceBytes(const Scene& scene) {
+    // The process without GL, then per pixel the float colour (16 bytes), the object id (4), the 8-bit
+    // image (4) and the PNG's RGB rows (3).
+    return 64.0 * 1024 * 1024 + double(scene.width) * scene.height * (16 + 4 + 4 + 3);
 }
 
 void checkMemoryBudget(std::string_view what, double needBytes, std::string_view sizeField) {

@@ -36,9 +36,11 @@ void parseLevels(std::string_view text, ReportOptions& options) {
     const std::string s(text);
     std::smatch m;
     const std::string accepted = "expected N or A..B with 0 <= A <= B <= " + std::to_string(kMaxSubdivisions);
-    if (!std::regex_match(s, m, kLevels)) throw InputError("--levels: " + accepted + ", got \"" + s + "\"");
+    if (!std::regex_match(s, m, kLevels))
+        throw InputError("--levels: " + accepted + ", got " + quotedValue(s));
     const int lo = std::stoi(m[1]), hi = m[2].matched ? std::stoi(m[2]) : lo;
-    if (lo > hi || hi > kMaxSubdivisions) throw InputError("--levels: " + accepted + ", got \"" + s + "\"");
+    if (lo > hi || hi > kMaxSubdivisions)
+        throw InputError("--levels: " + accepted + ", got " + quotedValue(s));
     options.minLevel = lo;
     options.maxLevel = hi;
 }
@@ -178,13 +180,17 @@ int runReport(const ReportOptions& options) {
         files.emplace_back("report.gp", script);
         files.emplace_back("report.png", runGnuplot(script));
     }
-    writeReportSet(options.outDir, files);
+    const std::vector<std::string> removed = writeReportSet(
+        options.outDir, files,
+        options.plot ? std::vector<std::string>{} : std::vector<std::string>{"report.gp", "report.png"});
     printTable(rows);
     const std::string dir = printable(options.outDir.string());
     std::printf("wrote %s in %s\n",
                 options.plot ? "report.csv, report.json, report.gp and report.png"
                              : "report.csv and report.json",
                 dir.c_str());
+    for (const std::string& name : removed)
+        std::printf("removed the earlier run's %s (this run has no plot)\n", name.c_str());
     return kExitOk;
 }
 

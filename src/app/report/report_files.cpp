@@ -3,9 +3,13 @@
 #include "app/report/report_files.h"
 
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <variant>
+
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
@@ -137,13 +141,36 @@ void writeAll(PendingOutput& output, const std::string& text) {
 
 // The files of one report, written as a set: each to a temporary file, all flushed to disk, then renamed
 // one after the other with signals held back; any failure before the renames leaves the old set whole.
-void writeReportSet(const fs::path& dir, const std::vector<std::pair<std::string, std::string>>& files) {
+std::vector<std::string> writeReportSet(const fs::path& dir,
+                                        const std::vector<std::pair<std::string, std::string>>& files,
+                                        const std::vector<std::string>& stale) {
     std::vector<PendingOutput> outputs;
     for (const auto& [name, text] : files) {
         outputs.emplace_back(resolveOutput(dir / name, "--out"), name);
         writeAll(outputs.back(), text);
     }
-    commitAll(outputs);
+    // Only a file or a link (the link itself, never what it points to) is removed: anything else at such a
+    // name was never a report's.
+    std::vector<std::string> removed;
+    sigset_t held, previous;
+    sigemptyset(&held);
+    for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&held, sig);
+    ::sigprocmask(SIG_BLOCK, &held, &previous); // the renames and the removals as one step for a signal
+    try {
+        commitAll(outputs);
+    } catch (...) {
+        ::sigprocmask(SIG_SETMASK, &previous, nullptr);
+        throw;
+    }
+    for (const std::string& name : stale) {
+        struct stat st {};
+        const fs::path path = dir / name;
+        if (::lstat(path.c_str(), &st) == 0 && (S_ISREG(st.st_mode) || S_ISLNK(st.st_mode)) &&
+            ::unlink(path.c_str()) == 0)
+            removed.push_back(name);
+    }
+    ::sigprocmask(SIG_SETMASK, &previous, nullptr);
+    return removed;
 }
 
 } // namespace shadelab::app

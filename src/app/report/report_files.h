@@ -18,8 +18,11 @@ std::string reportJson(const std::vector<ReportRow>& rows, const ReportInfo& inf
 std::string gnuplotScript(const std::vector<ReportRow>& rows, const ReportInfo& info);
 // report.png as gnuplot draws it from `script`; RuntimeError naming gnuplot if it cannot run or fails.
 std::string runGnuplot(const std::string& script);
-// Writes each (name, text) into `dir` as one set: all or, on a failure before the renames, none.
-void writeReportSet(const std::filesystem::path& dir,
-                    const std::vector<std::pair<std::string, std::string>>& files);
+// Writes each (name, text) into `dir` as one set: all or, on a failure before the renames, none. Each of
+// `stale` (an earlier run's file that this set has no new version of, e.g. report.png under --no-plot) is
+// removed with the renames, so the folder never mixes two runs; returns the names it removed.
+std::vector<std::string> writeReportSet(const std::filesystem::path& dir,
+                                        const std::vector<std::pair<std::string, std::string>>& files,
+                                        const std::vector<std::string>& stale = {});
 
 } // namespace shadelab::app

@@ -204,12 +204,17 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
     compareCommand->add_option("expected", command.compare.expected, "The reference (PNG)")->required();
     compareCommand->add_option("--max", command.compare.maxDelta, "Largest per-channel difference, 0..255")
         ->capture_default_str();
-    compareCommand->add_option("--mean", command.compare.meanDelta, "Largest mean per-channel difference")
+    compareCommand
+        ->add_option("--mean", command.compare.meanDelta,
+                     "Largest mean per-channel difference, over the compared pixels")
         ->capture_default_str();
     compareCommand->add_option("--outliers", command.compare.outliers, "Pixels allowed over --max")
         ->capture_default_str();
-    compareCommand->add_option("--mask", command.compare.mask, "PNG: black pixels are not compared");
-    compareCommand->add_option("--diff", command.compare.diff, "Where to write the difference ×8 on failure");
+    compareCommand->add_option(
+        "--mask", command.compare.mask,
+        "PNG of ACTUAL's size: black pixels are not compared, nor counted in the mean");
+    compareCommand->add_option("--diff", command.compare.diff,
+                               "Where to write the difference ×8 on failure (a file; never an input)");
 
     std::string reportScene;
     ContextArgs reportContext;

@@ -9,8 +9,13 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <system_error>
 #include <thread>
+#include <tuple>
+
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "app/demo/demo_draw.h"
@@ -41,6 +46,54 @@ public:
 private:
     double average_ = 0;
 };
+
+// A new file in `folder` holding `bytes`, flushed to disk: mkstemp's O_CREAT | O_EXCL and unpredictable
+// name, so nothing planted in the folder (a link, a FIFO) is opened; the mode a new file gets from umask.
+std::string writeTemporary(const std::filesystem::path& folder, std::string_view bytes) {
+    std::string path = (folder / ".shadelab-XXXXXX").string();
+    const int fd = ::mkstemp(path.data());
+    if (fd < 0)
+        throw std::runtime_error("cannot create a file in " + folder.string() + ": " +
+                                 std::generic_category().message(errno));
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    bool written = ::fchmod(fd, 0666 & ~mask) == 0;
+    for (std::size_t done = 0; written && done < bytes.size();) {
+        const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+        if (n < 0 && errno == EINTR) continue;
+        written = n > 0;
+        if (written) done += std::size_t(n);
+    }
+    written = written && ::fsync(fd) == 0;
+    const int error = errno;
+    if (::close(fd) != 0 || !written) {
+        ::unlink(path.c_str());
+        throw std::runtime_error(path + ": " + std::generic_category().message(written ? errno : error));
+    }
+    return path;
+}
+
+// How a screenshot's final name was claimed for its temporary file.
+enum class Claim {
+    Taken,   // something has the name already: try the next number
+    Linked,  // a hard link to the temporary now has the name (link() never replaces)
+    Reserved // no hard links on this file system: an empty file made with O_CREAT | O_EXCL holds the name,
+             // and the temporary is renamed over it
+};
+
+Claim claimName(const std::string& temp, const std::string& name) {
+    if (::link(temp.c_str(), name.c_str()) == 0) return Claim::Linked;
+    if (errno == EEXIST) return Claim::Taken;
+    if (errno != EPERM && errno != EOPNOTSUPP && errno != EXDEV && errno != EMLINK && errno != ENOSYS)
+        throw std::runtime_error(name + ": " + std::generic_category().message(errno));
+    const int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600);
+    if (fd < 0) {
+        if (errno == EEXIST) return Claim::Taken;
+        throw std::runtime_error(name + ": " + std::generic_category().message(errno));
+    }
+    ::close(fd);
+    return Claim::Reserved;
+}
 
 class Demo {
 public:
@@ -149,32 +202,37 @@ private:
         }
     }
 
-    // Links the written temporaries to the first shadelab-NNN whose .json and .png are both free
-    // (the JSON first, the PNG last) and removes the temporaries; returns the stem.
+    // Links the written temporaries to the first shadelab-NNN whose .json and .png are both free and
+    // removes the temporaries; returns the stem. Both names are claimed before either is given content (the
+    // JSON first, the PNG last), so a reader that sees the PNG finds its scene beside it.
     [[nodiscard]] std::string claimFreeStem(const std::string& tempJson, const std::string& tempPng) {
         for (int tries = 0; tries < 100000; ++tries) {
             char name[32];
             std::snprintf(name, sizeof name, "shadelab-%03d", ++screenshots_);
             std::string stem = (options_.screenshotDir / name).string();
             const std::string json = stem + ".json", png = stem + ".png";
-            if (::link(tempJson.c_str(), json.c_str()) != 0) {
-                if (errno == EEXIST) continue;
-                throw std::runtime_error(json + ": " + std::generic_category().message(errno));
+            const Claim jsonClaim = claimName(tempJson, json);
+            if (jsonClaim == Claim::Taken) continue;
+            const Claim pngClaim = claimName(tempPng, png);
+            if (pngClaim == Claim::Taken) {
+                ::unlink(json.c_str()); // our own link or placeholder
+                continue;
             }
-            if (::link(tempPng.c_str(), png.c_str()) != 0) {
-                const int error = errno;
-                ::unlink(json.c_str());
-                if (error == EEXIST) continue;
-                throw std::runtime_error(png + ": " + std::generic_category().message(error));
+            for (const auto& [claim, temp, target] :
+                 {std::tuple{jsonClaim, &tempJson, &json}, std::tuple{pngClaim, &tempPng, &png}}) {
+                if (claim == Claim::Linked)
+                    ::unlink(temp->c_str());
+                else if (::rename(temp->c_str(), target->c_str()) != 0)
+                    throw std::runtime_error(*target + ": " + std::generic_category().message(errno));
             }
-            ::unlink(tempJson.c_str());
-            ::unlink(tempPng.c_str());
             return stem;
         }
         throw std::runtime_error("no free shadelab-NNN name in " + options_.screenshotDir.string());
     }
 
-    // The scene JSON first, the PNG last: a reader that sees the PNG finds its scene beside it.
+    // The picture and its scene, each written to a temporary file of a name nobody can predict (mkstemp:
+    // O_CREAT | O_EXCL, so a link or a FIFO planted in the folder is never opened), then given the first
+    // free shadelab-NNN names; nothing already in the folder is ever opened or replaced.
     void saveScreenshot() {
         int width = 0, height = 0;
         window_.framebufferSize(width, height);
@@ -182,11 +240,11 @@ private:
             panelColumnWidth(width, state_.showPanel, uiScale_); // the picture, without the panel's column
         if (width <= 0 || height <= 0) return;
         const Scene scene = sized(width, height);
-        // Both files are written under temporary names in the folder, then linked to the first free
-        // shadelab-NNN (link() never replaces: EEXIST takes the next number), so no launch overwrites
-        // an earlier screenshot.
-        const auto temp = options_.screenshotDir / (".shadelab-shot-" + std::to_string(::getpid()));
-        const std::string tempJson = temp.string() + ".json", tempPng = temp.string() + ".png";
+        std::string tempJson, tempPng;
+        auto removeTemps = [&] {
+            if (!tempJson.empty()) ::unlink(tempJson.c_str());
+            if (!tempPng.empty()) ::unlink(tempPng.c_str());
+        };
         // Out of memory (a big window under a limit) or a write error: say so and keep the demo running.
         try {
             const gl::RenderTarget target(width, height);
@@ -194,21 +252,19 @@ private:
             renderer_.render(scene, width, height);
             const Image image = target.readRgba8();
             gl::bindDefaultFramebuffer();
-            saveScene(scene, tempJson);
-            writePng(image, tempPng);
+            tempJson = writeTemporary(options_.screenshotDir, sceneToJson(scene));
+            tempPng = writeTemporary(options_.screenshotDir, encodePng(image));
             const std::string stem = claimFreeStem(tempJson, tempPng);
             std::printf("%s.png\n", stem.c_str());
             std::fflush(stdout);
         } catch (const std::bad_alloc&) {
             gl::bindDefaultFramebuffer();
-            ::unlink(tempJson.c_str());
-            ::unlink(tempPng.c_str());
+            removeTemps();
             std::fprintf(stderr, "shadelab: screenshot not saved: out of memory for a %dx%d capture\n", width,
                          height);
         } catch (const std::exception& e) {
             gl::bindDefaultFramebuffer();
-            ::unlink(tempJson.c_str());
-            ::unlink(tempPng.c_str());
+            removeTemps();
             std::fprintf(stderr, "shadelab: screenshot not saved: %s\n", printable(e.what()).c_str());
         }
     }
