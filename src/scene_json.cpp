@@ -27,7 +27,6 @@ namespace {
 // refusing inputs whose only purpose is to exhaust memory or stack in whatever walks the tree next.
 constexpr int kMaxNesting = 64;
 // A scene is a few kilobytes; a larger file is a mistake (a PNG, a log), not a scene.
-constexpr std::uintmax_t kMaxSceneFileBytes = 16u << 20;
 
 // nlohmann's parser is iterative, but a hostile file nested a million deep still builds a million-node
 // tree for nothing. Count brackets outside strings first.
@@ -191,9 +190,9 @@ std::string readSceneFile(const std::filesystem::path& path) {
         }
         if (n == 0) break;
         text.append(chunk.data(), static_cast<std::size_t>(n));
-        if (text.size() > kMaxSceneFileBytes) {
+        if (text.size() > kMaxSceneBytes) {
             if (!fromStdin) ::close(fd);
-            cannotRead("larger than " + std::to_string(kMaxSceneFileBytes >> 20) + " MiB; not a scene file");
+            checkSceneTextSize(text.size(), name);
         }
     }
     if (!fromStdin) ::close(fd);
@@ -201,3 +200,13 @@ std::string readSceneFile(const std::filesystem::path& path) {
 }
 
 } // namespace shadelab::detail
+
+namespace shadelab {
+
+void checkSceneTextSize(std::size_t bytes, std::string_view name) {
+    if (bytes > kMaxSceneBytes)
+        throw InputError(printable(name) + ": cannot read scene file: larger than " +
+                         std::to_string(kMaxSceneBytes >> 20) + " MiB; not a scene file");
+}
+
+} // namespace shadelab

@@ -245,6 +245,9 @@ def session():
                 answer = {'failed': page.failed}
             elif op == 'load':
                 answer = {'message': page.load(request['text'], request['name'])}
+            elif op == 'load-file':  # a scene too large for one request line (tests/web/)
+                with open(request['path'], encoding='utf-8') as scene:
+                    answer = {'message': page.load(scene.read(), request['name'])}
             elif op == 'flags':
                 answer = {'message': page.flags(request['flags'])}
             elif op == 'key':

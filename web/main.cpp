@@ -5,6 +5,7 @@
 // the command line words it, so the page never shows a blank canvas for a bad scene.
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <memory>
 #include <string>
@@ -117,6 +118,7 @@ extern "C" {
 // Replaces the shown scene with `json` (named `name` in messages, as the command line names the file).
 EMSCRIPTEN_KEEPALIVE const char* shadelab_load_scene(const char* json, const char* name) {
     return guarded([&] {
+        checkSceneTextSize(std::strlen(json), name); // the command line's 16 MiB, with its message
         Scene scene = parseScene(json, name);
         validateScene(scene);
         page().state = std::make_unique<DemoState>(scene);
@@ -151,6 +153,7 @@ EMSCRIPTEN_KEEPALIVE const char* shadelab_apply_flags(const char* flags) {
 // Panel edits: the edited scene JSON replaces the scene's values; the view (orbit, presets) stays.
 EMSCRIPTEN_KEEPALIVE const char* shadelab_edit_scene(const char* json) {
     return guarded([&] {
+        checkSceneTextSize(std::strlen(json), "panel");
         Scene scene = parseScene(json, "panel");
         validateScene(scene);
         page().state->scene() = scene;

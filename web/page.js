@@ -51,12 +51,36 @@ if (!hasWebGl2()) {
 }
 
 // ---- calls into C++ ----
+// Text handed to the C++ through the heap (malloc, copy, free): cwrap copies a 'string' argument onto
+// the wasm stack, which a scene over about 1.3 MB overflowed ("memory access out of bounds", the page
+// dead until reloaded). The C++ refuses more than the command line's 16 MiB with the command line's
+// message; what the heap cannot hold is said here.
+function viaHeap(text, call) {
+  const size = Module.lengthBytesUTF8(text) + 1;
+  let pointer = 0;
+  try {
+    pointer = Module._malloc(size);
+  } catch (e) {
+    pointer = 0;
+  }
+  if (!pointer) return 'the page has no memory for ' + size + ' bytes of text';
+  try {
+    Module.stringToUTF8(text, pointer, size);
+    return call(pointer);
+  } finally {
+    Module._free(pointer);
+  }
+}
+
 function bind() {
   const c = (name, ret, args) => Module.cwrap(name, ret, args);
+  const load = c('shadelab_load_scene', 'string', ['number', 'string']);
+  const flags = c('shadelab_apply_flags', 'string', ['number']);
+  const edit = c('shadelab_edit_scene', 'string', ['number']);
   return {
-    loadScene: c('shadelab_load_scene', 'string', ['string', 'string']),
-    applyFlags: c('shadelab_apply_flags', 'string', ['string']),
-    editScene: c('shadelab_edit_scene', 'string', ['string']),
+    loadScene: (text, name) => viaHeap(text, (pointer) => load(pointer, name)),
+    applyFlags: (text) => viaHeap(text, flags),
+    editScene: (text) => viaHeap(text, edit),
     key: c('shadelab_key', 'number', ['number']),
     drag: c('shadelab_drag', null, ['number', 'number']),
     zoom: c('shadelab_zoom', null, ['number']),

@@ -105,6 +105,11 @@ struct Scene {
 Scene parseScene(std::string_view jsonText, std::string_view source = "scene");
 // Reads and parses a file; a missing or unreadable file is an InputError naming the path.
 Scene loadScene(const std::filesystem::path& path);
+// A scene's text is at most 16 MiB (kMaxSceneBytes): InputError "<name>: cannot read scene file: larger
+// than 16 MiB; not a scene file" beyond it, as the command line says while it reads and the page before it
+// parses.
+inline constexpr std::size_t kMaxSceneBytes = std::size_t(16) << 20;
+void checkSceneTextSize(std::size_t bytes, std::string_view name);
 
 // The whole scene as JSON that parseScene reads back to the same scene (every field written, doubles in
 // shortest round-trip form). The demo saves it beside each screenshot.

@@ -84,6 +84,9 @@ public:
     std::size_t loadText(const std::string& text, const std::string& name) {
         return add({{"op", "load"}, {"text", text}, {"name", name}});
     }
+    std::size_t loadFile(const fs::path& path, const std::string& name) {
+        return add({{"op", "load-file"}, {"path", path.string()}, {"name", name}});
+    }
     std::size_t key(int code) { return add({{"op", "key"}, {"code", code}}); }
     std::size_t ui() { return add({{"op", "ui"}}); }
     // Real mouse input at (x, y) CSS pixels from the canvas's centre.
@@ -745,6 +748,44 @@ TEST_F(Browser, WithoutWebGl2ThePageSaysSo) {
     if (!session.run(dir_)) return;
     EXPECT_NE(session.answer(open).at("failed").get<std::string>().find("no WebGL 2"), std::string::npos)
         << session.answer(open);
+}
+
+// Scenes pass through the heap: one over about 1.3 MB (or a panel edit of 10,000 objects, 1.6 MB of JSON)
+// threw "memory access out of bounds" and left the page dead. Up to the CLI's 16 MiB loads; beyond it the
+// CLI's own message; the page draws on after each.
+TEST_F(Browser, LargeScenesLoadAndTooLargeOnesGetTheCommandLineMessage) {
+    std::string objects;
+    for (int i = 0; i < 10000; ++i)
+        objects += std::string(i ? ", " : "") + R"({"center": [)" + std::to_string(i % 100 * 0.05 - 2.5) +
+                   ", " + std::to_string(i / 100 * 0.05 - 2.5) +
+                   R"(, -3], "radius": 0.02, "subdivisions": 0})";
+    std::ofstream(dir_ / "many.json")
+        << R"({"image": {"width": 96, "height": 96}, "objects": [)" << objects << "]}";
+    std::ofstream(dir_ / "padded.json")
+        << R"({"image": {"width": 96, "height": 96})" << std::string(3 << 20, ' ') << "}";
+    std::ofstream(dir_ / "huge.json")
+        << R"({"image": {"width": 96, "height": 96})" << std::string(17 << 20, ' ') << "}";
+    const Outcome cli = runShadelab({"render", "huge.json", "--out", "x.png"}, dir_);
+    ASSERT_EQ(cli.exitCode, 2) << cli.err;
+    const std::string expected = cli.err.substr(10, cli.err.find('\n') - 10); // less "shadelab: "
+
+    Session session;
+    session.open();
+    const std::size_t padded = session.loadFile(dir_ / "padded.json", "padded.json");
+    const std::size_t huge = session.loadFile(dir_ / "huge.json", "huge.json");
+    const std::size_t many = session.loadFile(dir_ / "many.json", "many.json");
+    const std::size_t edit = session.panel("#shininess", "1.5", "input"); // log10: 31.6
+    const std::size_t after = session.message();
+    const std::size_t ui = session.ui();
+    if (!session.run(dir_)) return;
+    EXPECT_EQ(session.answer(padded).at("message"), "") << "a 3 MB scene";
+    EXPECT_EQ(session.answer(huge).at("message"), expected);
+    EXPECT_EQ(session.answer(many).at("message"), "") << "10,000 objects";
+    EXPECT_TRUE(session.answer(edit).at("found").get<bool>()) << "no shininess slider";
+    EXPECT_EQ(session.answer(after).at("message"), "") << "the panel edit of 10,000 objects";
+    const json& objectsShown = session.answer(ui).at("ui").at("scene").at("objects");
+    ASSERT_EQ(objectsShown.size(), 10000u);
+    EXPECT_DOUBLE_EQ(objectsShown.at(9999).at("material").at("shininess").get<double>(), 31.6);
 }
 
 // A % in ?scene= that is no escape: the page starts and says it cannot fetch that scene (a URIError stopped
