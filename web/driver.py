@@ -19,13 +19,13 @@ import json
 import os
 import struct
 import sys
-import tempfile
 import threading
 import time
 import zlib
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from serve import PageHandler  # noqa: E402  (the page's files only, as scripts/web.sh serve)
+import cli_rules  # noqa: E402  (the command line's rules for scene files and outputs)
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'build-web', 'site')
 FLAGS = ['shading', 'lighting', 'subdivisions', 'size', 'depth', 'tolerance-px', 'overlay', 'view']
@@ -125,23 +125,32 @@ class Page:
         return self.js('return window.shadelab.applyFlags(arguments[0])', flags) if flags else ''
 
     def capture(self, width=0, height=0, kind='rgba8'):
+        """The picture drawn again into the program's own framebuffer, read back in bands of at most 8 MB
+        each, so no single script call nears its timeout (8192x8192 is 268 MB of RGBA)."""
         from selenium.common.exceptions import JavascriptException
         try:
-            shot = self.js('return window.shadelab.captureBase64(arguments[0], arguments[1], arguments[2])',
+            shot = self.js('return window.shadelab.captureStart(arguments[0], arguments[1], arguments[2])',
                            width, height, kind)
+            rows = max(1, (8 << 20) // max(1, shot['rowBytes']))
+            data = bytearray()
+            for y in range(0, shot['height'], rows):
+                data += base64.b64decode(self.js('return window.shadelab.captureRows(arguments[0], arguments[1])',
+                                                 y, min(rows, shot['height'] - y)))
         except JavascriptException as e:  # the renderer's own message (e.g. a feature WebGL 2 lacks)
             message = (e.msg or str(e)).split('\n')[0]
             raise RuntimeError(message.replace('javascript error: ', '', 1)) from None
-        return shot['width'], shot['height'], base64.b64decode(shot['rgba'])
+        return shot['width'], shot['height'], bytes(data)
 
 
 def png_bytes(width, height, rgba):
     """An opaque 8-bit RGB PNG (alpha dropped, as shadelab writes them)."""
-    rows = bytearray()
+    rgb = bytearray(width * height * 3)
+    for c in range(3):
+        rgb[c::3] = rgba[c::4]
+    stride = width * 3
+    rows = bytearray((stride + 1) * height)  # each row: filter type 0, then its samples
     for y in range(height):
-        row = rgba[y * width * 4:(y + 1) * width * 4]
-        rows.append(0)
-        rows += bytes(b for i, b in enumerate(row) if i % 4 != 3)
+        rows[y * (stride + 1) + 1:(y + 1) * (stride + 1)] = rgb[y * stride:(y + 1) * stride]
 
     def chunk(kind, data):
         return struct.pack('>I', len(data)) + kind + data + struct.pack('>I', zlib.crc32(kind + data))
@@ -149,30 +158,6 @@ def png_bytes(width, height, rgba):
     header = struct.pack('>IIBBBBB', width, height, 8, 2, 0, 0, 0)
     return (b'\x89PNG\r\n\x1a\n' + chunk(b'IHDR', header) + chunk(b'IDAT', zlib.compress(bytes(rows), 6)) +
             chunk(b'IEND', b''))
-
-
-def write_output(path, data):
-    """--out: '-' is standard output; a folder is refused; else a temporary file renamed over the path
-    (through a symlink to its target), so a failed run never leaves half a file."""
-    if path == '-':
-        sys.stdout.buffer.write(data)
-        sys.stdout.flush()
-        return
-    target = os.path.realpath(path)
-    if os.path.isdir(target):
-        raise ValueError('--out: %s is a folder; name a PNG file' % path)
-    folder = os.path.dirname(target) or '.'
-    fd, temp = tempfile.mkstemp(prefix='.shadelab-', dir=folder)
-    try:
-        with os.fdopen(fd, 'wb') as out:
-            out.write(data)
-            out.flush()
-            os.fsync(out.fileno())
-        os.replace(temp, target)
-    except BaseException:
-        if os.path.exists(temp):
-            os.unlink(temp)
-        raise
 
 
 def render(argv):
@@ -194,37 +179,42 @@ def render(argv):
             else:
                 flags[name] = value
         elif arg.startswith('-') and arg != '-':
-            return fail(2, 'unknown option %r; render takes SCENE.json, --%s and --out'
-                        % (arg, ', --'.join(FLAGS)))
+            return fail(2, 'unknown option %s; render takes SCENE.json, --%s and --out'
+                        % (cli_rules.quoted(arg), ', --'.join(FLAGS)))
         elif scene_path is None:
             scene_path = arg
         else:
-            return fail(2, 'one scene file only, got %r and %r' % (scene_path, arg))
+            return fail(2, 'one scene file only, got %s and %s' % (cli_rules.quoted(scene_path),
+                                                                  cli_rules.quoted(arg)))
         i += 1
-    if not out:
+    if out is None:
         return fail(2, '--out is required: the PNG to write, or - for standard output')
-    if out != '-' and os.path.isdir(os.path.realpath(out)):
-        return fail(2, '--out: %s is a folder; name a PNG file' % out)
-    text, name = '{}', 'defaults'
-    if scene_path is not None:
-        try:
-            with open(scene_path, 'rb') as f:
-                text = f.read().decode('utf-8', errors='replace')
-        except OSError as e:
-            return fail(2, '%s: cannot read the scene: %s' % (scene_path, e.strerror))
-        name = scene_path
-        if out != '-' and os.path.exists(out) and os.path.samefile(out, scene_path):
-            return fail(2, '--out: %s is the scene file; choose another output' % out)
+    # The command line's rules, before any work: the output (what it is, that it may be written), the scene
+    # (a regular file of at most 16 MiB, or -), and that one is not the other.
+    try:
+        target = cli_rules.resolve_output(out)
+        text, name = b'{}', 'defaults'
+        if scene_path is not None:
+            text, name = cli_rules.read_scene(scene_path), scene_path
+            if target[0] == 'regular' and os.path.exists(target[1]) and scene_path != '-' and \
+                    os.path.samefile(target[1], scene_path):
+                raise cli_rules.InputError('--out: %s is the input file %s; writing it would destroy the input: '
+                                           'choose another output path' % (cli_rules.quoted(out),
+                                                                           cli_rules.quoted(scene_path)))
+    except cli_rules.InputError as e:
+        return fail(2, str(e))
     page = Page()
     try:
         if page.failed:
             return fail(1, page.failed)
-        message = page.load(text, name) or page.flags(flags)
+        message = page.load(text.decode('utf-8', errors='replace'), name) or page.flags(flags)
         if message:
             return fail(2, message)
         width, height, rgba = page.capture()
-        write_output(out, png_bytes(width, height, rgba))
+        cli_rules.write_output(target, png_bytes(width, height, rgba))
         return 0
+    except cli_rules.RuntimeFailure as e:
+        return fail(1, str(e))
     finally:
         page.close()
 
@@ -313,7 +303,10 @@ def session():
 
 
 def fail(code, message):
-    sys.stderr.write('shadelab: %s\n' % message)
+    """As shadelab's main: the message with control bytes escaped (newlines and tabs kept)."""
+    lines = str(message).split('\n')
+    shown = '\n'.join('\t'.join(cli_rules.printable(part) for part in line.split('\t')) for line in lines)
+    sys.stderr.write('shadelab: %s\n' % shown)
     return code
 
 

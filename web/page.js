@@ -437,6 +437,8 @@ function wireControls() {
 // ---- pixels: what the canvas shows, drawn again into the program's own framebuffer ----
 // width × height (0 × 0: the scene's image size) → {width, height, rgba} with rows top first: bytes, or
 // for kind 'float' the bytes of 32-bit floats (little-endian, as wasm memory holds them).
+let kept = null; // the last captureStart's picture
+
 function capture(width, height, kind) {
   const float = kind === 'float';
   const pointer = float ? api.captureFloat(width, height) : api.capture(width, height);
@@ -478,11 +480,18 @@ Object.assign(window.shadelab, {
   press: (code) => press(code),
   ui: () => api.ui(),
   message: () => ($('message').hidden ? '' : $('message').textContent),
-  captureBase64: (width, height, kind) => {
-    const shot = capture(width, height, kind);
+  // A capture read back in bands (web/driver.py): captureStart draws it and keeps it, captureRows gives
+  // rows [y, y + count) as base64, so no one call carries hundreds of megabytes.
+  captureStart: (width, height, kind) => {
+    kept = capture(width, height, kind);
+    return {width: kept.width, height: kept.height, rowBytes: kept.rgba.length / Math.max(1, kept.height)};
+  },
+  captureRows: (y, count) => {
+    const rowBytes = kept.rgba.length / kept.height;
+    const band = kept.rgba.subarray(y * rowBytes, (y + count) * rowBytes);
     let binary = '';
-    for (let i = 0; i < shot.rgba.length; i += 0x8000)
-      binary += String.fromCharCode.apply(null, shot.rgba.subarray(i, i + 0x8000));
-    return {width: shot.width, height: shot.height, rgba: btoa(binary)};
+    for (let i = 0; i < band.length; i += 0x8000)
+      binary += String.fromCharCode.apply(null, band.subarray(i, i + 0x8000));
+    return btoa(binary);
   },
 });

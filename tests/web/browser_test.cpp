@@ -7,9 +7,12 @@
 // and reads the answers. Without the browser build or Chromium the tests skip with the reason, except in
 // CI (CI set), where they fail.
 #include <arpa/inet.h>
+#include <fcntl.h>
+#include <netdb.h>
 #include <netinet/in.h>
 #include <signal.h>
 #include <sys/socket.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -182,6 +185,14 @@ std::string browserUnavailable() {
         return std::string(SHADELAB_WEB_BUILD) + " holds no browser build (scripts/web.sh build)";
     if (!fs::exists("/usr/bin/chromium") || !fs::exists("/usr/bin/chromedriver"))
         return "no Debian chromium / chromium-driver (scripts/web.sh build installs them)";
+    // Selenium reaches chromedriver at "localhost": a root made by debootstrap has no /etc/hosts, and every
+    // page test then failed after 30 s with "Can not connect to the Service".
+    addrinfo* found = nullptr;
+    if (::getaddrinfo("localhost", nullptr, nullptr, &found) != 0)
+        return "the name localhost does not resolve (no /etc/hosts?): chromedriver is reached through it; "
+               "add "
+               "'127.0.0.1 localhost' to /etc/hosts";
+    ::freeaddrinfo(found);
     return "";
 }
 
@@ -798,6 +809,59 @@ TEST_F(Browser, APercentThatIsNoEscapeInTheSceneUrlIsAMessage) {
     EXPECT_EQ(session.answer(open).at("failed"), "") << session.answer(open);
     const std::string shown = session.answer(message).at("message").get<std::string>();
     EXPECT_NE(shown.find("50%off.json: cannot fetch the scene (HTTP 404)"), std::string::npos) << shown;
+}
+
+// scripts/web.sh render follows the command line's rules with its messages: a FIFO scene (it waited
+// forever) and /dev/zero (read until memory ran out) are refused as `shadelab render` refuses them; names
+// are escaped; a new file gets the mode umask gives (0600 before), a FIFO output is written through (it
+// was replaced), /dev/stdout is the open descriptor; a picture larger than one script call can carry is
+// read back in bands (8192x8192 ended in a WebDriver "script timeout").
+TEST_F(Browser, RenderScriptFollowsTheCommandLinesRules) {
+    RunOptions options;
+    options.program = SHADELAB_WEB_SH;
+    options.timeout = std::chrono::seconds(60);
+    ASSERT_EQ(::mkfifo((dir_ / "fifo.json").c_str(), 0644), 0);
+    for (const std::string& scene :
+         {std::string("fifo.json"), std::string("/dev/zero"), std::string("e\x1b[31m.json")}) {
+        const Outcome web = runWith({"render", scene, "--out", "o.png"}, dir_, options);
+        const Outcome cli = runShadelab({"render", scene, "--out", "o.png"}, dir_);
+        EXPECT_EQ(web.exitCode, 2) << scene << ": " << web.err;
+        EXPECT_EQ(web.err, cli.err) << scene;
+        EXPECT_EQ(web.err.find('\x1b'), std::string::npos) << web.err;
+    }
+    EXPECT_FALSE(fs::exists(dir_ / "o.png"));
+
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    ASSERT_EQ(runWith({"render", "--size", "32x24", "--out", "new.png"}, dir_, options).exitCode, 0);
+    EXPECT_EQ(fs::status(dir_ / "new.png").permissions(), fs::perms(0666 & ~mask));
+
+    ASSERT_EQ(::mkfifo((dir_ / "out.fifo").c_str(), 0644), 0);
+    const int fd = ::open((dir_ / "out.fifo").c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    ASSERT_GE(fd, 0);
+    std::string received;
+    bool closed = false;
+    std::thread reader([&] { closed = cli_test::readToEndWithin(fd, std::chrono::seconds(60), received); });
+    const Outcome fifo = runWith({"render", "--size", "32x24", "--out", "out.fifo"}, dir_, options);
+    if (!fifo.started) ::close(::open((dir_ / "out.fifo").c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC));
+    reader.join();
+    ::close(fd);
+    EXPECT_EQ(fifo.exitCode, 0) << fifo.err;
+    EXPECT_TRUE(closed && received.starts_with("\x89PNG")) << received.size() << " bytes through the FIFO";
+    EXPECT_TRUE(fs::is_fifo(dir_ / "out.fifo")) << "the FIFO was replaced";
+
+    const Outcome stdoutRun = runWith({"render", "--size", "32x24", "--out", "/dev/stdout"}, dir_, options);
+    EXPECT_EQ(stdoutRun.exitCode, 0) << stdoutRun.err;
+    EXPECT_TRUE(stdoutRun.out.starts_with("\x89PNG")) << stdoutRun.out.size() << " bytes on standard output";
+
+    // 3000x2900 is five bands of at most 8 MB: the same picture as the native OpenGL ES render.
+    ASSERT_EQ(runWith({"render", "--size", "3000x2900", "--out", "big.png"}, dir_, options).exitCode, 0);
+    const Image big = readPng(dir_ / "big.png");
+    Scene scene;
+    scene.width = 3000;
+    scene.height = 2900;
+    const Comparison c = compareImages(big, nativeGles().render(scene), swiftShaderTolerance(big));
+    EXPECT_TRUE(c.passed) << c.summary();
 }
 
 // A free TCP port on 127.0.0.1 (bound and released; the server takes it right after).
