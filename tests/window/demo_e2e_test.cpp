@@ -242,6 +242,38 @@ protected:
             << err;
     }
 
+    static int entriesIn(const fs::path& dir) {
+        int entries = 0;
+        for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++entries;
+        return entries;
+    }
+
+    // With an earlier shadelab-001 pair in the screenshot folder, S saves shadelab-002 (the JSON first, the
+    // PNG complete once it has content) and leaves the earlier pair and nothing else beside it.
+    void expectScreenshotBesideAnEarlierOne(const std::string& name,
+                                            const std::vector<std::string>& environment = {}) {
+        const fs::path dir = scratch() / (name + "-screenshots");
+        fs::create_directories(dir);
+        const std::string earlier = "an earlier launch's screenshot";
+        std::ofstream(dir / "shadelab-001.png") << earlier;
+        std::ofstream(dir / "shadelab-001.json") << earlier;
+        DemoProcess& demo = startDemo(name, {"--size", "320x240", "--hide-panel", "--gl-debug"}, environment);
+        demo.window().key("s");
+        // Without hard links the name is held by an empty file for the moment before the rename.
+        ASSERT_TRUE(pollUntil([&] {
+            std::error_code error;
+            return fs::file_size(dir / "shadelab-002.png", error) > 0 && !error;
+        })) << "S saved no shadelab-002.png beside the earlier shadelab-001 within "
+            << kWaitText << ":\n"
+            << demo.err();
+        EXPECT_TRUE(fs::exists(dir / "shadelab-002.json"));
+        EXPECT_EQ(readText(dir / "shadelab-001.png"), earlier) << "S overwrote shadelab-001.png";
+        EXPECT_EQ(readText(dir / "shadelab-001.json"), earlier) << "S overwrote shadelab-001.json";
+        EXPECT_EQ(readPng(dir / "shadelab-002.png").width, 320);
+        EXPECT_EQ(entriesIn(dir), 4) << "temporaries or placeholders left in " << dir;
+        expectCleanQuit(demo);
+    }
+
     void everyModeKeyShowsWhatRenderGives(const std::string& api);
 
     XTools tools_;
@@ -634,22 +666,7 @@ TEST_F(DemoWindow, ScreenshotOutOfMemoryKeepsTheDemoRunning) {
 // Issue 15: S restarted at shadelab-001 each launch and replaced an earlier screenshot. With an earlier
 // shadelab-001 pair in the folder, S must save shadelab-002 and leave shadelab-001 as it was.
 TEST_F(DemoWindow, ScreenshotTakesTheNextFreeNumberAndNeverOverwrites) {
-    const fs::path dir = scratch() / "keep-demo-screenshots";
-    fs::create_directories(dir);
-    const std::string earlier = "an earlier launch's screenshot";
-    std::ofstream(dir / "shadelab-001.png") << earlier;
-    std::ofstream(dir / "shadelab-001.json") << earlier;
-    DemoProcess& demo = startDemo("keep-demo", {"--size", "320x240", "--hide-panel", "--gl-debug"});
-    demo.window().key("s");
-    const bool saved = pollUntil([&] { return fs::exists(dir / "shadelab-002.png"); });
-    EXPECT_TRUE(saved) << "S saved no shadelab-002.png beside the earlier shadelab-001:\n" << demo.err();
-    EXPECT_TRUE(fs::exists(dir / "shadelab-002.json"));
-    EXPECT_EQ(readText(dir / "shadelab-001.png"), earlier) << "S overwrote shadelab-001.png";
-    EXPECT_EQ(readText(dir / "shadelab-001.json"), earlier) << "S overwrote shadelab-001.json";
-    int files = 0;
-    for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++files;
-    EXPECT_EQ(files, 4) << "temporaries left in " << dir;
-    expectCleanQuit(demo);
+    expectScreenshotBesideAnEarlierOne("keep-demo");
 }
 
 // S never opens or replaces what is already in the screenshot folder. Its temporaries had predictable names
@@ -677,42 +694,19 @@ TEST_F(DemoWindow, ScreenshotOpensNothingPlantedInTheFolder) {
     EXPECT_TRUE(fs::is_symlink(dir / "shadelab-001.png"));
     EXPECT_TRUE(fs::is_fifo(dir / (shot + ".png")));
     EXPECT_TRUE(fs::is_fifo(dir / "shadelab-002.json"));
-    int files = 0;
-    for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++files;
-    EXPECT_EQ(files, 6) << "temporaries left in " << dir;
+    EXPECT_EQ(entriesIn(dir), 6) << "temporaries left in " << dir;
     expectCleanQuit(demo);
 }
 
 // On a file system without hard links (link() fails with EPERM: vfat, some FUSE file systems) S claims the
 // next free name exclusively and renames into it ("Operation not permitted", nothing saved, before).
 TEST_F(DemoWindow, ScreenshotWithoutHardLinksClaimsTheNextFreeName) {
-    const fs::path dir = scratch() / "no-links-screenshots";
-    fs::create_directories(dir);
-    const std::string earlier = "an earlier launch's screenshot";
-    std::ofstream(dir / "shadelab-001.png") << earlier;
-    std::ofstream(dir / "shadelab-001.json") << earlier;
     // The sanitizers' runtime wants to be first among the libraries; the preloaded one is not instrumented.
     const char* asan = std::getenv("ASAN_OPTIONS");
-    DemoProcess& demo = startDemo("no-links", {"--size", "320x240", "--hide-panel", "--gl-debug"},
-                                  {std::string("LD_PRELOAD=") + SHADELAB_NO_HARD_LINKS,
-                                   "ASAN_OPTIONS=" + std::string(asan ? asan : "") +
-                                       (asan && *asan ? ":" : "") + "verify_asan_link_order=0"});
-    demo.window().key("s");
-    // Without links the name is held by an empty file for the moment before the rename.
-    ASSERT_TRUE(pollUntil([&] {
-        std::error_code error;
-        return fs::file_size(dir / "shadelab-002.png", error) > 0 && !error;
-    })) << "S saved no shadelab-002.png within "
-        << kWaitText << ":\n"
-        << demo.err();
-    EXPECT_TRUE(fs::exists(dir / "shadelab-002.json"));
-    EXPECT_EQ(readText(dir / "shadelab-001.png"), earlier);
-    EXPECT_EQ(readText(dir / "shadelab-001.json"), earlier);
-    EXPECT_EQ(readPng(dir / "shadelab-002.png").width, 320);
-    int files = 0;
-    for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++files;
-    EXPECT_EQ(files, 4) << "temporaries or placeholders left in " << dir;
-    expectCleanQuit(demo);
+    expectScreenshotBesideAnEarlierOne("no-links",
+                                       {std::string("LD_PRELOAD=") + SHADELAB_NO_HARD_LINKS,
+                                        "ASAN_OPTIONS=" + std::string(asan ? asan : "") +
+                                            (asan && *asan ? ":" : "") + "verify_asan_link_order=0"});
 }
 
 } // namespace
