@@ -63,7 +63,11 @@ in_background() {
   local name=$1
   shift
   starts[$name]=$(date +%s)
-  nice -n 19 "$@" >"$logs/$name.log" 2>&1 &
+  # A subshell that lowers its own priority, so that it can run this script's functions (nice cannot).
+  (
+    renice -n 19 -p "$BASHPID" >/dev/null
+    "$@"
+  ) >"$logs/$name.log" 2>&1 &
   pids[$name]=$!
 }
 finish() {
