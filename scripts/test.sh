@@ -23,6 +23,7 @@ root=$PWD
 jobs=$(nproc)
 logs=$(mktemp -d "${TMPDIR:-/tmp}/shadelab-test-logs.XXXXXX")
 
+declare -A pids starts # the background stages: process and start time, by name
 # ---- stage timing: a table of every stage's duration, printed at the end, whether it passed or not ----
 names=()
 seconds=()
@@ -43,8 +44,16 @@ stage() {
 }
 # A stage that ran beside others: its own start and end.
 background_stage() { names+=("$1 (beside the others)"); seconds+=($(($3 - $2))); }
+# A background stage still running when the script ends (a failure elsewhere) ends with it, children first.
+kill_tree() {
+  local child
+  for child in $(ps -o pid= --ppid "$1" 2>/dev/null); do kill_tree "$child"; done
+  kill "$1" 2>/dev/null || true
+}
 print_table() {
   local status=$?
+  local pid
+  for pid in "${pids[@]}"; do kill_tree "$pid"; done
   stage ""
   printf '\n=== stage durations (%s, %s cores)\n' "$(date -u +%Y-%m-%dT%H:%MZ)" "$jobs"
   for i in "${!names[@]}"; do
@@ -58,7 +67,6 @@ trap print_table EXIT
 
 # Runs a command in the background at the lowest CPU priority, its output to $logs/NAME.log; `finish NAME`
 # waits for it, prints its log if it failed, and records its duration.
-declare -A pids starts
 in_background() {
   local name=$1
   shift
@@ -73,6 +81,7 @@ in_background() {
 finish() {
   local name=$1 status=0
   wait "${pids[$name]}" || status=$?
+  unset "pids[$name]"
   background_stage "$name" "${starts[$name]}" "$(date +%s)"
   if [ "$status" -ne 0 ]; then
     echo "shadelab: $name failed (exit $status); its log ($logs/$name.log):"
@@ -113,9 +122,9 @@ else
   echo "skipped: not root (the tests switch to uid 65534, which needs root)"
 fi
 
-in_background "clang-tidy" bash -c "git ls-files 'src/*.cpp' | xargs -P$jobs -n1 clang-tidy -p build --quiet"
 stage "sanitizer build (what the release tests left)"
-finish "sanitizer build"
+finish "sanitizer build" # alone now, so its low priority costs nothing
+in_background "clang-tidy" bash -c "git ls-files 'src/*.cpp' | xargs -P$jobs -n1 clang-tidy -p build --quiet"
 build_fuzzers() {
   cmake -S fuzz -B build-fuzz -DCMAKE_CXX_COMPILER=clang++ && cmake --build build-fuzz -j"$jobs"
 }
