@@ -1,4 +1,5 @@
-// PNG I/O through libpng's simplified API: written atomically (atomic_file.h), read whole and checked.
+// PNG I/O through libpng: encoded by its simplified API and written atomically (atomic_file.h); read by its
+// low-level API, whole and checked, as the stored samples.
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -74,19 +75,6 @@ constexpr png_uint_32 kMaxPngSide = 1 << 15;
 
 } // namespace
 
-void writePng(const Image& image, const fs::path& path) {
-    checkWritable(image, path);
-    const std::vector<std::uint8_t> rgb = dropAlpha(image);
-    writeFileAtomically(path, "PNG", [&](std::FILE* file) {
-        PngImage out;
-        out.png.width = png_uint_32(image.width);
-        out.png.height = png_uint_32(image.height);
-        out.png.format = PNG_FORMAT_RGB;
-        if (!png_image_write_to_stdio(&out.png, file, 0, rgb.data(), 0, nullptr))
-            writeFailed(path, std::string("libpng: ") + out.png.message);
-    });
-}
-
 std::string encodePng(const Image& image) {
     if (const std::string why = unwritableBecause(image); !why.empty())
         throw RuntimeError("cannot encode PNG: " + why);
@@ -103,6 +91,20 @@ std::string encodePng(const Image& image) {
         throw RuntimeError(std::string("cannot encode PNG: libpng: ") + out.png.message);
     bytes.resize(size);
     return bytes;
+}
+
+// Encoded straight into the temporary file (not through encodePng): no second copy of a large picture.
+void writePng(const Image& image, const fs::path& path) {
+    checkWritable(image, path);
+    const std::vector<std::uint8_t> rgb = dropAlpha(image);
+    writeFileAtomically(path, "PNG", [&](std::FILE* file) {
+        PngImage out;
+        out.png.width = png_uint_32(image.width);
+        out.png.height = png_uint_32(image.height);
+        out.png.format = PNG_FORMAT_RGB;
+        if (!png_image_write_to_stdio(&out.png, file, 0, rgb.data(), 0, nullptr))
+            writeFailed(path, std::string("libpng: ") + out.png.message);
+    });
 }
 
 namespace {
