@@ -1,11 +1,18 @@
 #!/usr/bin/env bash
 # Installs whatever shadelab needs that this Debian 12 machine lacks (as root, or through sudo), then
 # configures and builds into build/. Safe to run again.
-#   scripts/setup.sh             everything: the program, the tests and CI's tools (scripts/test.sh)
-#   scripts/setup.sh --program   only what the program needs, and only the `shadelab` target (scripts/run.sh)
+#   scripts/setup.sh               everything: the program, the tests and CI's tools (scripts/test.sh)
+#   scripts/setup.sh --program     only what the program needs, and only the `shadelab` target (scripts/run.sh)
+#   scripts/setup.sh --install SET[,SET...]
+#                                  only installs the missing packages of these sets (program, tests, tools)
+#   scripts/setup.sh --build [-- CMAKE_ARGS...]
+#                                  only configures and builds everything (the packages must be there)
+# After `--` (with no option, or --build), the rest goes to CMake's configure step, e.g.
+# `scripts/setup.sh --build -- -DSHADELAB_WERROR=ON`.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
+# The program: what `scripts/run.sh` installs.
 program_packages=(
   # toolchain
   g++ cmake make pkg-config ca-certificates
@@ -15,41 +22,93 @@ program_packages=(
   # `shadelab report`'s plot
   gnuplot-nox
 )
-check_packages=(
-  libgtest-dev
+# What building the tests needs on top.
+tests_packages=(libgtest-dev libx11-dev git)
+# What running the checks needs, none of it for the build: scripts/test.sh installs these beside the build.
+tools_packages=(
   # the demo under a virtual display, and driving it in tests
-  xvfb xauth xdotool libx11-dev
+  xvfb xauth xdotool
   # CI's checks: formatting, static analysis, fuzzing (clang's libFuzzer)
-  clang-format clang-tidy clang libclang-rt-14-dev git
-  # the page's build and its tests (scripts/web.sh installs them too; here they share one apt transaction)
+  clang-format clang-tidy clang libclang-rt-14-dev
+  # the page's build and its tests (scripts/web.sh installs them too)
   emscripten chromium chromium-driver python3-selenium
 )
 
-packages=("${program_packages[@]}")
+die() {
+  echo "setup.sh: $*" >&2
+  exit 2
+}
+
+# Installs the packages named that are missing, in one apt transaction.
+install_missing() {
+  local missing=() p
+  for p in "$@"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  ((${#missing[@]})) || return 0
+  echo "shadelab: installing ${missing[*]}"
+  local sudo=()
+  [ "$(id -u)" -eq 0 ] || sudo=(sudo)
+  # The package lists are read again unless this machine did so in the last hour (a second set installed
+  # right after the first needs no second download of them).
+  if [ -z "$(find /var/lib/apt/lists -maxdepth 1 -name '*_Packages*' -mmin -60 2>/dev/null | head -n 1)" ]; then
+    "${sudo[@]}" apt-get update -qq
+  fi
+  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+}
+
+# The packages of the sets named (e.g. "program,tests"), into the array `packages`.
+packages_of() {
+  local set
+  local -a sets
+  IFS=, read -r -a sets <<<"$1"
+  ((${#sets[@]})) || die "--install: no set named (the sets are program, tests and tools)"
+  packages=()
+  for set in "${sets[@]}"; do
+    case $set in
+      program) packages+=("${program_packages[@]}") ;;
+      tests) packages+=("${tests_packages[@]}") ;;
+      tools) packages+=("${tools_packages[@]}") ;;
+      *) die "--install: unknown set '$set' (the sets are program, tests and tools)" ;;
+    esac
+  done
+}
+
+mode=all
+case ${1:-} in
+  --program | --build)
+    mode=${1#--}
+    shift
+    ;;
+  --install)
+    [ $# -eq 2 ] || die "--install takes one argument, the sets (e.g. --install program,tests)"
+    packages_of "$2"
+    install_missing "${packages[@]}"
+    exit 0
+    ;;
+  --) ;;
+  "") ;;
+  *) die "unknown option '$1' (the options are --program, --install SET[,SET...] and --build)" ;;
+esac
+[ "${1:-}" != -- ] || shift
+[ "$mode" != program ] || [ $# -eq 0 ] || die "--program takes no CMake arguments"
+
 build_args=()
 configure_args=()
-if [ "${1:-}" = --program ]; then
-  build_args=(--target shadelab)
-  # A first configure leaves the tests out, so GoogleTest need not be installed; a tree that has them keeps them.
-  [ -f build/CMakeCache.txt ] || configure_args=(-DSHADELAB_BUILD_TESTS=OFF)
-else
-  packages+=("${check_packages[@]}")
-  configure_args=(-DSHADELAB_BUILD_TESTS=ON)
-fi
-
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if ((${#missing[@]})); then
-  echo "shadelab: installing ${missing[*]}"
-  sudo=()
-  [ "$(id -u)" -eq 0 ] || sudo=(sudo)
-  "${sudo[@]}" apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
-fi
+case $mode in
+  program)
+    install_missing "${program_packages[@]}"
+    build_args=(--target shadelab)
+    # A first configure leaves the tests out, so GoogleTest need not be installed; a tree that has them keeps them.
+    [ -f build/CMakeCache.txt ] || configure_args=(-DSHADELAB_BUILD_TESTS=OFF)
+    ;;
+  all)
+    install_missing "${program_packages[@]}" "${tests_packages[@]}" "${tools_packages[@]}"
+    configure_args=(-DSHADELAB_BUILD_TESTS=ON)
+    ;;
+  build) configure_args=(-DSHADELAB_BUILD_TESTS=ON) ;;
+esac
 
 build_type=${SHADELAB_BUILD_TYPE:-RelWithDebInfo}
-# shellcheck disable=SC2086 # SHADELAB_CMAKE_ARGS is a list of arguments
-cmake -S . -B build -DCMAKE_BUILD_TYPE="$build_type" "${configure_args[@]}" ${SHADELAB_CMAKE_ARGS:-}
+cmake -S . -B build -DCMAKE_BUILD_TYPE="$build_type" "${configure_args[@]}" "$@"
 cmake --build build -j"$(nproc)" "${build_args[@]}"

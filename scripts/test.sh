@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Sets up and builds shadelab, then runs everything CI runs, and prints how long each stage took:
-#   1. setup: the Debian packages that are missing (one apt transaction for all), the release build
-#      (warnings are errors)
+#   1. setup: the Debian packages the build needs that are missing, then the release build (-O2 as the
+#      program's own build, without debug information; warnings are errors); the packages only the checks
+#      need (X, clang's tools, emscripten, Chromium) install beside it
 #   2. the browser build (scripts/web.sh build); formatting (.clang-format) of src/, include/, tests/, web/
 #   3. the whole test suite on the release build: CPU tests, GL tests on every headless backend (EGL with
 #      OpenGL and with OpenGL ES, OSMesa), the command line end to end, the demo window under Xvfb, the page
@@ -61,6 +62,13 @@ print_table() {
   done
   local total=$(($(date +%s) - began))
   printf '%-72s %4d:%02d\n' "total" $((total / 60)) $((total % 60))
+  # The processes' CPU time (user + system, the background stages' too), against the wall time of all cores.
+  local cpu
+  times >"$logs/times" # here, not in a subshell: a subshell's `times` counts only its own children
+  cpu=$(tail -n 1 "$logs/times" | awk '{ split($1, a, /[ms]/); split($2, b, /[ms]/)
+    printf "%d", a[1] * 60 + a[2] + b[1] * 60 + b[2] }')
+  printf '%-72s %4d:%02d\n' "CPU time of every stage's processes ($jobs cores: at most $jobs× the total)" \
+    $((cpu / 60)) $((cpu % 60))
   [ "$status" -eq 0 ] || printf 'FAILED (exit %d) in: %s\n' "$status" "${names[-1]:-setup}"
 }
 trap print_table EXIT
@@ -90,8 +98,14 @@ finish() {
   fi
 }
 
-stage "setup: packages and the release build"
-SHADELAB_CMAKE_ARGS="-DSHADELAB_WERROR=ON" scripts/setup.sh
+stage "setup: the build's packages, then the release build (the checks' packages install beside it)"
+scripts/setup.sh --install program,tests
+in_background "checks' packages" scripts/setup.sh --install tools
+# -O2 as the program's own build, without its debug information (a third of the compile time); warnings are
+# errors.
+SHADELAB_BUILD_TYPE=Release scripts/setup.sh --build -- -DSHADELAB_WERROR=ON \
+  "-DCMAKE_CXX_FLAGS_RELEASE=-O2 -DNDEBUG" "-DCMAKE_C_FLAGS_RELEASE=-O2 -DNDEBUG"
+finish "checks' packages"
 
 stage "browser build (WebGL 2, emscripten)"
 scripts/web.sh build
