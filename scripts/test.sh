@@ -9,7 +9,7 @@
 #      in headless Chromium. Meanwhile, at the lowest CPU priority, the sanitizer tree is built with the
 #      cores the tests leave idle.
 #   4. the permission-dropping tests again with the binary in a folder only root can enter, as a clone in
-#      /root is
+#      /root is; the program installed into an empty prefix runs the CI example (examples/ci/)
 #   5. clang-tidy (.clang-tidy) on src/, and the fuzzers' build, at the lowest priority beside step 6
 #   6. the suite under AddressSanitizer + UndefinedBehaviorSanitizer (+ LeakSanitizer; only Mesa's and the
 #      system GL stack's own allocations are suppressed), Debug build: the CPU, command-line, window and
@@ -135,6 +135,15 @@ if [ "$(id -u)" -eq 0 ]; then
 else
   echo "skipped: not root (the tests switch to uid 65534, which needs root)"
 fi
+
+stage "the CI example (examples/ci/) run by the program installed into an empty prefix"
+# The installed program alone (its shaders, font and scenes are compiled in) and the example's installed
+# copy, run from outside the checkout, as README "Screenshot regression in your CI" describes.
+prefix=$(mktemp -d)
+cmake --install build --prefix "$prefix" >/dev/null
+(cd "$prefix" && PATH="$prefix/bin:$PATH" share/doc/shadelab/examples/ci/screenshot-regression.sh \
+  --artifacts "$prefix/artifacts")
+rm -rf "$prefix"
 
 stage "sanitizer build (what the release tests left)"
 finish "sanitizer build" # alone now, so its low priority costs nothing

@@ -28,10 +28,14 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <png.h>
 
 #include "cli/run_process.h"
 #include "shadelab/image.h"
+#include "shadelab/lighting.h"
+#include "shadelab/scene.h"
+#include "shadelab/vocabulary.h"
 
 namespace {
 
@@ -212,6 +216,57 @@ shadelab::Image filled(int width, int height, std::uint8_t value) {
     shadelab::Image image(width, height);
     for (std::size_t i = 0; i < image.rgba.size(); ++i) image.rgba[i] = i % 4 == 3 ? 255 : value;
     return image;
+}
+
+// Issue 29: `compare --json` is the summary as one object for a CI dashboard: the same figures as
+// compareImages, the limits, the sizes (both, when they differ), passed as the exit code says, the diff's
+// path when one was written.
+TEST_F(CliTest, CompareJsonCarriesTheFiguresOfTheSummary) {
+    ASSERT_EQ(shadelab({"render", "--size", "64x64", "--out", "a.png"}).exitCode, 0);
+    ASSERT_EQ(shadelab({"render", "--size", "64x64", "--shading", "flat", "--out", "b.png"}).exitCode, 0);
+    ASSERT_EQ(shadelab({"render", "--size", "32x48", "--out", "small.png"}).exitCode, 0);
+    shadelab::Image mask(64, 64);
+    shadelab::fillRect(mask, 0, 20, 64, 24, {255, 255, 255, 255}); // compares rows 20..43 only
+    shadelab::writePng(mask, dir_ / "mask.png");
+    const shadelab::Image a = shadelab::readPng(dir_ / "a.png"), b = shadelab::readPng(dir_ / "b.png");
+    const shadelab::Comparison c = shadelab::compareImages(a, b, shadelab::Tolerance{2, 0.5, 3}, &mask);
+    ASSERT_FALSE(c.passed) << "flat and phong must differ for this test: " << c.summary();
+
+    const Outcome differ = shadelab({"compare", "a.png", "b.png", "--max", "2", "--mean", "0.5", "--outliers",
+                                     "3", "--mask", "mask.png", "--diff", "d.png", "--json"});
+    EXPECT_EQ(differ.exitCode, 1) << describe(differ);
+    const nlohmann::json j = nlohmann::json::parse(differ.out); // nothing but the object on standard output
+    EXPECT_EQ(j["actual"], "a.png");
+    EXPECT_EQ(j["expected"], "b.png");
+    EXPECT_EQ(j["mask"], "mask.png");
+    EXPECT_EQ(j["passed"], false);
+    EXPECT_EQ(j["size_matches"], true);
+    EXPECT_EQ(j["max_delta"], c.maxDelta);
+    EXPECT_DOUBLE_EQ(j["mean_delta"].get<double>(), c.meanDelta);
+    EXPECT_EQ(j["outliers"], c.outliers);
+    EXPECT_EQ(j["compared_pixels"], 64 * 24);
+    EXPECT_EQ(j["pixels"], 64 * 64);
+    EXPECT_EQ(j["limits"], (nlohmann::json{{"max", 2}, {"mean", 0.5}, {"outliers", 3}}));
+    EXPECT_EQ(j["diff"], "d.png");
+    EXPECT_TRUE(pngSize(readFile(dir_ / "d.png"))) << "the difference image";
+
+    const Outcome same = shadelab({"compare", "a.png", "a.png", "--diff", "none.png", "--json"});
+    EXPECT_EQ(same.exitCode, 0) << describe(same);
+    const nlohmann::json k = nlohmann::json::parse(same.out);
+    EXPECT_EQ(k["passed"], true);
+    EXPECT_EQ(k["max_delta"], 0);
+    EXPECT_EQ(k["mask"], nullptr);
+    EXPECT_EQ(k["diff"], nullptr) << "no difference image is written for a pass";
+    EXPECT_FALSE(fs::exists(dir_ / "none.png"));
+
+    const Outcome sizes = shadelab({"compare", "a.png", "small.png", "--json"});
+    EXPECT_EQ(sizes.exitCode, 1) << describe(sizes);
+    const nlohmann::json m = nlohmann::json::parse(sizes.out);
+    EXPECT_EQ(m["size_matches"], false);
+    EXPECT_EQ(m["passed"], false);
+    EXPECT_EQ(m["actual_size"], (nlohmann::json{{"width", 64}, {"height", 64}}));
+    EXPECT_EQ(m["expected_size"], (nlohmann::json{{"width", 32}, {"height", 48}}));
+    EXPECT_FALSE(m.contains("max_delta")) << "no figures for images of different sizes";
 }
 
 // The mean is over the compared pixels: a mask that keeps one row must not dilute a difference everywhere
@@ -441,6 +496,38 @@ TEST_F(CliTest, ReferenceSceneFile) {
 }
 
 // --- Flags override the scene file --------------------------------------------------------------------
+
+// Issue 29: a flag's help lists exactly the spellings it accepts (both come from the vocabularies), so
+// `exact` is in --shading's help and every spelling in a help is accepted.
+TEST_F(CliTest, FlagHelpListsEverySpellingTheFlagAccepts) {
+    const Outcome help = shadelab({"render", "--help"});
+    ASSERT_EQ(help.exitCode, 0) << help.err;
+    const auto helpLine = [&](std::string_view flag) {
+        const std::size_t at = help.out.find(std::string(flag) + " ");
+        EXPECT_NE(at, std::string::npos) << flag << " is not in render --help:\n" << help.out;
+        if (at == std::string::npos) return std::string();
+        // The description runs until the next option's line (CLI11 wraps it onto indented lines).
+        const std::size_t end = help.out.find("\n  -", at);
+        return help.out.substr(at, end - at);
+    };
+    const auto check = [&](std::string_view flag, const auto& vocabulary) {
+        const std::string line = helpLine(flag);
+        const std::string listed = shadelab::joinNames(vocabulary);
+        EXPECT_NE(line.find(listed), std::string::npos)
+            << flag << "'s help does not list " << listed << ": " << line;
+        for (const auto value : vocabulary) {
+            const std::string spelling(shadelab::toString(value));
+            const Outcome run =
+                shadelab({"render", std::string(flag), spelling, "--size", "16x16", "--out", "v.png"});
+            EXPECT_EQ(run.exitCode, 0) << flag << " " << spelling << " is listed but refused: " << run.err;
+        }
+    };
+    check("--shading", shadelab::kAllShadingModes);
+    check("--lighting", shadelab::kLightingModels);
+    check("--depth", shadelab::kDepthModes);
+    check("--overlay", shadelab::kOverlays);
+    EXPECT_NE(helpLine("--shading").find("exact"), std::string::npos);
+}
 
 TEST_F(CliTest, ShadingFlagOverridesScene) {
     writeFile(dir_ / "flat.json", smallScene("flat"));

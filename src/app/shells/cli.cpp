@@ -11,23 +11,23 @@
 #include <CLI/CLI.hpp>
 
 #include "app/demo/demo_state.h"
+#include "shadelab/lighting.h"
+#include "shadelab/scene.h"
 #include "shadelab/text.h"
+#include "shadelab/vocabulary.h"
 
 namespace shadelab::app {
 namespace {
 
-std::string joined(std::string_view a, std::string_view b, std::string_view c = {}, std::string_view d = {}) {
-    std::string out(a);
-    for (std::string_view s : {b, c, d})
-        if (!s.empty()) out.append(", ").append(s);
-    return out;
-}
-
+// The spellings in each flag's help come from the vocabularies the flags are parsed with (vocabulary.h), so
+// the help lists exactly what is accepted.
 void addSceneFlags(CLI::App& command, SceneOverrides& o) {
-    command.add_option("--shading", o.shading,
-                       "Shading mode: " + joined("flat", "gouraud", "phong", "toon") +
-                           " (overrides the scene)");
-    command.add_option("--lighting", o.lighting, "Lighting model: phong, blinn-phong (overrides the scene)");
+    command.add_option(
+        "--shading", o.shading,
+        "Shading mode: " + joinNames(kAllShadingModes) +
+            " (exact: each sphere ray-cast per pixel, the analytic reference; overrides the scene)");
+    command.add_option("--lighting", o.lighting,
+                       "Lighting model: " + joinNames(kLightingModels) + " (overrides the scene)");
     command.add_option("--subdivisions", o.subdivisions,
                        "Subdivision level of every object, 0.." + std::to_string(kMaxSubdivisions) +
                            ", or auto: the smallest level whose silhouette error stays below --tolerance-px");
@@ -35,11 +35,12 @@ void addSceneFlags(CLI::App& command, SceneOverrides& o) {
                        "Silhouette error auto subdivision allows (default 0.5)");
     command.add_option(
         "--depth", o.depth,
-        "Depth mode: standard (DESIGN's [-1,1] convention), reversed (reversed-Z, 32-bit float "
-        "depth) or reversed-infinite (reversed-Z with the far plane at infinity)");
+        "Depth mode: " + joinNames(kDepthModes) +
+            " (standard: DESIGN's [-1,1] convention; reversed: reversed-Z, 32-bit float depth; "
+            "reversed-infinite: reversed-Z with the far plane at infinity)");
     command.add_option("--overlay", o.overlay,
-                       "Lines over the surface: none, wireframe (the mesh's edges) or normals (edges, face "
-                       "and vertex normals)");
+                       "Lines over the surface: " + joinNames(kOverlays) +
+                           " (wireframe: the mesh's edges; normals: edges, face and vertex normals)");
     command.add_option("--view", o.view,
                        "What the picture shows: scene, error (|mode - exact| heatmap), profile (intensity "
                        "along a row) or split:A,B (A, B each shading[/lighting][@level], e.g. "
@@ -215,6 +216,10 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
         "PNG of ACTUAL's size: black pixels are not compared, nor counted in the mean");
     compareCommand->add_option("--diff", command.compare.diff,
                                "Where to write the difference ×8 on failure (a file; never an input)");
+    compareCommand->add_flag(
+        "--json", command.compare.json,
+        "Print the result as one JSON object (sizes, max, mean over the compared pixels, "
+        "outliers, limits, passed, diff) instead of the summary line");
 
     std::string reportScene;
     ContextArgs reportContext;

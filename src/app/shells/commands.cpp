@@ -6,6 +6,8 @@
 #include <optional>
 #include <regex>
 
+#include <nlohmann/json.hpp>
+
 #include "app/measure/memory_budget.h"
 #include "app/shells/commands.h"
 #include "shadelab/atomic_file.h"
@@ -135,6 +137,37 @@ void checkCompareMemory(const CompareOptions& o) {
                       "ACTUAL and EXPECTED (smaller images)");
 }
 
+// `compare --json`: what the summary line says, as one object for a CI dashboard. The paths are the
+// arguments as given (JSON strings escape whatever bytes they hold).
+std::string comparisonJson(const Comparison& c, const CompareOptions& o, bool wroteDiff) {
+    const auto size = [](int width, int height) {
+        return nlohmann::json{{"width", width}, {"height", height}};
+    };
+    const auto pathOrNull = [](const std::string& path) {
+        return path.empty() ? nlohmann::json(nullptr) : nlohmann::json(path);
+    };
+    nlohmann::json out{
+        {"actual", o.actual},
+        {"expected", o.expected},
+        {"mask", pathOrNull(o.mask)},
+        {"actual_size", size(c.actualWidth, c.actualHeight)},
+        {"expected_size", size(c.expectedWidth, c.expectedHeight)},
+        {"size_matches", c.sizeMatches},
+        {"limits", {{"max", o.maxDelta}, {"mean", o.meanDelta}, {"outliers", o.outliers}}},
+        {"passed", c.passed},
+        {"diff", wroteDiff ? nlohmann::json(o.diff) : nlohmann::json(nullptr)},
+    };
+    if (c.sizeMatches) {
+        out["max_delta"] = c.maxDelta;
+        out["mean_delta"] = c.meanDelta;
+        out["outliers"] = c.outliers;
+        out["compared_pixels"] = c.comparedPixels;
+        out["pixels"] = c.pixels;
+    }
+    // Bytes that are not UTF-8 in a path are replaced rather than refused: the result must still print.
+    return out.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
 } // namespace
 
 int runCompare(const CompareOptions& o) {
@@ -176,13 +209,15 @@ int runCompare(const CompareOptions& o) {
     const bool sameSize = actual.width == expected.width && actual.height == expected.height;
     const Comparison c = compareImages(actual, expected, Tolerance{o.maxDelta, o.meanDelta, o.outliers},
                                        sameSize && mask ? &*mask : nullptr);
-    std::printf("%s\n", c.summary().c_str());
-    if (c.passed) return kExitOk;
-    if (!o.diff.empty()) {
-        writePng(diffImage(actual, expected), o.diff);
-        std::printf("difference ×8 written to %s\n", printable(o.diff).c_str());
+    const bool writeDiff = !c.passed && !o.diff.empty();
+    if (writeDiff) writePng(diffImage(actual, expected), o.diff);
+    if (o.json) {
+        std::printf("%s\n", comparisonJson(c, o, writeDiff).c_str());
+    } else {
+        std::printf("%s\n", c.summary().c_str());
+        if (writeDiff) std::printf("difference ×8 written to %s\n", printable(o.diff).c_str());
     }
-    return kExitRuntimeError; // as cmp and diff: 1 is "they differ"
+    return c.passed ? kExitOk : kExitRuntimeError; // as cmp and diff: 1 is "they differ"
 }
 
 } // namespace shadelab::app

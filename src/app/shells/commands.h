@@ -35,6 +35,7 @@ struct CompareOptions {
     int maxDelta = 0;     // --max
     double meanDelta = 0; // --mean
     int outliers = 0;     // --outliers: pixels allowed over --max
+    bool json = false;    // --json: standard output carries one JSON object instead of the summary line
 };
 int runCompare(const CompareOptions& options);
 int runReference(const Scene& scene, const std::filesystem::path& out);
