@@ -104,6 +104,22 @@ void bindDefaultFramebuffer() {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
+void clearWindow(int width, int height, glm::vec3 color) {
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, width, height);
+    glClearColor(color.x, color.y, color.z, 1.0f);
+    clearDepth(0.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
+void RenderTarget::blitToWindow(int x, int y) const {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.get());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    glBlitFramebuffer(0, 0, width_, height_, x, y, x + width_, y + height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    checkGlError("copying the picture into the window");
+}
+
 void RenderTarget::bind() const {
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
 }

@@ -1173,3 +1173,33 @@ TEST(DemoState, LevelUpBeyondTheWorkLimitIsRefused) {
 
 } // namespace
 } // namespace shadelab::app
+
+// Issue 29: the window keeps the scene's framing. grid.json (800x600) beside the panel in a 1280x800 window
+// (an 860x800 area) is letterboxed, not cropped to its two middle columns.
+TEST(FitPicture, KeepsTheScenesAspectCentredInTheArea) {
+    using shadelab::app::fitPicture;
+    const auto wide = fitPicture(800, 600, 860, 800);
+    EXPECT_EQ(wide.width, 860);
+    EXPECT_EQ(wide.height, 645); // 860 * 600 / 800
+    EXPECT_EQ(wide.x, 0);
+    EXPECT_EQ(wide.y, 77); // (800 - 645) / 2: bars above and below
+    const auto tall = fitPicture(512, 1024, 1000, 600);
+    EXPECT_EQ(tall.width, 300);
+    EXPECT_EQ(tall.height, 600);
+    EXPECT_EQ(tall.x, 350); // bars at the sides
+    EXPECT_EQ(tall.y, 0);
+    const auto same = fitPicture(640, 480, 1280, 960);
+    EXPECT_EQ(same.x, 0);
+    EXPECT_EQ(same.y, 0);
+    EXPECT_EQ(same.width, 1280);
+    EXPECT_EQ(same.height, 960);
+    const auto sliver = fitPicture(1, 10000, 100, 100);
+    EXPECT_EQ(sliver.width, 1) << "never narrower than a pixel";
+    EXPECT_EQ(sliver.height, 100);
+    const auto none = fitPicture(800, 600, 0, 800);
+    EXPECT_EQ(none.width, 0);
+    EXPECT_EQ(none.height, 0);
+    EXPECT_TRUE(wide.contains(10, 77));
+    EXPECT_FALSE(wide.contains(10, 76)) << "the bar above is not the picture";
+    EXPECT_FALSE(wide.contains(10, 77 + 645)) << "the bar below is not the picture";
+}

@@ -21,6 +21,9 @@ public:
                  DepthFormat depth = DepthFormat::Depth24);
     void bind() const;
     Image readRgba8() const;
+    // Copies the colour attachment, pixel for pixel, into the window's framebuffer with its lower-left
+    // corner at (x, y) (GL's convention, rows up); leaves the window's framebuffer bound.
+    void blitToWindow(int x, int y) const;
     ImageF readFloat() const;
     int width() const { return width_; }
     int height() const { return height_; }
@@ -38,5 +41,7 @@ DepthFormat depthFormatFor(DepthMode mode);
 
 // Binds the window's own framebuffer again after drawing offscreen.
 void bindDefaultFramebuffer();
+// Binds the window's framebuffer and clears all of its width × height to `color` (and depth to 0).
+void clearWindow(int width, int height, glm::vec3 color);
 
 } // namespace shadelab::gl

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 
 namespace shadelab::app {
@@ -66,6 +67,21 @@ void DemoState::zoom(double wheelSteps) {
     const double farthest = std::max(closest, scene_.projection.far * (1 - 1e-6) - extent);
     camera_.distance = std::clamp(camera_.distance, closest, farthest);
     cameraMoved_ = true;
+}
+
+PictureRect fitPicture(int sceneWidth, int sceneHeight, int areaWidth, int areaHeight) {
+    if (areaWidth <= 0 || areaHeight <= 0 || sceneWidth <= 0 || sceneHeight <= 0) return {};
+    PictureRect rect{0, 0, areaWidth, areaHeight};
+    // Compared as products of integers: exact, so an area of the scene's own aspect gets no bar at all.
+    if (std::int64_t(areaWidth) * sceneHeight > std::int64_t(areaHeight) * sceneWidth)
+        rect.width =
+            std::clamp(int(std::lround(double(areaHeight) * sceneWidth / sceneHeight)), 1, areaWidth);
+    else
+        rect.height =
+            std::clamp(int(std::lround(double(areaWidth) * sceneHeight / sceneWidth)), 1, areaHeight);
+    rect.x = (areaWidth - rect.width) / 2;
+    rect.y = (areaHeight - rect.height) / 2;
+    return rect;
 }
 
 Scene DemoState::current(int width, int height) const {

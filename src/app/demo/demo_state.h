@@ -89,6 +89,17 @@ struct LightPreset {
 std::span<const MaterialPreset> materialPresets(); // matte (k_s = 0), plastic (α = 8), metal (α = 150)
 std::span<const LightPreset> lightPresets();       // point, directional, spot, three coloured lights
 
+// Where a picture goes in an area of the window (pixels, from the area's top left): the largest rectangle
+// of the scene's own aspect that fits, centred, with bars above and below or at the sides. The window then
+// frames the scene as `render` does at that size; a 0 × 0 rectangle for an empty area.
+struct PictureRect {
+    int x = 0, y = 0, width = 0, height = 0;
+    bool contains(double px, double py) const {
+        return px >= x && px < x + width && py >= y && py < y + height;
+    }
+};
+PictureRect fitPicture(int sceneWidth, int sceneHeight, int areaWidth, int areaHeight);
+
 class DemoState {
 public:
     explicit DemoState(Scene scene);
@@ -105,6 +116,9 @@ public:
     }
     Scene drawn() const { return current(viewportWidth_, viewportHeight_); }
     Scene& scene() { return scene_; } // for the control panel's live edits
+    // The scene's own image size: the aspect the window fits the picture to (fitPicture).
+    int sceneWidth() const { return scene_.width; }
+    int sceneHeight() const { return scene_.height; }
     const OrbitCamera& camera() const { return camera_; }
 
     // Mouse input: orbit and zoom, kept outside every object (and inside the far plane where both fit).

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 #include <exception>
+#include <memory>
 #include <new>
 #include <optional>
 #include <stdexcept>
@@ -36,6 +37,8 @@ using Clock = std::chrono::steady_clock;
 
 // Caps the frame rate where nothing else does (Xvfb has no vsync), so a test machine is not saturated.
 constexpr auto kFramePeriod = std::chrono::microseconds(1'000'000 / 60);
+// The bars beside a picture whose aspect differs from the window's: a grey darker than the panel's.
+constexpr glm::vec3 kBarColour{0.06f, 0.06f, 0.07f};
 
 // Exponential moving average of the GPU-synchronized draw time.
 class FrameTimer {
@@ -122,9 +125,8 @@ public:
         window_.onClick([this](double x, double y) { onClick(x, y); });
         window_.onPointer([this](double x, double y, bool leftHeld) {
             if (panel_.wantsMouse()) return;
-            int width = 0, height = 0;
-            window_.framebufferSize(width, height);
-            state_.pointer(x - panelColumnWidth(width, state_.showPanel, uiScale_), y, leftHeld);
+            const PictureRect picture = pictureRect();
+            state_.pointer(x - picture.x, y - picture.y, leftHeld);
         });
         window_.onScroll([this](double steps) {
             if (!panel_.wantsMouse()) state_.zoom(steps);
@@ -153,20 +155,58 @@ public:
     }
 
 private:
+    // Where the picture goes in the window (pixels from the top left): the panel is a column on the left,
+    // and the picture the largest rectangle of the scene's own aspect in the rest, centred, so the window
+    // frames the scene as `render` does (a wide scene gets bars above and below, never a cropped side).
+    PictureRect pictureRect() const {
+        int width = 0, height = 0;
+        window_.framebufferSize(width, height);
+        const int column = panelColumnWidth(width, state_.showPanel, uiScale_);
+        PictureRect rect = fitPicture(state_.sceneWidth(), state_.sceneHeight(), width - column, height);
+        rect.x += column;
+        return rect;
+    }
+
     void drawFrame() {
         int width = 0, height = 0;
         window_.framebufferSize(width, height);
         if (width <= 0 || height <= 0) return; // minimized: nothing to draw, no NaN aspect
-        // The panel is a column on the left; the picture takes the rest, framed as the scene defines it.
-        const int column = panelColumnWidth(width, state_.showPanel, uiScale_);
-        const auto start = Clock::now();
-        state_.setViewport(width - column, height);
-        drawDemo(renderer_, state_, width - column, height, column);
-        gl::finish();
-        timer_.add(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+        const PictureRect picture = pictureRect();
+        gl::clearWindow(width, height, kBarColour);
+        if (picture.width > 0 && picture.height > 0) drawPicture(picture, height);
         insidePanel_ = true;
-        panel_.draw(state_, statusText(state_), column);
+        panel_.draw(state_, statusText(state_), panelColumnWidth(width, state_.showPanel, uiScale_));
         insidePanel_ = false;
+    }
+
+    // The picture, drawn offscreen at its size exactly as `render` draws (the same target and depth
+    // format), then copied pixel for pixel into its place in the window. A target that cannot be made (a
+    // huge window under a memory limit) is said once and the bars stay; the demo goes on.
+    void drawPicture(const PictureRect& picture, int windowHeight) {
+        try {
+            const auto start = Clock::now();
+            state_.setViewport(picture.width, picture.height);
+            const gl::DepthFormat depth = gl::depthFormatFor(state_.drawn().depth);
+            if (!target_ || target_->width() != picture.width || target_->height() != picture.height ||
+                targetDepth_ != depth) {
+                target_.reset();
+                target_ = std::make_unique<gl::RenderTarget>(picture.width, picture.height,
+                                                             gl::ColorFormat::Rgba8, depth);
+                targetDepth_ = depth;
+            }
+            target_->bind();
+            drawDemo(renderer_, state_, picture.width, picture.height);
+            target_->blitToWindow(picture.x, windowHeight - picture.y - picture.height);
+            gl::finish();
+            timer_.add(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+            pictureError_.clear();
+        } catch (const std::exception& e) {
+            target_.reset();
+            gl::bindDefaultFramebuffer();
+            if (e.what() != pictureError_)
+                std::fprintf(stderr, "shadelab: picture not drawn: %s\n", printable(e.what()).c_str());
+            pictureError_ = e.what();
+        }
     }
 
     Scene sized(int width, int height) const { return state_.current(width, height); }
@@ -175,11 +215,9 @@ private:
     void onClick(double x, double y) {
         try {
             if (panel_.wantsMouse()) return;
-            int width = 0, height = 0;
-            window_.framebufferSize(width, height);
-            const int column = panelColumnWidth(width, state_.showPanel, uiScale_);
-            if (x < column) return;
-            state_.probeAt(x - column, y);
+            const PictureRect picture = pictureRect();
+            if (!picture.contains(x, y)) return; // a bar: nothing to probe
+            state_.probeAt(x - picture.x, y - picture.y);
             std::printf("%s", probeText(state_).c_str());
             std::fflush(stdout);
         } catch (const std::exception& e) {
@@ -234,10 +272,8 @@ private:
     // O_CREAT | O_EXCL, so a link or a FIFO planted in the folder is never opened), then given the first
     // free shadelab-NNN names; nothing already in the folder is ever opened or replaced.
     void saveScreenshot() {
-        int width = 0, height = 0;
-        window_.framebufferSize(width, height);
-        width -=
-            panelColumnWidth(width, state_.showPanel, uiScale_); // the picture, without the panel's column
+        const PictureRect picture = pictureRect();
+        const int width = picture.width, height = picture.height;
         if (width <= 0 || height <= 0) return;
         const Scene scene = sized(width, height);
         std::string tempJson, tempPng;
@@ -247,9 +283,24 @@ private:
         };
         // Out of memory (a big window under a limit) or a write error: say so and keep the demo running.
         try {
-            const gl::RenderTarget target(width, height);
+            // The capture may compile programs (below), and Mesa's compiler does not survive an allocation
+            // that fails: first make sure of the headroom — the picture read back and encoded, and what a
+            // compile takes — so that a tight memory limit ends in "out of memory", never in a crash.
+            // (operator new called itself, through a volatile pointer: a new-expression whose memory is
+            // never used may be left out by the compiler.)
+            constexpr std::size_t kCompileHeadroom = std::size_t(64) << 20;
+            void* volatile headroom =
+                ::operator new(std::size_t(width) * std::size_t(height) * 12 + kCompileHeadroom);
+            ::operator delete(headroom);
+            // With each object's values compiled in, as `render` draws: the window's own programs take
+            // them as uniforms (a slider then recompiles nothing), which may round a highlight pixel the
+            // other way; the saved picture is the one `render` gives for the saved scene, pixel for pixel.
+            const gl::RenderTarget target(width, height, gl::ColorFormat::Rgba8,
+                                          gl::depthFormatFor(scene.depth));
             target.bind();
+            renderer_.setSpecialization(gl::Specialization::Values);
             renderer_.render(scene, width, height);
+            renderer_.setSpecialization(gl::Specialization::Lights);
             const Image image = target.readRgba8();
             gl::bindDefaultFramebuffer();
             tempJson = writeTemporary(options_.screenshotDir, sceneToJson(scene));
@@ -288,7 +339,10 @@ private:
     Window window_;
     double uiScale_; // before the panel, which is made with it
     Panel panel_;
-    gl::Renderer renderer_; // after the window: its GL objects go while the context lives
+    gl::Renderer renderer_;                    // after the window: its GL objects go while the context lives
+    std::unique_ptr<gl::RenderTarget> target_; // the picture, drawn offscreen at its size each frame
+    gl::DepthFormat targetDepth_ = gl::DepthFormat::Depth24;
+    std::string pictureError_; // the last reason the picture could not be drawn, said once
     FrameTimer timer_;
     int screenshots_ = 0;
 };
