@@ -1203,3 +1203,42 @@ TEST(FitPicture, KeepsTheScenesAspectCentredInTheArea) {
     EXPECT_FALSE(wide.contains(10, 76)) << "the bar above is not the picture";
     EXPECT_FALSE(wide.contains(10, 77 + 645)) << "the bar below is not the picture";
 }
+
+// Issue 29: the panel's material edits apply to one chosen object, or to all only when chosen so. A probe
+// click picks the object it hits; the status line names what the edits apply to, and the material's name
+// says it was edited.
+TEST(DemoPanelEdits, AProbeClickChoosesTheObjectThePanelEdits) {
+    shadelab::Scene scene;
+    scene.width = 200;
+    scene.height = 100;
+    scene.objects.resize(2);
+    scene.objects[0].center = {-1.2, 0, 0};
+    scene.objects[1].center = {1.2, 0, 0};
+    scene.objects[0].radius = scene.objects[1].radius = 0.8;
+    shadelab::app::DemoState state(scene);
+    state.setViewport(200, 100);
+    EXPECT_EQ(state.editedObjectName(), "object 1 of 2");
+    ASSERT_TRUE(state.probeAt(150, 50)) << "the right sphere is under (150, 50)";
+    EXPECT_EQ(state.editedObject, 1);
+    EXPECT_EQ(state.editedObjectName(), "object 2 of 2");
+    EXPECT_NE(shadelab::app::statusText(state).find("panel edits: object 2 of 2"), std::string::npos)
+        << shadelab::app::statusText(state);
+    ASSERT_TRUE(state.probeAt(50, 50));
+    EXPECT_EQ(state.editedObject, 0);
+
+    state.editedObject = shadelab::app::DemoState::kAllObjects; // chosen explicitly: a click keeps it
+    EXPECT_EQ(state.editedObjectName(), "all 2 objects");
+    ASSERT_TRUE(state.probeAt(150, 50));
+    EXPECT_EQ(state.editedObject, shadelab::app::DemoState::kAllObjects);
+
+    EXPECT_EQ(state.materialName(), "scene's own");
+    state.materialEdited();
+    EXPECT_EQ(state.materialName(), "scene's own, edited in the panel");
+    state.apply(shadelab::app::Command::NextMaterial);
+    EXPECT_EQ(state.materialName().find("edited"), std::string::npos)
+        << "M sets a preset: " << state.materialName();
+
+    shadelab::Scene one = scene;
+    one.objects.resize(1);
+    EXPECT_EQ(shadelab::app::DemoState(one).editedObjectName(), "the object");
+}

@@ -182,6 +182,7 @@ bool DemoState::apply(Command command) {
         break;
     case Command::NextMaterial:
         material_ = (material_ + 1) % int(materialPresets().size() + 1);
+        materialEdited_ = false;
         for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
             const Material own = initial_.objects[i].material;
             scene_.objects[i].material =
@@ -306,6 +307,8 @@ bool DemoState::probeAt(double x, double y) {
         lastChange_ = "probe off";
         return false;
     }
+    if (editedObject != kAllObjects)
+        editedObject = int(probePoint_->object); // the panel edits what was picked
     if (const auto report = probe()) {
         char text[160];
         std::snprintf(text, sizeof text, "probe: %s differs from exact by %.2f/255",
@@ -378,7 +381,17 @@ bool DemoState::autoLevel() const {
 }
 
 std::string DemoState::materialName() const {
-    return material_ == 0 ? "scene's own" : std::string(materialPresets()[std::size_t(material_ - 1)].name);
+    const std::string name =
+        material_ == 0 ? "scene's own" : std::string(materialPresets()[std::size_t(material_ - 1)].name);
+    return materialEdited_ ? name + ", edited in the panel" : name;
+}
+
+std::string DemoState::editedObjectName() const {
+    const std::size_t count = scene_.objects.size();
+    if (count == 1) return "the object";
+    if (editedObject == kAllObjects || editedObject < 0 || std::size_t(editedObject) >= count)
+        return "all " + std::to_string(count) + " objects";
+    return "object " + std::to_string(editedObject + 1) + " of " + std::to_string(count);
 }
 
 std::string DemoState::lightsName() const {

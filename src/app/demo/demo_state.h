@@ -150,6 +150,14 @@ public:
     bool showHelp = false;
     bool showPanel = true;
     bool presenting = false; // F2, --present: the large label for a class (presentationLabel)
+    // The object the control panel's material edits apply to (an index into the scene's objects), or
+    // kAllObjects, chosen explicitly. A probe click picks the object it hits.
+    static constexpr int kAllObjects = -1;
+    int editedObject = 0;
+    // "the object" (a scene of one), "object 3 of 12" or "all 12 objects": what the status line says.
+    std::string editedObjectName() const;
+    // The panel changed the material of editedObject (or all): materialName() then says so.
+    void materialEdited() { materialEdited_ = true; }
     // What the last drawn view measured, in words ("error: interior mean 2.54/255, max 98.5/255"), set by
     // drawDemo; "" for the plain scene.
     std::string viewReport;
@@ -188,8 +196,9 @@ private:
     mutable std::optional<SphereMesh> probeMesh_;
     mutable VertexNormals probeMeshNormals_ = VertexNormals::Averaged;
     bool holdingDivider_ = false, leftWasHeld_ = false;
-    int material_ = 0; // 0: the scene's own, i: materialPresets()[i − 1]
-    int lights_ = 0;   // 0: the scene's own, i: lightPresets()[i − 1]
+    int material_ = 0;            // 0: the scene's own, i: materialPresets()[i − 1]
+    bool materialEdited_ = false; // by the panel since the last M
+    int lights_ = 0;              // 0: the scene's own, i: lightPresets()[i − 1]
 };
 
 // "shadelab — phong shading, blinn-phong lighting | level 5 | 8192 triangles | 1.23 ms | H: keys": the

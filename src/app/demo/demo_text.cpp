@@ -39,6 +39,7 @@ std::string statusText(const DemoState& state) {
            (state.orthographic() ? "orthographic" : "perspective") + ", " +
            (scene.vertexNormals == VertexNormals::Averaged ? "averaged" : "exact") +
            " normals\nmaterial: " + state.materialName() + ", lights: " + state.lightsName() +
+           "\npanel edits: " + state.editedObjectName() +
            (state.viewReport.empty() ? "" : "\n" + state.viewReport) +
            (state.levelRefusal.empty() ? "" : "\n" + state.levelRefusal);
 }

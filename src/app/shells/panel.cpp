@@ -115,9 +115,22 @@ void Panel::draw(DemoState& state, const std::string& status, int columnWidth) {
         ImGui::TextUnformatted(status.c_str());
         ImGui::Checkbox("B keeps the highlight size (beta = 4 alpha)", &state.matchHighlight);
         if (!scene.objects.empty() && ImGui::CollapsingHeader("material", ImGuiTreeNodeFlags_DefaultOpen)) {
-            // The panel edits "the" material of the demo: an edit applies to every object.
-            if (materialControls(scene.objects[0].material))
-                for (SceneObject& o : scene.objects) o.material = scene.objects[0].material;
+            // An edit applies to the chosen object (a probe click picks one), or to all of them only when
+            // "all objects" (0) is chosen.
+            const int count = int(scene.objects.size());
+            if (count > 1) {
+                int chosen = state.editedObject == DemoState::kAllObjects ? 0 : state.editedObject + 1;
+                if (ImGui::SliderInt("object (0: all)", &chosen, 0, count,
+                                     chosen == 0 ? "all objects" : "object %d"))
+                    state.editedObject = chosen <= 0 ? DemoState::kAllObjects : std::min(chosen, count) - 1;
+            }
+            const bool all = count > 1 && state.editedObject == DemoState::kAllObjects;
+            const std::size_t shown = all ? 0 : std::size_t(std::clamp(state.editedObject, 0, count - 1));
+            if (materialControls(scene.objects[shown].material)) {
+                if (all)
+                    for (SceneObject& o : scene.objects) o.material = scene.objects[shown].material;
+                state.materialEdited();
+            }
         }
         if (ImGui::CollapsingHeader("lights"))
             for (std::size_t i = 0; i < scene.lights.size(); ++i) lightControls(scene.lights[i], int(i));
