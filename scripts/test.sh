@@ -103,7 +103,9 @@ scripts/setup.sh --install program,tests
 in_background "checks' packages" scripts/setup.sh --install tools
 # -O2 as the program's own build, without its debug information (a third of the compile time); warnings are
 # errors.
-SHADELAB_BUILD_TYPE=Release scripts/setup.sh --build -- -DSHADELAB_WERROR=ON \
+# Both trees link with gold (binutils, as ld): a third less time than ld.bfd for the large test executables.
+linker=(-DCMAKE_EXE_LINKER_FLAGS=-fuse-ld=gold -DCMAKE_SHARED_LINKER_FLAGS=-fuse-ld=gold)
+SHADELAB_BUILD_TYPE=Release scripts/setup.sh --build -- -DSHADELAB_WERROR=ON "${linker[@]}" \
   "-DCMAKE_CXX_FLAGS_RELEASE=-O2 -DNDEBUG" "-DCMAKE_C_FLAGS_RELEASE=-O2 -DNDEBUG"
 finish "checks' packages"
 
@@ -113,8 +115,11 @@ scripts/web.sh build
 stage "format check (clang-format)"
 git ls-files 'src/*.cpp' 'src/*.h' 'include/*.h' 'tests/*.cpp' 'tests/*.h' 'web/*.cpp' | xargs clang-format --dry-run --Werror
 
+# Debug (-O0) with line tables only (-g1): the sanitizers' reports still name file and line, for less compile
+# and link time than full debug information.
 build_asan() {
-  cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DSHADELAB_SANITIZE=ON -DSHADELAB_WERROR=ON &&
+  cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DSHADELAB_SANITIZE=ON -DSHADELAB_WERROR=ON "${linker[@]}" \
+    "-DCMAKE_CXX_FLAGS_DEBUG=-O0 -g1" "-DCMAKE_C_FLAGS_DEBUG=-O0 -g1" &&
     cmake --build build-asan -j"$jobs"
 }
 if [ "${SHADELAB_QUICK:-}" != 1 ]; then in_background "sanitizer build" build_asan; fi
