@@ -247,10 +247,14 @@ def session():
                     'const e = document.querySelector(arguments[0]); if (!e) return false;'
                     'e.value = arguments[1]; e.dispatchEvent(new Event(arguments[2])); return true;',
                     request['selector'], request['value'], request.get('event', 'change'))}
-            elif op == 'element':  # what a user sees of one element: shown or not, and its text
+            elif op == 'element':  # what a user sees of one element: shown or not, its text, value, wrapping
                 answer = {'element': page.js(
                     'const e = document.querySelector(arguments[0]);'
-                    'return e ? {hidden: e.hidden, text: e.textContent} : null;', request['selector'])}
+                    'return e ? {hidden: e.hidden, text: e.textContent, value: e.value === undefined ? null :'
+                    ' String(e.value), whiteSpace: getComputedStyle(e).whiteSpace} : null;', request['selector'])}
+            elif op == 'sleep':  # lets the page's own timers run (a notice that goes away by itself)
+                time.sleep(min(float(request['seconds']), 30))
+                answer = {}
             elif op == 'pointer':  # real mouse input through WebDriver, offsets from the canvas's centre
                 answer = {}
                 page.pointer(request)

@@ -9,6 +9,7 @@
 #include <exception>
 #include <memory>
 #include <string>
+#include <vector>
 
 #define GLFW_INCLUDE_NONE // GL comes from the one loader (gl/loader.h), never from the system headers
 #include <GLFW/glfw3.h>
@@ -37,12 +38,13 @@ struct Page {
     std::unique_ptr<DemoState> state;
     std::string rendererString;
     std::string sceneName = "defaults";
-    bool dirty = true;     // draw on the next animation frame
-    double frameMs = 0;    // the last draw, glFinish-synchronized
-    std::string drawError; // why the last draw failed, shown on the page
-    Image capture;         // shadelab_capture's pixels, alive until the next capture
-    ImageF captureFloat;   // shadelab_capture_float's
-    std::string text;      // the returned string of the last shadelab_* call
+    bool dirty = true;                 // draw on the next animation frame
+    double frameMs = 0;                // the last draw, glFinish-synchronized
+    std::string drawError;             // why the last draw failed, shown on the page
+    std::vector<std::string> warnings; // the loaded scene's, as the command line words them
+    Image capture;                     // shadelab_capture's pixels, alive until the next capture
+    ImageF captureFloat;               // shadelab_capture_float's
+    std::string text;                  // the returned string of the last shadelab_* call
 };
 
 Page& page() {
@@ -121,6 +123,10 @@ EMSCRIPTEN_KEEPALIVE const char* shadelab_load_scene(const char* json, const cha
         checkSceneTextSize(std::strlen(json), name); // the command line's 16 MiB, with its message
         Scene scene = parseScene(json, name);
         validateScene(scene);
+        // What the command line prints as "shadelab: warning: FILE: ...", shown on the page.
+        page().warnings.clear();
+        for (const std::string& warning : sceneWarnings(scene))
+            page().warnings.push_back(std::string(name) + ": " + warning);
         page().state = std::make_unique<DemoState>(scene);
         page().sceneName = name;
         page().dirty = true;
@@ -245,6 +251,7 @@ EMSCRIPTEN_KEEPALIVE const char* shadelab_ui() {
         {"sceneName", p.sceneName},
         {"renderer", p.rendererString},
         {"error", p.drawError},
+        {"warnings", p.warnings},
     };
     return give(ui.dump());
 }

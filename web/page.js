@@ -9,10 +9,16 @@ const params = new URLSearchParams(location.search);
 let api = null; // the shadelab_* functions, once the module has started
 let saved = 0;
 
-function showMessage(text) {
+// An error stays until the next action replaces it; a notice (`notice` true: the Esc note) goes after
+// four seconds.
+let noticeTimer = 0;
+function showMessage(text, notice = false) {
   const box = $('message');
+  clearTimeout(noticeTimer);
   box.textContent = text;
   box.hidden = !text;
+  box.classList.toggle('notice', notice);
+  if (notice && text) noticeTimer = setTimeout(() => showMessage(''), 4000);
 }
 
 // Called by main.cpp (and below) when the page cannot draw at all.
@@ -104,11 +110,15 @@ async function shadelabStarted() {
   new ResizeObserver(fitCanvas).observe($('view'));
   wireControls();
   const names = await fetch('scenes/index.json').then((r) => r.json()).catch(() => []);
+  $('bundled').add(new Option('(another scene)', ''));
   for (const name of names) $('bundled').add(new Option(name, name));
   const url = params.get('scene');
   let message = '';
   if (url) {
     message = await loadUrl(url);
+    // The picker names the scene shown: a bundled one by its name, anything else as another scene.
+    const bundled = names.find((name) => url === 'scenes/' + name || url === './scenes/' + name);
+    $('bundled').value = bundled || '';
   } else {
     $('bundled').value = 'showcase.json';
     message = await loadUrl('scenes/showcase.json', 'showcase.json');
@@ -196,7 +206,7 @@ function glfwKey(event) {
 function press(code) {
   const result = api.key(code);
   if (result === 2) save();
-  if (result === 3) showMessage('Esc closes the window version; in a browser, close the tab.');
+  if (result === 3) showMessage('Esc closes the window version; in a browser, close the tab.', true);
   if (result === 4) {
     if (document.fullscreenElement) document.exitFullscreen().catch(() => {});
     else document.documentElement.requestFullscreen().catch(() => {});
@@ -284,8 +294,6 @@ function refresh() {
   $('renderer').textContent = 'WebGL 2 (OpenGL ES 3.0 to the renderer): ' + ui.renderer;
   $('panel').hidden = !ui.showPanel;
   $('help').hidden = !ui.showHelp;
-  $('presentation').hidden = !ui.presenting;
-  $('presentation').textContent = ui.presentation;
   $('help-text').textContent = ui.help;
   if (ui.error) showMessage(ui.error);
   const scene = ui.current;
@@ -299,6 +307,12 @@ function refresh() {
   setIfIdle('normals', scene.vertex_normals || 'averaged');
   setIfIdle('overlay', ui.overlay);
   setIfIdle('view-kind', viewName(ui.view));
+  // The split option says what is drawn ("split: flat | gouraud"), or what V would draw.
+  $('view-kind').querySelector('option[value="split"]').textContent = ui.view.startsWith('split:')
+      ? 'split: ' + ui.view.slice(6).replace(',', ' | ') + ' (V)' : 'split: mode | exact (V)';
+  // Every warning the command line prints for this scene (a colour given as 0..255, say).
+  $('warnings').textContent = ui.warnings.map((w) => 'warning: ' + w).join('\n');
+  $('warnings').hidden = !ui.warnings.length;
   const object = ui.scene.objects[0];
   $('material').hidden = !object;
   if (object) {
@@ -335,10 +349,17 @@ function showLights(lights) {
     const group = document.createElement('div');
     group.className = 'light';
     group.append(Object.assign(document.createElement('div'), {textContent: 'light ' + (i + 1) + ': ' + light.type}));
+    // A range slider shows its number beside it (an <output> that follows the slider as it moves).
     const field = (label, input, change) => {
       input.addEventListener('change', () => edit((s) => change(s.lights[i], input)));
       const row = document.createElement('label');
-      row.append(input, ' ' + label);
+      row.append(input);
+      if (input.type === 'range') {
+        const out = Object.assign(document.createElement('output'), {value: input.value});
+        input.addEventListener('input', () => { out.value = input.value; });
+        row.append(' ', out);
+      }
+      row.append(' ' + label);
       group.append(row);
     };
     const vector = (label, key, step) => {
@@ -421,16 +442,18 @@ function wireControls() {
   $('reset').addEventListener('click', () => press(82));
   $('save').addEventListener('click', save);
   $('help-button').addEventListener('click', () => press(72));
-  $('bundled').addEventListener('change', (e) => loadUrl('scenes/' + e.target.value, e.target.value));
-  $('file').addEventListener('change', async (e) => {
-    const file = e.target.files[0];
-    if (file) loadText(await file.text(), file.name);
+  $('bundled').addEventListener('change', (e) => {
+    if (e.target.value) loadUrl('scenes/' + e.target.value, e.target.value);
   });
+  // A scene from a file is none of the bundled ones: the picker says so once it has loaded.
+  const loadOther = async (file) => {
+    if (file && !loadText(await file.text(), file.name)) $('bundled').value = '';
+  };
+  $('file').addEventListener('change', (e) => loadOther(e.target.files[0]));
   document.addEventListener('dragover', (e) => e.preventDefault());
-  document.addEventListener('drop', async (e) => {
+  document.addEventListener('drop', (e) => {
     e.preventDefault();
-    const file = e.dataTransfer.files[0];
-    if (file) loadText(await file.text(), file.name);
+    loadOther(e.dataTransfer.files[0]);
   });
 }
 

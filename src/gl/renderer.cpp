@@ -317,6 +317,18 @@ void Renderer::drawOverlay(const Scene& sized, const SceneView& view) {
     glUseProgram(0);
 }
 
+void Renderer::drawImageOver(const Image& image, int left, int top, int width, int height, int x) {
+    if (width <= 0 || height <= 0 || image.width <= 0 || image.height <= 0) return;
+    if (!imagePass_) imagePass_ = std::make_unique<ImagePass>();
+    glViewport(x, 0, width, height);
+    glDisable(GL_DEPTH_TEST);
+    imagePass_->draw(image, left, top, x, width, height);
+    glBindVertexArray(0);
+    glUseProgram(0);
+    glEnable(GL_DEPTH_TEST);
+    checkGlError("drawing an image over the scene");
+}
+
 void Renderer::drawLinesOver(const Scene& scene, std::span<const LineVertex> linesView, int width, int height,
                              int x) {
     if (width <= 0 || height <= 0 || linesView.empty()) return;

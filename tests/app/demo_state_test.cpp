@@ -498,12 +498,12 @@ TEST(DemoPresentation, LabelNamesModeLightingLevelAndExponent) {
     EXPECT_FALSE(state.presenting);
     EXPECT_TRUE(state.apply(Command::TogglePresentation));
     EXPECT_TRUE(state.presenting);
-    EXPECT_EQ(presentationLabel(state), "PHONG SHADING\nBLINN-PHONG LIGHTING | LEVEL 5 | BETA = 32");
+    EXPECT_EQ(presentationLabel(state), "PHONG SHADING\nBLINN-PHONG LIGHTING\nLEVEL 5 | BETA = 32");
     state.apply(Command::Gouraud);
     state.matchHighlight = false;
     state.apply(Command::ToggleLighting);
     state.apply(Command::LevelDown);
-    EXPECT_EQ(presentationLabel(state), "GOURAUD SHADING\nPHONG LIGHTING | LEVEL 4 | ALPHA = 32");
+    EXPECT_EQ(presentationLabel(state), "GOURAUD SHADING\nPHONG LIGHTING\nLEVEL 4 | ALPHA = 32");
     EXPECT_FALSE(state.apply(Command::ToggleFullScreen)) << "the window's to carry out";
     state.apply(Command::TogglePresentation);
     EXPECT_FALSE(state.presenting);
@@ -1241,4 +1241,62 @@ TEST(DemoPanelEdits, AProbeClickChoosesTheObjectThePanelEdits) {
     shadelab::Scene one = scene;
     one.objects.resize(1);
     EXPECT_EQ(shadelab::app::DemoState(one).editedObjectName(), "the object");
+}
+
+// Issue 29: exact shading draws no mesh, so the title, the status and the presentation label name the ray
+// cast instead of a level and a triangle count; back on a mesh mode they show the level again.
+TEST(DemoTitle, ExactShadingNamesTheRayCastNotALevel) {
+    using namespace shadelab::app;
+    DemoState state{shadelab::Scene{}};
+    state.apply(Command::Exact);
+    const std::string title = windowTitle(state, 0);
+    EXPECT_NE(title.find("exact shading, blinn-phong lighting | ray-cast per pixel, no mesh | "),
+              std::string::npos)
+        << title;
+    EXPECT_EQ(title.find("level"), std::string::npos) << title;
+    EXPECT_EQ(title.find("triangles"), std::string::npos) << title;
+    EXPECT_EQ(statusText(state).find("level"), std::string::npos) << statusText(state);
+    EXPECT_NE(presentationLabel(state).find("RAY-CAST"), std::string::npos) << presentationLabel(state);
+    state.apply(Command::Phong);
+    EXPECT_NE(windowTitle(state, 0).find("| level 5 | "), std::string::npos) << windowTitle(state, 0);
+}
+
+// Issue 29: after an orbit of 180° the probed point is on the far side of the sphere: the table says the
+// probe is hidden behind the object (and the window draws no vectors for it: probeFacesAway); orbiting
+// back shows it again.
+TEST(DemoProbe, AProbeBehindTheObjectIsSaidToBeHidden) {
+    using namespace shadelab::app;
+    DemoState state{shadelab::Scene{}};
+    state.setViewport(200, 200);
+    ASSERT_TRUE(state.probeAt(100, 100));
+    ASSERT_TRUE(state.probe());
+    EXPECT_FALSE(probeFacesAway(*state.probe()));
+    EXPECT_EQ(probeText(state).find("probe hidden"), std::string::npos);
+    state.drag(360, 0); // 0.5° a pixel: half a turn around the target
+    ASSERT_TRUE(state.probe());
+    EXPECT_TRUE(probeFacesAway(*state.probe()));
+    EXPECT_TRUE(probeText(state).starts_with("probe hidden: behind the object")) << probeText(state);
+    state.drag(-360, 0);
+    EXPECT_FALSE(probeFacesAway(*state.probe()));
+}
+
+// Issue 29: the presentation label is laid out from the picture's size alone (stable from frame to frame),
+// large for a class (lines a sixteenth of the height: 44 px at 1280x720), never wider than the picture less
+// its margins (smaller text in a narrow picture instead of a clipped line), and its box holds all three
+// lines.
+TEST(DemoPresentation, LabelImageIsLargeStableAndNeverClipped) {
+    using shadelab::app::presentationLabelImage;
+    const std::string label = "PHONG SHADING\nBLINN-PHONG LIGHTING\nLEVEL 5 | BETA = 96";
+    const auto wide = presentationLabelImage(label, 1280, 720);
+    EXPECT_GE(wide.image.height, 3 * shadelab::textLineHeight(4)) << "three lines of 44 px at 720 high";
+    EXPECT_LE(wide.image.width + 2 * wide.margin, 1280);
+    const auto again = presentationLabelImage(label, 1280, 720);
+    EXPECT_EQ(again.image.rgba, wide.image.rgba) << "the same size must give the same label";
+    for (const auto& [w, h] : {std::pair{860, 720}, std::pair{480, 720}, std::pair{1920, 1080}}) {
+        const auto fitted = presentationLabelImage(label, w, h);
+        EXPECT_LE(fitted.image.width + 2 * fitted.margin, w) << w << "x" << h << ": a line would be clipped";
+        EXPECT_LE(fitted.image.height + 2 * fitted.margin, h);
+    }
+    EXPECT_GT(presentationLabelImage(label, 1920, 1080).image.height, wide.image.height)
+        << "scaled with the window";
 }

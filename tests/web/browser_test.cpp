@@ -30,6 +30,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "app/demo/demo_state.h"
 #include "cli/run_process.h"
 #include "gl/gl_test_support.h"
 #include "gl/projected_mesh.h"
@@ -40,6 +41,7 @@ namespace shadelab::test {
 namespace {
 
 namespace fs = std::filesystem;
+using cli_test::describe;
 using cli_test::Outcome;
 using cli_test::RunOptions;
 using cli_test::runShadelab;
@@ -120,6 +122,7 @@ public:
         return add({{"op", "screenshot"}, {"path", path.string()}});
     }
     std::size_t console() { return add({{"op", "console"}}); }
+    std::size_t sleep(double seconds) { return add({{"op", "sleep"}, {"seconds", seconds}}); }
 
     // Runs the batch; false (with the test failed or skipped) when there is no browser to run it in.
     bool run(const fs::path& folder) {
@@ -736,20 +739,88 @@ TEST_F(Browser, SDownloadsThePictureAndItsScene) {
 TEST_F(Browser, PresentationLabelShowsAndF2HidesIt) {
     Session session;
     session.open("?present");
-    const std::size_t shown = session.element("#presentation");
     const std::size_t ui = session.ui();
+    const std::size_t canvas = session.resize(1280, 720);
+    session.screenshot(dir_ / "with-label.png");
     session.key(kKeyF2);
-    const std::size_t hidden = session.element("#presentation");
+    session.screenshot(dir_ / "without.png");
     const std::size_t console = session.console();
     if (!session.run(dir_)) return;
-    const json label = session.answer(shown).at("element");
-    EXPECT_FALSE(label.at("hidden").get<bool>());
-    EXPECT_EQ(label.at("text"), session.answer(ui).at("ui").at("presentation"));
-    EXPECT_TRUE(
-        label.at("text").get<std::string>().starts_with("PHONG SHADING\nBLINN-PHONG LIGHTING | LEVEL 3"))
-        << label;
-    EXPECT_TRUE(session.answer(hidden).at("element").at("hidden").get<bool>());
+    const std::string label = session.answer(ui).at("ui").at("presentation");
+    EXPECT_TRUE(label.starts_with("PHONG SHADING\nBLINN-PHONG LIGHTING\nLEVEL 3")) << label;
+    // Issue 29: the label is drawn into the picture by the same code as the window's (drawDemo with
+    // presentationLabelImage), so the page shows it where and as large as that layout says: the pixels
+    // that F2 changes are those of the label's box at the bottom left of the canvas, and most of the box.
+    const Image a = readPng(dir_ / "with-label.png"), b = readPng(dir_ / "without.png");
+    ASSERT_EQ(a.width, b.width);
+    ASSERT_EQ(a.height, b.height);
+    const json size = session.answer(canvas).at("canvas"); // drawing buffer, then CSS size
+    const int width = size[0], height = size[1];
+    const auto layout = shadelab::app::presentationLabelImage(label, width, height);
+    int minX = a.width, minY = a.height, maxX = -1, maxY = -1, changed = 0;
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x)
+            if (!std::equal(a.pixel(x, y), a.pixel(x, y) + 3, b.pixel(x, y))) {
+                ++changed;
+                minX = std::min(minX, x), maxX = std::max(maxX, x), minY = std::min(minY, y),
+                maxY = std::max(maxY, y);
+            }
+    ASSERT_GT(changed, 0) << "F2 changed nothing: no label was drawn";
+    // The canvas is the page's right part, as tall as the page (the screenshot's CSS pixels at ratio 1).
+    const int canvasLeft = a.width - width;
+    EXPECT_EQ(minX, canvasLeft + layout.margin) << "the box's left edge";
+    EXPECT_EQ(maxY, height - layout.margin - 1) << "the box's bottom edge";
+    EXPECT_EQ(maxX - minX + 1, layout.image.width) << "the box is as wide as the layout says";
+    EXPECT_EQ(maxY - minY + 1, layout.image.height) << "the box is as tall as the layout says";
     expectCleanConsole(session.answer(console).at("console"));
+}
+
+// Issue 29, the page's gaps: the picker names a bundled scene opened by ?scene=; the view menu says what
+// the split draws; every warning the command line prints for a scene shows on the page; the probe's table
+// keeps its columns (no wrapping); a spot's cutoff and exponent sliders show their numbers; Esc's note
+// goes away by itself.
+TEST_F(Browser, PickerViewMenuWarningsProbeSlidersAndEscAsTheCommandLineHasThem) {
+    const std::string colourScene = R"({"image": {"width": 64, "height": 64},
+      "lights": [{"type": "spot", "position": [0, 2, 4], "direction": [0, -0.4, -1], "cutoff_deg": 27.5,
+                  "exponent": 12, "diffuse": [200, 30, 30]}]})";
+    std::ofstream(dir_ / "colour.json") << colourScene;
+    const Outcome cli =
+        runWith({"render", (dir_ / "colour.json").string(), "--out", (dir_ / "c.png").string()}, dir_);
+    ASSERT_EQ(cli.exitCode, 0) << describe(cli);
+    std::vector<std::string> cliWarnings; // "shadelab: warning: FILE: WARNING", FILE the path given
+    for (std::size_t at = 0; (at = cli.err.find("shadelab: warning: ", at)) != std::string::npos;) {
+        const std::size_t start = cli.err.find(": ", cli.err.find("colour.json", at)) + 2;
+        const std::size_t end = cli.err.find('\n', start);
+        cliWarnings.push_back(cli.err.substr(start, end - start));
+        at = end;
+    }
+    ASSERT_FALSE(cliWarnings.empty()) << "the command line warned of nothing: " << cli.err;
+
+    Session session;
+    session.open("?scene=scenes/grid.json&view=split:flat,gouraud");
+    const std::size_t picker = session.element("#bundled");
+    const std::size_t split = session.element("#view-kind option[value=\"split\"]");
+    const std::size_t probeStyle = session.element("#probe");
+    session.loadText(colourScene, "colour.json");
+    const std::size_t warnings = session.element("#warnings");
+    const std::size_t slider = session.element("#lights output");
+    session.key(256); // Esc
+    const std::size_t escNote = session.element("#message");
+    session.sleep(4.5);
+    const std::size_t later = session.element("#message");
+    if (!session.run(dir_)) return;
+    EXPECT_EQ(session.answer(picker).at("element").at("value"), "grid.json");
+    EXPECT_EQ(session.answer(split).at("element").at("text"), "split: flat | gouraud (V)");
+    EXPECT_EQ(session.answer(probeStyle).at("element").at("whiteSpace"), "pre");
+    const json shown = session.answer(warnings).at("element");
+    EXPECT_FALSE(shown.at("hidden").get<bool>());
+    for (const std::string& warning : cliWarnings)
+        EXPECT_NE(shown.at("text").get<std::string>().find("warning: colour.json: " + warning),
+                  std::string::npos)
+            << "the command line's warning '" << warning << "' is not on the page: " << shown;
+    EXPECT_EQ(session.answer(slider).at("element").at("text"), "27.5") << "the cutoff slider's number";
+    EXPECT_FALSE(session.answer(escNote).at("element").at("hidden").get<bool>());
+    EXPECT_TRUE(session.answer(later).at("element").at("hidden").get<bool>()) << "Esc's note stayed";
 }
 
 // Where WebGL 2 is missing the page says so, never a blank canvas.

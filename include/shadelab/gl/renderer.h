@@ -10,6 +10,7 @@
 
 #include "shadelab/gl/mesh.h"
 #include "shadelab/gl/program.h"
+#include "shadelab/gl/screen_pass.h"
 #include "shadelab/gl/views.h"
 #include "shadelab/scene.h"
 
@@ -36,6 +37,9 @@ public:
 
     // Lines given in view space drawn over what render() drew into the same viewport, never hidden (the
     // demo's probe vectors).
+    // A CPU-made image (a label) blended over what render() drew into the viewport (x, 0, width, height),
+    // its top left corner at (left, top) pixels from the viewport's top left.
+    void drawImageOver(const Image& image, int left, int top, int width, int height, int x = 0);
     void drawLinesOver(const Scene& scene, std::span<const LineVertex> linesView, int width, int height,
                        int x = 0);
 
@@ -75,7 +79,8 @@ private:
     std::unique_ptr<LineProgram> lineProgram_;
     std::map<std::tuple<int, VertexNormals, Overlay>, std::unique_ptr<GpuLines>> overlays_;
     std::unique_ptr<GpuLines> streamedLines_;
-    VertexArray emptyVertexArray_; // exact shading's proxies have no attributes
+    std::unique_ptr<ImagePass> imagePass_; // drawImageOver's, made at its first use
+    VertexArray emptyVertexArray_;         // exact shading's proxies have no attributes
     bool exactObjectIds_ = false, exactToon_ = false;
     std::unique_ptr<Views> views_;
 };

@@ -30,13 +30,21 @@ void drawDemo(gl::Renderer& renderer, DemoState& state, int width, int height, i
     renderer.render(scene, width, height, x);
     state.viewReport = viewReport(scene, renderer.viewFigures());
     const auto probe = state.probe();
-    if (!probe) return;
-    // The vectors are as long as 0.6 of the object's largest semi-axis: visible, and inside the picture.
-    const SceneObject& object = scene.objects[probe->point.object];
-    const double length =
-        0.6 * object.radius *
-        std::max({std::abs(object.scale.x), std::abs(object.scale.y), std::abs(object.scale.z)});
-    renderer.drawLinesOver(scene, probeLines(*probe, length), width, height, x);
+    if (probe && !probeFacesAway(*probe)) { // behind the object, the probe's table says so instead
+        // The vectors are as long as 0.6 of the object's largest semi-axis: visible, and inside the picture.
+        const SceneObject& object = scene.objects[probe->point.object];
+        const double length =
+            0.6 * object.radius *
+            std::max({std::abs(object.scale.x), std::abs(object.scale.y), std::abs(object.scale.z)});
+        renderer.drawLinesOver(scene, probeLines(*probe, length), width, height, x);
+    }
+    // Presentation mode: the label over the bottom left, on top of everything; drawn here, so the window
+    // and the page draw the same label the same way.
+    if (state.presenting) {
+        const PresentationLabelImage label = presentationLabelImage(presentationLabel(state), width, height);
+        renderer.drawImageOver(label.image, label.margin, height - label.margin - label.image.height, width,
+                               height, x);
+    }
 }
 
 } // namespace shadelab::app

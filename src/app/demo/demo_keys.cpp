@@ -54,16 +54,22 @@ std::optional<Command> commandForKey(int key) {
     return std::nullopt;
 }
 
+std::vector<std::pair<std::string, std::string>> keyHelpRows() {
+    std::vector<std::pair<std::string, std::string>> rows;
+    for (const KeyBinding& b : bindings()) rows.emplace_back(b.label, b.action);
+    rows.emplace_back("drag", "orbit around the target");
+    rows.emplace_back("wheel", "zoom");
+    rows.emplace_back("right-drag", "move the light around the target");
+    rows.emplace_back("click", "probe a surface point: l, n, v, r/h and the terms, mode vs exact");
+    return rows;
+}
+
 std::string keyHelpText() {
     std::string text;
-    for (const KeyBinding& b : bindings()) {
-        std::string label(b.label);
-        label.resize(std::max<std::size_t>(label.size(), 8), ' ');
-        text += label + " " + std::string(b.action) + "\n";
+    for (auto [keys, action] : keyHelpRows()) {
+        keys.resize(std::max<std::size_t>(keys.size(), 8), ' ');
+        text += keys + " " + action + "\n";
     }
-    text += "drag    orbit around the target\nwheel   zoom\n"
-            "right-drag  move the light around the target\n"
-            "click   probe a surface point: l, n, v, r/h and the terms, mode vs exact\n";
     return text;
 }
 

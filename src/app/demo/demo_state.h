@@ -8,8 +8,10 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
+#include "shadelab/image.h"
 #include "shadelab/probe.h"
 #include "shadelab/scene.h"
 #include "shadelab/sphere.h"
@@ -62,6 +64,8 @@ struct KeyBinding {
 std::span<const KeyBinding> keyBindings();
 std::optional<Command> commandForKey(int key);
 std::string keyHelpText(); // one line per binding
+// The same as rows (keys, action): the window's help draws them as a table whose wrapped lines stay aligned.
+std::vector<std::pair<std::string, std::string>> keyHelpRows();
 
 // Orbits the target on a sphere: azimuth around +y, elevation clamped short of the poles so the camera
 // frame (up = +y) is never degenerate.
@@ -206,10 +210,19 @@ private:
 std::string windowTitle(const DemoState& state, double frameMs);
 // The control panel's first lines: modes, level, projection, normals, material and lights.
 std::string statusText(const DemoState& state);
-// Presentation mode's label, large enough for the back of a classroom: "PHONG SHADING" over "BLINN-PHONG
-// LIGHTING | LEVEL 5 | BETA = 96" (ALPHA under Phong lighting; the first object's exponent). ASCII: the
-// window's built-in font has no Greek letters.
+// Presentation mode's label, large enough for the back of a classroom: "PHONG SHADING", "BLINN-PHONG
+// LIGHTING" and "LEVEL 5 | BETA = 96" on three lines (ALPHA under Phong lighting; the first object's
+// exponent; RAY-CAST instead of the level in exact mode). ASCII, upper case, as it has always read.
 std::string presentationLabel(const DemoState& state);
+// The label as the window and the page both draw it over the bottom left of a picture of width × height:
+// DejaVu Sans Mono Bold on a translucent dark box, its lines as tall as a sixteenth of the picture's height
+// (45 px at 720) or smaller where the widest line would not fit the width, so it is never clipped; the
+// same picture size always gives the same image. `margin` is the gap to the picture's left and bottom.
+struct PresentationLabelImage {
+    Image image;
+    int margin = 0;
+};
+PresentationLabelImage presentationLabelImage(const std::string& label, int width, int height);
 // The probe's table for the panel and the page: the ambient, diffuse and specular terms and the pixel for
 // the current mode beside the exact ones, their difference in 1/255, and the vectors n, v, l, r or h.
 std::string probeText(const ProbeReport& probe, ShadingMode mode, LightingModel lighting);
@@ -217,5 +230,8 @@ std::string probeText(const ProbeReport& probe, ShadingMode mode, LightingModel 
 std::string probeText(const DemoState& state);
 // The largest difference of the mode's pixel from the exact one over R, G, B, in units of 1/255.
 double probeError255(const ProbeReport& probe);
+// The probed point is on the far side of its object from the viewer (after an orbit): n · v < 0 at the
+// exact surface point. Its vectors are then not drawn, and the table says so.
+bool probeFacesAway(const ProbeReport& probe);
 
 } // namespace shadelab::app

@@ -22,20 +22,28 @@ std::string modes(const Scene& scene) {
            " lighting";
 }
 
+// What is drawn: the mesh's level (and "(auto)"), or for exact shading, which draws no mesh, the ray cast.
+std::string geometry(const DemoState& state, const Scene& drawn) {
+    if (drawn.shading == ShadingMode::Exact) return "ray-cast per pixel, no mesh";
+    return "level " + std::to_string(state.level()) + (state.autoLevel() ? " (auto)" : "");
+}
+
 } // namespace
 
 std::string windowTitle(const DemoState& state, double frameMs) {
     char timing[32];
     std::snprintf(timing, sizeof timing, "%.2f ms", frameMs);
-    return "shadelab — " + modes(state.drawn()) + " | level " + std::to_string(state.level()) +
-           (state.autoLevel() ? " (auto)" : "") + " | " + std::to_string(state.triangleCount()) +
-           " triangles | " + timing + (state.viewReport.empty() ? "" : " | " + state.viewReport) +
-           " | H: keys" + (state.lastChange().empty() ? "" : " | " + state.lastChange());
+    const Scene drawn = state.drawn();
+    const std::string triangles =
+        drawn.shading == ShadingMode::Exact ? "" : std::to_string(state.triangleCount()) + " triangles | ";
+    return "shadelab — " + modes(drawn) + " | " + geometry(state, drawn) + " | " + triangles + timing +
+           (state.viewReport.empty() ? "" : " | " + state.viewReport) + " | H: keys" +
+           (state.lastChange().empty() ? "" : " | " + state.lastChange());
 }
 
 std::string statusText(const DemoState& state) {
     const Scene scene = state.drawn();
-    return modes(scene) + "\nlevel " + std::to_string(state.level()) + ", " +
+    return modes(scene) + "\n" + geometry(state, scene) + ", " +
            (state.orthographic() ? "orthographic" : "perspective") + ", " +
            (scene.vertexNormals == VertexNormals::Averaged ? "averaged" : "exact") +
            " normals\nmaterial: " + state.materialName() + ", lights: " + state.lightsName() +
@@ -49,9 +57,15 @@ double probeError255(const ProbeReport& probe) {
     return 255 * std::max({d.x, d.y, d.z});
 }
 
+bool probeFacesAway(const ProbeReport& probe) {
+    const SurfacePoint& p = probe.exact.pointView;
+    return glm::dot(p.normal, p.toViewer) < 0;
+}
+
 std::string probeText(const ProbeReport& probe, ShadingMode mode, LightingModel lighting) {
     char line[200];
-    std::string text;
+    std::string text =
+        probeFacesAway(probe) ? "probe hidden: behind the object (orbit back to see its vectors)\n" : "";
     auto row = [&](const char* name, const glm::dvec3& a, const glm::dvec3& b) {
         std::snprintf(line, sizeof line, "%-9s %6.3f %6.3f %6.3f | %6.3f %6.3f %6.3f\n", name, a.x, a.y, a.z,
                       b.x, b.y, b.z);
@@ -94,9 +108,11 @@ std::string probeText(const DemoState& state) {
 
 std::string presentationLabel(const DemoState& state) {
     const Scene scene = state.drawn();
+    // Three short lines rather than two long ones: the label's letters can be larger in the same width.
     std::string label = std::string(toString(scene.shading)) + " shading\n" +
-                        std::string(toString(scene.lighting)) + " lighting | level " +
-                        std::to_string(state.level());
+                        std::string(toString(scene.lighting)) + " lighting\n" +
+                        (scene.shading == ShadingMode::Exact ? std::string("ray-cast")
+                                                             : "level " + std::to_string(state.level()));
     if (!scene.objects.empty()) {
         char exponent[48];
         std::snprintf(exponent, sizeof exponent, " | %s = %g",
@@ -105,6 +121,31 @@ std::string presentationLabel(const DemoState& state) {
         label += exponent;
     }
     return upperAscii(label);
+}
+
+PresentationLabelImage presentationLabelImage(const std::string& label, int width, int height) {
+    std::vector<std::string> lines;
+    for (std::size_t start = 0; start <= label.size();) {
+        const std::size_t end = std::min(label.find('\n', start), label.size());
+        lines.push_back(label.substr(start, end - start));
+        start = end + 1;
+    }
+    const int margin = std::max(4, height / 48);
+    // The largest scale whose lines are at most a sixteenth of the height and whose widest line, with the
+    // box's padding, fits the width less the margins; at least 1 (a picture too small for that clips).
+    int scale = std::clamp(height / 16 / textLineHeight(1), 1, kMaxTextScale);
+    const auto boxWidth = [&](int s) {
+        int widest = 0;
+        for (const std::string& line : lines) widest = std::max(widest, textWidth(line, s));
+        return widest + 2 * textLineHeight(s) / 2;
+    };
+    while (scale > 1 && boxWidth(scale) > width - 2 * margin) --scale;
+    const int pad = textLineHeight(scale) / 2;
+    Image image(boxWidth(scale), int(lines.size()) * textLineHeight(scale) + 2 * pad);
+    fillRect(image, 0, 0, image.width, image.height, {0, 0, 0, 153}); // 60 % black, as the page had
+    for (std::size_t i = 0; i < lines.size(); ++i)
+        drawText(image, pad, pad + int(i) * textLineHeight(scale), lines[i], scale, {255, 255, 255, 255});
+    return {std::move(image), margin};
 }
 
 } // namespace shadelab::app

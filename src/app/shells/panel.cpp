@@ -33,7 +33,9 @@ bool materialControls(Material& m) {
     changed |= colorEdit("k_d diffuse", m.diffuse);
     changed |= colorEdit("k_s specular", m.specular);
     float shininess = float(m.shininess);
-    if (ImGui::SliderFloat("shininess", &shininess, 1, 1000, "%.1f", ImGuiSliderFlags_Logarithmic)) {
+    // A drag field, not a slider: a slider's handle covers its digits. Logarithmic: 1..1000 by feel.
+    if (ImGui::DragFloat("shininess", &shininess, 0.5f, 1, 1000, "%.1f",
+                         ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp)) {
         m.shininess = std::max(1.0f, shininess); // DESIGN §3: exponents >= 1
         changed = true;
     }
@@ -58,7 +60,9 @@ void lightControls(Light& light, int index) {
         }
         if (light.type == LightType::Point || light.type == LightType::Spot) {
             glm::dvec3 a = light.attenuation;
-            if (dragVec3("attenuation a b c", a, 0.01f)) {
+            // The formula on a line of its own: beside the three fields the label wrapped.
+            ImGui::TextUnformatted("attenuation 1 / (a + b t + c t^2): a b c");
+            if (dragVec3("##attenuation", a, 0.01f)) {
                 a = glm::max(a, glm::dvec3(0)); // DESIGN §3: a, b, c >= 0 with a positive sum
                 if (a.x + a.y + a.z > 0) light.attenuation = a;
             }
@@ -120,8 +124,8 @@ void Panel::draw(DemoState& state, const std::string& status, int columnWidth) {
             const int count = int(scene.objects.size());
             if (count > 1) {
                 int chosen = state.editedObject == DemoState::kAllObjects ? 0 : state.editedObject + 1;
-                if (ImGui::SliderInt("object (0: all)", &chosen, 0, count,
-                                     chosen == 0 ? "all objects" : "object %d"))
+                if (ImGui::DragInt("object (0: all)", &chosen, 0.1f, 0, count,
+                                   chosen == 0 ? "all objects" : "object %d", ImGuiSliderFlags_AlwaysClamp))
                     state.editedObject = chosen <= 0 ? DemoState::kAllObjects : std::min(chosen, count) - 1;
             }
             const bool all = count > 1 && state.editedObject == DemoState::kAllObjects;
@@ -153,23 +157,6 @@ void Panel::draw(DemoState& state, const std::string& status, int columnWidth) {
         ImGui::PopTextWrapPos();
         ImGui::End();
     }
-    if (state.presenting) {
-        // For the back of a classroom: bottom left of the picture, three times the text size.
-        const ImVec2 display = ImGui::GetIO().DisplaySize;
-        ImGui::SetNextWindowPos({float(columnWidth) + 16, display.y - 16}, ImGuiCond_Always, {0, 1});
-        ImGui::SetNextWindowBgAlpha(0.6f);
-        ImGui::Begin("presentation", nullptr,
-                     ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs |
-                         ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
-                         ImGuiWindowFlags_NoFocusOnAppearing);
-        // Three times the text size, or less where the picture is too narrow for the label to fit.
-        const std::string label = presentationLabel(state);
-        const float width = ImGui::CalcTextSize(label.c_str()).x;
-        const float room = display.x - float(columnWidth) - 48;
-        ImGui::SetWindowFontScale(std::clamp(room / std::max(width, 1.0f), 0.5f, 3.0f));
-        ImGui::TextUnformatted(label.c_str());
-        ImGui::End();
-    }
     if (state.showHelp) {
         // Readable in any window: at most the window less a margin, lines wrapped to its width, and a
         // scroll bar when the window is too short for all of it.
@@ -178,8 +165,22 @@ void Panel::draw(DemoState& state, const std::string& status, int columnWidth) {
         ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Always, {0.5f, 0.5f});
         ImGui::SetNextWindowSizeConstraints({width, 0}, {width, std::max(60.0f, display.y - 16)});
         ImGui::SetNextWindowSize({width, 0}, ImGuiCond_Always);
+        // Opaque (the panel's text must not show through), and a table: a description that wraps stays in
+        // its column instead of running back under the keys.
+        ImGui::SetNextWindowBgAlpha(1.0f);
         ImGui::Begin("keys", nullptr, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoResize);
-        ImGui::TextWrapped("%s", keyHelpText().c_str());
+        if (ImGui::BeginTable("key table", 2, ImGuiTableFlags_SizingFixedFit)) {
+            ImGui::TableSetupColumn("key", ImGuiTableColumnFlags_WidthFixed);
+            ImGui::TableSetupColumn("action", ImGuiTableColumnFlags_WidthStretch);
+            for (const auto& [keys, action] : keyHelpRows()) {
+                ImGui::TableNextRow();
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(keys.c_str());
+                ImGui::TableNextColumn();
+                ImGui::TextWrapped("%s", action.c_str());
+            }
+            ImGui::EndTable();
+        }
         ImGui::End();
     }
     ImGui::Render();
