@@ -68,7 +68,7 @@ std::string keyHelpText() {
     std::string text;
     for (auto [keys, action] : keyHelpRows()) {
         keys.resize(std::max<std::size_t>(keys.size(), 8), ' ');
-        text += keys + " " + action + "\n";
+        text.append(keys).append(" ").append(action).append("\n");
     }
     return text;
 }
