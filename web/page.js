@@ -288,9 +288,10 @@ function refresh() {
   ui = api.ui();
   document.title = ui.title;
   $('status').textContent = ui.status;
+  // The table keeps its columns (white-space: pre), so the hint is broken into short lines of its own.
   $('probe').textContent = ui.probe ||
-      'Click a point of an object: its l, n, v and r or h are drawn there, and the terms of the current mode ' +
-      'show here beside the exact ones. Right-drag (or Shift + drag) moves the light; W shows the mesh.';
+      'Click a point of an object: its\nl, n, v and r or h are drawn there,\nand the terms of the current mode\n' +
+      'show here beside the exact ones.\nRight-drag (or Shift + drag) moves\nthe light; W shows the mesh.';
   $('renderer').textContent = 'WebGL 2 (OpenGL ES 3.0 to the renderer): ' + ui.renderer;
   $('panel').hidden = !ui.showPanel;
   $('help').hidden = !ui.showHelp;

@@ -1281,14 +1281,14 @@ TEST(DemoProbe, AProbeBehindTheObjectIsSaidToBeHidden) {
 }
 
 // Issue 29: the presentation label is laid out from the picture's size alone (stable from frame to frame),
-// large for a class (lines a sixteenth of the height: 44 px at 1280x720), never wider than the picture less
+// large for a class (lines a twelfth of the height: 55 px at 1280x720), never wider than the picture less
 // its margins (smaller text in a narrow picture instead of a clipped line), and its box holds all three
 // lines.
 TEST(DemoPresentation, LabelImageIsLargeStableAndNeverClipped) {
     using shadelab::app::presentationLabelImage;
     const std::string label = "PHONG SHADING\nBLINN-PHONG LIGHTING\nLEVEL 5 | BETA = 96";
     const auto wide = presentationLabelImage(label, 1280, 720);
-    EXPECT_GE(wide.image.height, 3 * shadelab::textLineHeight(4)) << "three lines of 44 px at 720 high";
+    EXPECT_GE(wide.image.height, 3 * shadelab::textLineHeight(5)) << "three lines of 55 px at 720 high";
     EXPECT_LE(wide.image.width + 2 * wide.margin, 1280);
     const auto again = presentationLabelImage(label, 1280, 720);
     EXPECT_EQ(again.image.rgba, wide.image.rgba) << "the same size must give the same label";

@@ -215,8 +215,8 @@ std::string statusText(const DemoState& state);
 // exponent; RAY-CAST instead of the level in exact mode). ASCII, upper case, as it has always read.
 std::string presentationLabel(const DemoState& state);
 // The label as the window and the page both draw it over the bottom left of a picture of width × height:
-// DejaVu Sans Mono Bold on a translucent dark box, its lines as tall as a sixteenth of the picture's height
-// (45 px at 720) or smaller where the widest line would not fit the width, so it is never clipped; the
+// DejaVu Sans Mono Bold on a translucent dark box, its lines as tall as a twelfth of the picture's height
+// (55 px at 720) or smaller where the widest line would not fit the width, so it is never clipped; the
 // same picture size always gives the same image. `margin` is the gap to the picture's left and bottom.
 struct PresentationLabelImage {
     Image image;

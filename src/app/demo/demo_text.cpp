@@ -131,9 +131,9 @@ PresentationLabelImage presentationLabelImage(const std::string& label, int widt
         start = end + 1;
     }
     const int margin = std::max(4, height / 48);
-    // The largest scale whose lines are at most a sixteenth of the height and whose widest line, with the
+    // The largest scale whose lines are at most a twelfth of the height and whose widest line, with the
     // box's padding, fits the width less the margins; at least 1 (a picture too small for that clips).
-    int scale = std::clamp(height / 16 / textLineHeight(1), 1, kMaxTextScale);
+    int scale = std::clamp(height / 12 / textLineHeight(1), 1, kMaxTextScale);
     const auto boxWidth = [&](int s) {
         int widest = 0;
         for (const std::string& line : lines) widest = std::max(widest, textWidth(line, s));
