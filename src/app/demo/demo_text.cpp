@@ -134,17 +134,18 @@ PresentationLabelImage presentationLabelImage(const std::string& label, int widt
     // The largest scale whose lines are at most a twelfth of the height and whose widest line, with the
     // box's padding, fits the width less the margins; at least 1 (a picture too small for that clips).
     int scale = std::clamp(height / 12 / textLineHeight(1), 1, kMaxTextScale);
+    const auto pad = [](int s) { return textLineHeight(s) / 2; }; // half a line around the text
     const auto boxWidth = [&](int s) {
         int widest = 0;
         for (const std::string& line : lines) widest = std::max(widest, textWidth(line, s));
-        return widest + 2 * textLineHeight(s) / 2;
+        return widest + 2 * pad(s);
     };
     while (scale > 1 && boxWidth(scale) > width - 2 * margin) --scale;
-    const int pad = textLineHeight(scale) / 2;
-    Image image(boxWidth(scale), int(lines.size()) * textLineHeight(scale) + 2 * pad);
+    Image image(boxWidth(scale), int(lines.size()) * textLineHeight(scale) + 2 * pad(scale));
     fillRect(image, 0, 0, image.width, image.height, {0, 0, 0, 153}); // 60 % black, as the page had
     for (std::size_t i = 0; i < lines.size(); ++i)
-        drawText(image, pad, pad + int(i) * textLineHeight(scale), lines[i], scale, {255, 255, 255, 255});
+        drawText(image, pad(scale), pad(scale) + int(i) * textLineHeight(scale), lines[i], scale,
+                 {255, 255, 255, 255});
     return {std::move(image), margin};
 }
 

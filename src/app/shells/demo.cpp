@@ -161,6 +161,9 @@ private:
     PictureRect pictureRect() const {
         int width = 0, height = 0;
         window_.framebufferSize(width, height);
+        return pictureRect(width, height);
+    }
+    PictureRect pictureRect(int width, int height) const {
         const int column = panelColumnWidth(width, state_.showPanel, uiScale_);
         PictureRect rect = fitPicture(state_.sceneWidth(), state_.sceneHeight(), width - column, height);
         rect.x += column;
@@ -171,7 +174,7 @@ private:
         int width = 0, height = 0;
         window_.framebufferSize(width, height);
         if (width <= 0 || height <= 0) return; // minimized: nothing to draw, no NaN aspect
-        const PictureRect picture = pictureRect();
+        const PictureRect picture = pictureRect(width, height);
         gl::clearWindow(width, height, kBarColour);
         if (picture.width > 0 && picture.height > 0) drawPicture(picture, height);
         insidePanel_ = true;
@@ -186,7 +189,7 @@ private:
         try {
             const auto start = Clock::now();
             state_.setViewport(picture.width, picture.height);
-            const gl::DepthFormat depth = gl::depthFormatFor(state_.drawn().depth);
+            const gl::DepthFormat depth = gl::depthFormatFor(state_.scene().depth); // what drawn() keeps
             if (!target_ || target_->width() != picture.width || target_->height() != picture.height ||
                 targetDepth_ != depth) {
                 target_.reset();
@@ -298,9 +301,14 @@ private:
             const gl::RenderTarget target(width, height, gl::ColorFormat::Rgba8,
                                           gl::depthFormatFor(scene.depth));
             target.bind();
+            // Back to the window's own programs however the render ends (a throw too: otherwise every later
+            // slider step would compile a program).
+            struct WindowPrograms {
+                gl::Renderer& renderer;
+                ~WindowPrograms() { renderer.setSpecialization(gl::Specialization::Lights); }
+            } restore{renderer_};
             renderer_.setSpecialization(gl::Specialization::Values);
             renderer_.render(scene, width, height);
-            renderer_.setSpecialization(gl::Specialization::Lights);
             const Image image = target.readRgba8();
             gl::bindDefaultFramebuffer();
             tempJson = writeTemporary(options_.screenshotDir, sceneToJson(scene));
