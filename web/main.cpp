@@ -36,6 +36,7 @@ struct Page {
     GLFWwindow* window = nullptr;
     std::unique_ptr<gl::Renderer> renderer;
     std::unique_ptr<DemoState> state;
+    app::FramedPicture picture; // the scene's framing in the canvas, bars around it (as the window)
     std::string rendererString;
     std::string sceneName = "defaults";
     bool dirty = true;                 // draw on the next animation frame
@@ -72,6 +73,15 @@ void canvasSize(int& width, int& height) {
     emscripten_get_canvas_element_size("#canvas", &width, &height);
 }
 
+// Where the picture goes in the canvas (canvas pixels from its top left): the largest rectangle of the
+// scene's aspect, centred, as the window places it beside its panel, so the page frames the scene as
+// `render` does.
+app::PictureRect pictureRect() {
+    int width = 0, height = 0;
+    canvasSize(width, height);
+    return app::fitPicture(page().state->sceneWidth(), page().state->sceneHeight(), width, height);
+}
+
 void frame() {
     Page& p = page();
     int width = 0, height = 0;
@@ -80,9 +90,7 @@ void frame() {
     p.dirty = false;
     try {
         const double start = emscripten_get_now();
-        gl::bindDefaultFramebuffer();
-        p.state->setViewport(width, height);
-        app::drawDemo(*p.renderer, *p.state, width, height);
+        p.picture.draw(*p.renderer, *p.state, pictureRect(), width, height);
         gl::finish();
         p.frameMs = emscripten_get_now() - start;
         p.drawError.clear();
@@ -91,7 +99,7 @@ void frame() {
     }
 }
 
-// Draws what the canvas shows, at width × height (the scene's image size for 0 × 0), into a framebuffer of
+// Draws the canvas's picture, at width × height (the scene's image size for 0 × 0), into a framebuffer of
 // the program's own and reads it back, rows top first (the same read-back as `shadelab render`). Returns
 // false with the message in the ui's "error" on failure.
 template <typename Read> bool captureInto(int width, int height, gl::ColorFormat format, Read read) {
@@ -186,9 +194,10 @@ EMSCRIPTEN_KEEPALIVE void shadelab_drag(double dx, double dy) {
 }
 
 // The pointer at canvas pixel (x, y), top left origin, on every move and left-button change: the profile
-// view's row, the split view's divider (DemoState::pointer, as in the window).
+// view's row, the split view's divider (DemoState::pointer, in the picture's pixels, as in the window).
 EMSCRIPTEN_KEEPALIVE void shadelab_pointer(double x, double y, int leftHeld) {
-    page().state->pointer(x, y, leftHeld != 0);
+    const app::PictureRect picture = pictureRect();
+    page().state->pointer(x - picture.x, y - picture.y, leftHeld != 0);
     page().dirty = true;
 }
 
@@ -198,10 +207,43 @@ EMSCRIPTEN_KEEPALIVE void shadelab_drag_light(double dx, double dy) {
     page().dirty = true;
 }
 
-// A click at canvas pixel (x, y), top left origin: probe the surface point there (the background: no probe).
+// A click at canvas pixel (x, y), top left origin: probe the surface point there (the background: no
+// probe), which the panel then edits; a click on a bar changes nothing, as in the window.
 EMSCRIPTEN_KEEPALIVE const char* shadelab_probe(double x, double y) {
     return guarded([&] {
-        page().state->probeAt(x, y);
+        const app::PictureRect picture = pictureRect();
+        if (!picture.contains(x, y)) return;
+        page().state->probeAt(x - picture.x, y - picture.y);
+        page().dirty = true;
+    });
+}
+
+// The panel's object chooser: 0 for all objects, i for object i (DemoState::chooseEditedObject).
+EMSCRIPTEN_KEEPALIVE void shadelab_choose_object(int number) {
+    page().state->chooseEditedObject(number);
+}
+
+// A material slider: `json` holds the properties it changed, e.g. {"shininess": 31.6}, for the shown
+// material (DemoState::editMaterial: the chosen object's, or that property of every object). The values
+// pass through the scene parser at the shown object's place, so a refused one reads as in a scene file.
+EMSCRIPTEN_KEEPALIVE const char* shadelab_edit_material(const char* json) {
+    return guarded([&] {
+        DemoState& state = *page().state;
+        const auto shown = state.shownObject();
+        if (!shown) return;
+        const nlohmann::json changes = nlohmann::json::parse(json);
+        nlohmann::json scene = nlohmann::json::parse(sceneToJson(state.scene()));
+        for (const auto& [key, value] : changes.items()) scene["objects"][*shown]["material"][key] = value;
+        Scene checked = parseScene(scene.dump(), "panel");
+        validateScene(checked);
+        // Only the properties the slider changed: the others stay exactly as they are (not as printed).
+        const Material& parsed = checked.objects[*shown].material;
+        Material edited = state.scene().objects[*shown].material;
+        if (changes.contains("ambient")) edited.ambient = parsed.ambient;
+        if (changes.contains("diffuse")) edited.diffuse = parsed.diffuse;
+        if (changes.contains("specular")) edited.specular = parsed.specular;
+        if (changes.contains("shininess")) edited.shininess = parsed.shininess;
+        state.editMaterial(edited);
         page().dirty = true;
     });
 }
@@ -221,12 +263,13 @@ EMSCRIPTEN_KEEPALIVE void shadelab_redraw() {
 }
 
 // Everything the page shows besides the canvas, as JSON: title, status, the scene (for the panel and for S),
-// the help text, flags, the renderer string and the last draw's error.
+// the help text, flags, the renderer string, the last draw's error, the picture's place in the canvas and
+// the object the material controls edit.
 EMSCRIPTEN_KEEPALIVE const char* shadelab_ui() {
     const Page& p = page();
     const DemoState& s = *p.state;
-    int width = 0, height = 0;
-    canvasSize(width, height);
+    const app::PictureRect picture = pictureRect();
+    const auto shown = s.shownObject();
     const nlohmann::json ui = {
         {"title", app::windowTitle(s, p.frameMs)},
         {"status", app::statusText(s)},
@@ -246,12 +289,17 @@ EMSCRIPTEN_KEEPALIVE const char* shadelab_ui() {
         {"viewReport", s.viewReport},
         {"probe", app::probeText(s)},
         {"scene", nlohmann::json::parse(sceneToJson(p.state->scene()))},
-        {"current", nlohmann::json::parse(sceneToJson(s.current(width, height)))},
+        {"current", nlohmann::json::parse(sceneToJson(s.current(picture.width, picture.height)))},
         {"atImageSize", nlohmann::json::parse(sceneToJson(s.current()))}, // what a capture at 0 × 0 draws
         {"sceneName", p.sceneName},
         {"renderer", p.rendererString},
         {"error", p.drawError},
         {"warnings", p.warnings},
+        {"picture",
+         {{"x", picture.x}, {"y", picture.y}, {"width", picture.width}, {"height", picture.height}}},
+        {"editedObject", s.editedObjectNumber()}, // 0: all objects
+        {"editedObjectName", s.editedObjectName()},
+        {"shownObject", shown ? nlohmann::json(*shown) : nlohmann::json(nullptr)}, // whose material shows
     };
     return give(ui.dump());
 }
@@ -293,6 +341,9 @@ int main() {
     glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 0);
+    // An opaque canvas: the picture's alpha is coverage (0 on the background), and a canvas with alpha
+    // blends such pixels with the page behind it, so the background would not be `render`'s.
+    glfwWindowHint(GLFW_ALPHA_BITS, 0);
     int width = 0, height = 0;
     canvasSize(width, height);
     p.window =

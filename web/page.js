@@ -83,10 +83,13 @@ function bind() {
   const load = c('shadelab_load_scene', 'string', ['number', 'string']);
   const flags = c('shadelab_apply_flags', 'string', ['number']);
   const edit = c('shadelab_edit_scene', 'string', ['number']);
+  const material = c('shadelab_edit_material', 'string', ['number']);
   return {
     loadScene: (text, name) => viaHeap(text, (pointer) => load(pointer, name)),
     applyFlags: (text) => viaHeap(text, flags),
     editScene: (text) => viaHeap(text, edit),
+    editMaterial: (text) => viaHeap(text, material),
+    chooseObject: c('shadelab_choose_object', null, ['number']),
     key: c('shadelab_key', 'number', ['number']),
     drag: c('shadelab_drag', null, ['number', 'number']),
     zoom: c('shadelab_zoom', null, ['number']),
@@ -232,7 +235,7 @@ function wireMouse() {
   // before the drag, as the window does, so a press on the divider moves it instead of the camera.
   const toPointer = (e, held) => {
     const scale = canvas.width / canvas.clientWidth;
-    api.pointer(e.offsetX * scale, e.offsetY * scale, held ? 1 : 0);
+    api.pointer(e.offsetX * scale, e.offsetY * scale, held ? 1 : 0); // main.cpp maps them to the picture
   };
   canvas.addEventListener('pointerdown', (e) => {
     if (e.button === 0) toPointer(e, true);
@@ -314,9 +317,15 @@ function refresh() {
   // Every warning the command line prints for this scene (a colour given as 0..255, say).
   $('warnings').textContent = ui.warnings.map((w) => 'warning: ' + w).join('\n');
   $('warnings').hidden = !ui.warnings.length;
-  const object = ui.scene.objects[0];
+  // The material of the object the panel edits (the first when all are edited), as the window's panel.
+  const object = ui.shownObject === null ? null : ui.scene.objects[ui.shownObject];
   $('material').hidden = !object;
   if (object) {
+    const count = ui.scene.objects.length;
+    $('object-row').hidden = count < 2;
+    $('object').max = count;
+    setIfIdle('object', ui.editedObject);
+    $('object-out').textContent = ui.editedObjectName;
     setIfIdle('ka', toHex(object.material.ambient));
     setIfIdle('kd', toHex(object.material.diffuse));
     setIfIdle('ks', toHex(object.material.specular));
@@ -428,15 +437,24 @@ function wireControls() {
       (e) => pressUntil(79, (u) => u.orthographic === (e.target.value === 'orthographic'), 1));
   $('normals').addEventListener('change',
       (e) => pressUntil(78, (u) => (u.current.vertex_normals || 'averaged') === e.target.value, 1));
+  // The material controls edit the chosen object (0: all objects; a probe click chooses the object it hits).
+  const chooseObject = (e) => {
+    if (e.target.value === '') return; // the field being retyped
+    api.chooseObject(Math.round(Number(e.target.value)));
+    refresh();
+  };
+  $('object').addEventListener('input', chooseObject);
+  $('object').addEventListener('change', chooseObject);
+  const editMaterial = (change) => {
+    showMessage(api.editMaterial(JSON.stringify(change)));
+    refresh();
+  };
   for (const term of ['ka', 'kd', 'ks']) {
     const field = {ka: 'ambient', kd: 'diffuse', ks: 'specular'}[term];
-    $(term).addEventListener('input', (e) => edit((s) => {
-      for (const object of s.objects) object.material[field] = fromHex(e.target.value);
-    }));
+    $(term).addEventListener('input', (e) => editMaterial({[field]: fromHex(e.target.value)}));
   }
-  $('shininess').addEventListener('input', (e) => edit((s) => {
-    for (const object of s.objects) object.material.shininess = Math.round(10 ** Number(e.target.value) * 10) / 10;
-  }));
+  $('shininess').addEventListener('input', (e) =>
+    editMaterial({shininess: Math.round(10 ** Number(e.target.value) * 10) / 10}));
   $('bands').addEventListener('input', (e) => edit((s) => { s.toon_bands = Number(e.target.value); }));
   $('next-material').addEventListener('click', () => press(77));
   $('next-lights').addEventListener('click', () => press(76));
@@ -482,10 +500,11 @@ function download(blob, name) {
   setTimeout(() => URL.revokeObjectURL(link.href), 1000);
 }
 
-// S: the picture as an opaque PNG (as `shadelab render` writes it) and the scene that draws it.
+// S: the picture (at its size in the canvas, without the bars) as an opaque PNG (as `shadelab render`
+// writes it) and the scene that draws it.
 function save() {
-  const canvas = $('canvas');
-  const shot = capture(canvas.width, canvas.height);
+  const picture = api.ui().picture;
+  const shot = capture(picture.width, picture.height);
   for (let i = 3; i < shot.rgba.length; i += 4) shot.rgba[i] = 255;
   const out = document.createElement('canvas');
   out.width = shot.width;

@@ -1232,7 +1232,9 @@ TEST(DemoPanelEdits, AProbeClickChoosesTheObjectThePanelEdits) {
     EXPECT_EQ(state.editedObject, shadelab::app::DemoState::kAllObjects);
 
     EXPECT_EQ(state.materialName(), "scene's own");
-    state.materialEdited();
+    shadelab::Material edited = state.scene().objects[0].material;
+    edited.shininess = 7;
+    state.editMaterial(edited);
     EXPECT_EQ(state.materialName(), "scene's own, edited in the panel");
     state.apply(shadelab::app::Command::NextMaterial);
     EXPECT_EQ(state.materialName().find("edited"), std::string::npos)
@@ -1241,6 +1243,60 @@ TEST(DemoPanelEdits, AProbeClickChoosesTheObjectThePanelEdits) {
     shadelab::Scene one = scene;
     one.objects.resize(1);
     EXPECT_EQ(shadelab::app::DemoState(one).editedObjectName(), "the object");
+}
+
+// The window's panel and the page edit materials through DemoState: the chosen object alone, or with all
+// objects chosen, the property that changed on every object while each keeps its others (grid.json's
+// spheres differ in shininess and specular); the chooser's numbers (0: all) are clamped to the objects.
+TEST(DemoPanelEdits, AnEditChangesTheChosenObjectOrThatPropertyOfAll) {
+    using shadelab::app::DemoState;
+    shadelab::Scene scene;
+    scene.objects.resize(3);
+    const double shininess[3] = {5, 20, 60};
+    for (std::size_t i = 0; i < 3; ++i) {
+        scene.objects[i].center = {double(i) * 2.5 - 2.5, 0, 0};
+        scene.objects[i].material.shininess = shininess[i];
+        scene.objects[i].material.specular = glm::dvec3(0.25 * double(i + 1));
+    }
+    DemoState state(scene);
+    EXPECT_EQ(state.editedObjectNumber(), 1);
+    state.chooseEditedObject(3);
+    EXPECT_EQ(state.editedObject, 2);
+    ASSERT_EQ(state.shownObject(), std::optional<std::size_t>(2));
+    shadelab::Material m = state.scene().objects[2].material;
+    m.shininess = 31.6;
+    m.diffuse = {0.1, 0.9, 0.1};
+    state.editMaterial(m);
+    EXPECT_EQ(state.scene().objects[2].material, m);
+    EXPECT_EQ(state.scene().objects[0].material, scene.objects[0].material);
+    EXPECT_EQ(state.scene().objects[1].material, scene.objects[1].material);
+    EXPECT_EQ(state.materialName(), "scene's own, edited in the panel");
+
+    state.chooseEditedObject(0);
+    EXPECT_EQ(state.editedObject, DemoState::kAllObjects);
+    EXPECT_EQ(state.editedObjectNumber(), 0);
+    ASSERT_EQ(state.shownObject(), std::optional<std::size_t>(0)); // all: the first object's values show
+    m = state.scene().objects[0].material;
+    m.shininess = 100;
+    state.editMaterial(m);
+    for (std::size_t i = 0; i < 3; ++i) {
+        SCOPED_TRACE(i);
+        EXPECT_EQ(state.scene().objects[i].material.shininess, 100);
+        EXPECT_EQ(state.scene().objects[i].material.specular, scene.objects[i].material.specular)
+            << "an unchanged property was copied from the first object";
+    }
+    EXPECT_EQ(state.scene().objects[2].material.diffuse, glm::dvec3(0.1, 0.9, 0.1));
+
+    state.chooseEditedObject(7);
+    EXPECT_EQ(state.editedObject, 2) << "past the last object: the last";
+    state.chooseEditedObject(-3);
+    EXPECT_EQ(state.editedObject, DemoState::kAllObjects);
+    shadelab::Scene none = scene;
+    none.objects.clear();
+    DemoState empty(none);
+    EXPECT_FALSE(empty.shownObject().has_value());
+    empty.editMaterial(m); // nothing to edit, and no crash
+    EXPECT_EQ(empty.materialName(), "scene's own");
 }
 
 // Issue 29: exact shading draws no mesh, so the title, the status and the presentation label name the ray

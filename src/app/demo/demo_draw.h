@@ -3,10 +3,34 @@
 // the scene.
 #pragma once
 
+#include <memory>
+
 #include "app/demo/demo_state.h"
+#include "shadelab/gl/render_target.h"
 #include "shadelab/gl/renderer.h"
 
 namespace shadelab::app {
+
+// The bars beside a picture whose aspect differs from its area's: a grey darker than the panel's.
+inline constexpr glm::vec3 kBarColour{0.06f, 0.06f, 0.07f};
+
+// The picture as the window and the page show it: the area (the window right of its panel, the page's
+// canvas) keeps the scene's framing. The picture is drawn offscreen at its own size exactly as `render`
+// draws (the same target and depth format) and copied pixel for pixel into its place (fitPicture), the
+// rest of the framebuffer cleared to kBarColour. The target is kept from frame to frame.
+class FramedPicture {
+public:
+    // Clears the framebuffer (width × height) to the bars and draws the state's picture into `picture`
+    // (pixels from the framebuffer's top left), after setting the state's viewport to the picture's size.
+    // On a failure (a target the context cannot make) the bars stay, the window's framebuffer is bound,
+    // no target is kept, and the error is thrown on.
+    void draw(gl::Renderer& renderer, DemoState& state, const PictureRect& picture, int framebufferWidth,
+              int framebufferHeight);
+
+private:
+    std::unique_ptr<gl::RenderTarget> target_;
+    gl::DepthFormat depth_ = gl::DepthFormat::Depth24;
+};
 
 // Into the bound framebuffer, over a viewport of width × height moved `x` to the right; sets
 // state.viewReport from what the view measured.

@@ -394,6 +394,34 @@ std::string DemoState::editedObjectName() const {
     return "object " + std::to_string(editedObject + 1) + " of " + std::to_string(count);
 }
 
+void DemoState::chooseEditedObject(int number) {
+    const int count = int(scene_.objects.size());
+    editedObject = number <= 0 || count == 0 ? kAllObjects : std::min(number, count) - 1;
+}
+
+std::optional<std::size_t> DemoState::shownObject() const {
+    if (scene_.objects.empty()) return std::nullopt;
+    return std::size_t(std::clamp(editedObject, 0, int(scene_.objects.size()) - 1)); // all: the first
+}
+
+void DemoState::editMaterial(const Material& edited) {
+    const auto shown = shownObject();
+    if (!shown) return;
+    const Material before = scene_.objects[*shown].material;
+    if (editedObject != kAllObjects) {
+        scene_.objects[*shown].material = edited;
+    } else {
+        for (SceneObject& o : scene_.objects) {
+            Material& m = o.material;
+            if (edited.ambient != before.ambient) m.ambient = edited.ambient;
+            if (edited.diffuse != before.diffuse) m.diffuse = edited.diffuse;
+            if (edited.specular != before.specular) m.specular = edited.specular;
+            if (edited.shininess != before.shininess) m.shininess = edited.shininess;
+        }
+    }
+    materialEdited_ = true;
+}
+
 std::string DemoState::lightsName() const {
     return lights_ == 0 ? "scene's own" : std::string(lightPresets()[std::size_t(lights_ - 1)].name);
 }

@@ -160,8 +160,16 @@ public:
     int editedObject = 0;
     // "the object" (a scene of one), "object 3 of 12" or "all 12 objects": what the status line says.
     std::string editedObjectName() const;
-    // The panel changed the material of editedObject (or all): materialName() then says so.
-    void materialEdited() { materialEdited_ = true; }
+    // The chooser as the window's panel and the page number it: 0 for all objects, i for object i.
+    int editedObjectNumber() const { return editedObject == kAllObjects ? 0 : editedObject + 1; }
+    void chooseEditedObject(int number); // clamped to the scene's objects
+    // The object whose material the panel shows: the edited one (the first when all are edited); nullopt
+    // for a scene without objects.
+    std::optional<std::size_t> shownObject() const;
+    // A panel edit of the shown material: `edited` becomes the edited object's material. With all objects
+    // chosen, each property that differs from the shown material's is set on every object, so one slider
+    // changes that property everywhere and each object keeps its others. materialName() then says so.
+    void editMaterial(const Material& edited);
     // What the last drawn view measured, in words ("error: interior mean 2.54/255, max 98.5/255"), set by
     // drawDemo; "" for the plain scene.
     std::string viewReport;

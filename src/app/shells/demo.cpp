@@ -37,8 +37,6 @@ using Clock = std::chrono::steady_clock;
 
 // Caps the frame rate where nothing else does (Xvfb has no vsync), so a test machine is not saturated.
 constexpr auto kFramePeriod = std::chrono::microseconds(1'000'000 / 60);
-// The bars beside a picture whose aspect differs from the window's: a grey darker than the panel's.
-constexpr glm::vec3 kBarColour{0.06f, 0.06f, 0.07f};
 
 // Exponential moving average of the GPU-synchronized draw time.
 class FrameTimer {
@@ -174,38 +172,23 @@ private:
         int width = 0, height = 0;
         window_.framebufferSize(width, height);
         if (width <= 0 || height <= 0) return; // minimized: nothing to draw, no NaN aspect
-        const PictureRect picture = pictureRect(width, height);
-        gl::clearWindow(width, height, kBarColour);
-        if (picture.width > 0 && picture.height > 0) drawPicture(picture, height);
+        drawPicture(pictureRect(width, height), width, height);
         insidePanel_ = true;
         panel_.draw(state_, statusText(state_), panelColumnWidth(width, state_.showPanel, uiScale_));
         insidePanel_ = false;
     }
 
-    // The picture, drawn offscreen at its size exactly as `render` draws (the same target and depth
-    // format), then copied pixel for pixel into its place in the window. A target that cannot be made (a
-    // huge window under a memory limit) is said once and the bars stay; the demo goes on.
-    void drawPicture(const PictureRect& picture, int windowHeight) {
+    // The bars and the picture (FramedPicture: drawn as `render` draws, copied into its place). A target
+    // that cannot be made (a huge window under a memory limit) is said once and the bars stay; the demo
+    // goes on.
+    void drawPicture(const PictureRect& picture, int windowWidth, int windowHeight) {
         try {
             const auto start = Clock::now();
-            state_.setViewport(picture.width, picture.height);
-            const gl::DepthFormat depth = gl::depthFormatFor(state_.scene().depth); // what drawn() keeps
-            if (!target_ || target_->width() != picture.width || target_->height() != picture.height ||
-                targetDepth_ != depth) {
-                target_.reset();
-                target_ = std::make_unique<gl::RenderTarget>(picture.width, picture.height,
-                                                             gl::ColorFormat::Rgba8, depth);
-                targetDepth_ = depth;
-            }
-            target_->bind();
-            drawDemo(renderer_, state_, picture.width, picture.height);
-            target_->blitToWindow(picture.x, windowHeight - picture.y - picture.height);
+            picture_.draw(renderer_, state_, picture, windowWidth, windowHeight);
             gl::finish();
             timer_.add(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
             pictureError_.clear();
         } catch (const std::exception& e) {
-            target_.reset();
-            gl::bindDefaultFramebuffer();
             if (e.what() != pictureError_)
                 std::fprintf(stderr, "shadelab: picture not drawn: %s\n", printable(e.what()).c_str());
             pictureError_ = e.what();
@@ -347,9 +330,8 @@ private:
     Window window_;
     double uiScale_; // before the panel, which is made with it
     Panel panel_;
-    gl::Renderer renderer_;                    // after the window: its GL objects go while the context lives
-    std::unique_ptr<gl::RenderTarget> target_; // the picture, drawn offscreen at its size each frame
-    gl::DepthFormat targetDepth_ = gl::DepthFormat::Depth24;
+    gl::Renderer renderer_; // after the window: its GL objects go while the context lives
+    FramedPicture picture_;
     std::string pictureError_; // the last reason the picture could not be drawn, said once
     FrameTimer timer_;
     int screenshots_ = 0;

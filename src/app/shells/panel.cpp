@@ -123,18 +123,13 @@ void Panel::draw(DemoState& state, const std::string& status, int columnWidth) {
             // "all objects" (0) is chosen.
             const int count = int(scene.objects.size());
             if (count > 1) {
-                int chosen = state.editedObject == DemoState::kAllObjects ? 0 : state.editedObject + 1;
+                int chosen = state.editedObjectNumber();
                 if (ImGui::DragInt("object (0: all)", &chosen, 0.1f, 0, count,
                                    chosen == 0 ? "all objects" : "object %d", ImGuiSliderFlags_AlwaysClamp))
-                    state.editedObject = chosen <= 0 ? DemoState::kAllObjects : std::min(chosen, count) - 1;
+                    state.chooseEditedObject(chosen);
             }
-            const bool all = count > 1 && state.editedObject == DemoState::kAllObjects;
-            const std::size_t shown = all ? 0 : std::size_t(std::clamp(state.editedObject, 0, count - 1));
-            if (materialControls(scene.objects[shown].material)) {
-                if (all)
-                    for (SceneObject& o : scene.objects) o.material = scene.objects[shown].material;
-                state.materialEdited();
-            }
+            Material edited = scene.objects[*state.shownObject()].material;
+            if (materialControls(edited)) state.editMaterial(edited);
         }
         if (ImGui::CollapsingHeader("lights"))
             for (std::size_t i = 0; i < scene.lights.size(); ++i) lightControls(scene.lights[i], int(i));
