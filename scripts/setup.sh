@@ -28,8 +28,9 @@ tests_packages=(libgtest-dev libx11-dev git)
 tools_packages=(
   # the demo under a virtual display, and driving it in tests
   xvfb xauth xdotool
-  # CI's checks: formatting, static analysis, fuzzing (clang's libFuzzer)
-  clang-format clang-tidy clang libclang-rt-14-dev
+  # CI's checks: formatting, static analysis, the sanitizer tree (clang, its runtimes, lld) and fuzzing
+  # (clang's libFuzzer)
+  clang-format clang-tidy clang libclang-rt-14-dev lld-14
   # the page's build and its tests (scripts/web.sh installs them too)
   emscripten chromium chromium-driver python3-selenium
 )

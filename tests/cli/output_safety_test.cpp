@@ -403,7 +403,7 @@ TEST_P(OutputSafety, ContentAfterANulByteIsAnError) {
 
 // Memory limits (ulimit -v): estimated before anything is spent, refused with the figures; a failure that
 // still comes names what was being built. Never a crash inside Mesa, never a bare std::bad_alloc.
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(SHADELAB_SANITIZED)
 #define SKIP_UNDER_ASAN()                                                                                    \
     GTEST_SKIP() << "AddressSanitizer reserves terabytes of address space: no RLIMIT_AS run can start"
 #else

@@ -441,8 +441,8 @@ TEST_F(DemoWindow, OverlayLightDragAndProbeShowWhatRenderGives) {
         return demo.window().title().find("| probe: phong differs from exact by ") != std::string::npos;
     })) << demo.window().title();
     // The vectors are drawn over the picture, so the window now differs from the render near the centre.
-    bool vectorsShown =
-        pollUntil([&] { return !compareImages(demo.window().capture(), lit, kWindowTolerance).passed; });
+    bool vectorsShown = pollUntil(
+        [&, &lit = lit] { return !compareImages(demo.window().capture(), lit, kWindowTolerance).passed; });
     EXPECT_TRUE(vectorsShown) << "the probe's vectors are not drawn";
     const fs::path stem = demo.screenshot();
     EXPECT_TRUE(matches(readPng(stem.string() + ".png"), lit, kWindowTolerance, "probe.screenshot"))
@@ -726,7 +726,7 @@ TEST_F(DemoWindow, DefaultWindowFitsTheScreenAndThePanelCoversNothing) {
 // callback). Under an address-space limit just above what the demo holds (set on the running process, as
 // `prlimit --as` does), S must report "screenshot not saved" and the demo must go on and quit cleanly.
 TEST_F(DemoWindow, ScreenshotOutOfMemoryKeepsTheDemoRunning) {
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(SHADELAB_SANITIZED)
     GTEST_SKIP() << "AddressSanitizer reserves terabytes of address space: no RLIMIT_AS applies to it";
 #endif
     DemoProcess& demo = startDemo("oom-demo", {"--size", "640x480", "--hide-panel"});
