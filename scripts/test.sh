@@ -25,6 +25,7 @@ jobs=$(nproc)
 logs=$(mktemp -d "${TMPDIR:-/tmp}/shadelab-test-logs.XXXXXX")
 
 declare -A pids starts # the background stages: process and start time, by name
+cleanup=()             # files of the run's own, removed as it ends
 # ---- stage timing: a table of every stage's duration, printed at the end, whether it passed or not ----
 names=()
 seconds=()
@@ -55,6 +56,7 @@ print_table() {
   local status=$?
   local pid
   for pid in "${pids[@]}"; do kill_tree "$pid"; done
+  rm -f "${cleanup[@]}"
   stage ""
   printf '\n=== stage durations (%s, %s cores)\n' "$(date -u +%Y-%m-%dT%H:%MZ)" "$jobs"
   for i in "${!names[@]}"; do
@@ -174,7 +176,13 @@ finish "sanitizer build"
 stage "tests under AddressSanitizer + UndefinedBehaviorSanitizer (clang, -O1)"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-export LSAN_OPTIONS="suppressions=$root/tests/sanitizers/lsan.supp:print_suppressions=0"
+# The suppressions from a file every user can read: the permission-dropping tests run the program as nobody,
+# whose sanitizer runtime reads them as it starts and stops there if it cannot (a clone in /root is 0700).
+suppressions=$(mktemp /tmp/shadelab-lsan.XXXXXX)
+cleanup+=("$suppressions")
+cp tests/sanitizers/lsan.supp "$suppressions"
+chmod 644 "$suppressions"
+export LSAN_OPTIONS="suppressions=$suppressions:print_suppressions=0"
 # The window tests and the longest ones first (a 2500x2500 reference interrupted three times: 13 s under
 # the sanitizers, 70 s at -O0), so the last minutes are not one long test on one core.
 slow='^(window\.|cli\.report\.ReportCli\.InterruptedRun|cli\.output\..*SignalDuringWrite)'
