@@ -340,6 +340,18 @@ Scene parseScene(std::string_view jsonText, std::string_view source) {
     }
 }
 
+Material parseMaterial(std::string_view jsonText, std::size_t object, std::string_view source) {
+    try {
+        const std::string path = indexPath("objects", object);
+        SceneObject checked; // the default object, whose other values pass
+        checked.material = readMaterial(parseJson(jsonText), keyPath(path, "material"));
+        checkObject(checked, path);
+        return checked.material;
+    } catch (const InputError& e) {
+        throw InputError(std::string(source) + ": " + e.what());
+    }
+}
+
 Scene loadScene(const std::filesystem::path& path) {
     return parseScene(readSceneFile(path), path.string());
 }

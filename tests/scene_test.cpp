@@ -552,6 +552,31 @@ TEST(SceneHostile, SourceNamesTheText) {
     }
 }
 
+// parseMaterial (the page's material sliders) reads one material as parseScene reads it in a scene, with
+// the same message at the object's place.
+TEST(SceneMaterial, ReadsAsTheSceneReadsItAndNamesTheObjectsPlace) {
+    const std::string material =
+        R"({"ambient": [0.1, 0.2, 0.3], "diffuse": [0.4, 0.5, 0.6], "specular": [1, 1, 1], "shininess": 31.6})";
+    const Scene scene = parseScene(R"({"objects": [{}, {"material": )" + material + "}]}");
+    const Material parsed = parseMaterial(material, 1);
+    EXPECT_EQ(parsed.ambient, scene.objects[1].material.ambient);
+    EXPECT_EQ(parsed.diffuse, scene.objects[1].material.diffuse);
+    EXPECT_EQ(parsed.specular, scene.objects[1].material.specular);
+    EXPECT_EQ(parsed.shininess, 31.6);
+    for (const auto& [text, message] : std::vector<std::pair<std::string, std::string>>{
+             {R"({"shininess": 0.5})", "panel: objects[6].material.shininess: must be >= 1, got 0.5"},
+             {R"({"shine": 2})", "panel: objects[6].material.shine: unknown key"},
+             {R"({"diffuse": [1, 2]})", "panel: objects[6].material.diffuse: "},
+             {"[]", "panel: objects[6].material: must be an object"}}) {
+        try {
+            parseMaterial(text, 6, "panel");
+            ADD_FAILURE() << text << ": no error";
+        } catch (const InputError& e) {
+            EXPECT_EQ(std::string(e.what()).rfind(message, 0), 0u) << e.what();
+        }
+    }
+}
+
 // ---- files ----
 
 class SceneFileTest : public ::testing::Test {

@@ -121,6 +121,65 @@ template <typename Read> bool captureInto(int width, int height, gl::ColorFormat
     }
 }
 
+// The scene as JSON without its objects: the panel's refresh runs twice a second, and the objects of a
+// large scene are megabytes of JSON (10,000 of them: 2 s a call, and the page stopped answering).
+nlohmann::json settingsJson(const Scene& scene) {
+    Scene settings = scene;
+    settings.objects.clear();
+    nlohmann::json json = nlohmann::json::parse(sceneToJson(settings));
+    json.erase("objects");
+    return json;
+}
+
+// Object `index`'s material as the scene file spells it.
+nlohmann::json materialJson(const Scene& scene, std::size_t index) {
+    Scene one = scene;
+    one.objects = {scene.objects[index]};
+    return nlohmann::json::parse(sceneToJson(one)).at("objects").at(0).at("material");
+}
+
+// What the panel shows, with the scenes' values but not their objects: the shown object's material alone.
+nlohmann::json panelJson() {
+    const Page& p = page();
+    const DemoState& s = *p.state;
+    const Scene& scene = p.state->scene();
+    const app::PictureRect picture = pictureRect();
+    const auto shown = s.shownObject();
+    const nlohmann::json material = shown ? materialJson(scene, *shown) : nullptr;
+    return {
+        {"title", app::windowTitle(s, p.frameMs)},
+        {"status", app::statusText(s)},
+        {"help", app::keyHelpText()},
+        {"showHelp", s.showHelp},
+        {"showPanel", s.showPanel},
+        {"presenting", s.presenting},
+        {"presentation", app::presentationLabel(s)},
+        {"matchHighlight", s.matchHighlight},
+        {"level", s.level()},
+        {"autoLevel", s.autoLevel()},
+        {"orthographic", s.orthographic()},
+        {"material", s.materialName()},
+        {"lights", s.lightsName()},
+        {"overlay", toString(s.drawn().overlay)},
+        {"view", toString(s.drawn().view)},
+        {"viewReport", s.viewReport},
+        {"probe", app::probeText(s)},
+        {"settings", settingsJson(scene)}, // the scene less its objects
+        {"currentSettings", settingsJson(s.current(picture.width, picture.height))}, // as drawn, likewise
+        {"objectCount", scene.objects.size()},
+        {"shownMaterial", material},
+        {"sceneName", p.sceneName},
+        {"renderer", p.rendererString},
+        {"error", p.drawError},
+        {"warnings", p.warnings},
+        {"picture",
+         {{"x", picture.x}, {"y", picture.y}, {"width", picture.width}, {"height", picture.height}}},
+        {"editedObject", s.editedObjectNumber()}, // 0: all objects
+        {"editedObjectName", s.editedObjectName()},
+        {"shownObject", shown ? nlohmann::json(*shown) : nlohmann::json(nullptr)}, // whose material shows
+    };
+}
+
 } // namespace
 
 extern "C" {
@@ -164,13 +223,15 @@ EMSCRIPTEN_KEEPALIVE const char* shadelab_apply_flags(const char* flags) {
     });
 }
 
-// Panel edits: the edited scene JSON replaces the scene's values; the view (orbit, presets) stays.
-EMSCRIPTEN_KEEPALIVE const char* shadelab_edit_scene(const char* json) {
+// Panel edits (toon bands, the lights): `json` is the scene's values less its objects (the panel's
+// "settings"), which replace the scene's; the objects and the view (orbit, presets) stay.
+EMSCRIPTEN_KEEPALIVE const char* shadelab_edit_settings(const char* json) {
     return guarded([&] {
         checkSceneTextSize(std::strlen(json), "panel");
         Scene scene = parseScene(json, "panel");
+        scene.objects = page().state->scene().objects;
         validateScene(scene);
-        page().state->scene() = scene;
+        page().state->scene() = std::move(scene);
         page().dirty = true;
     });
 }
@@ -232,12 +293,10 @@ EMSCRIPTEN_KEEPALIVE const char* shadelab_edit_material(const char* json) {
         const auto shown = state.shownObject();
         if (!shown) return;
         const nlohmann::json changes = nlohmann::json::parse(json);
-        nlohmann::json scene = nlohmann::json::parse(sceneToJson(state.scene()));
-        for (const auto& [key, value] : changes.items()) scene["objects"][*shown]["material"][key] = value;
-        Scene checked = parseScene(scene.dump(), "panel");
-        validateScene(checked);
+        nlohmann::json material = materialJson(state.scene(), *shown);
+        for (const auto& [key, value] : changes.items()) material[key] = value;
+        const Material parsed = parseMaterial(material.dump(), *shown, "panel");
         // Only the properties the slider changed: the others stay exactly as they are (not as printed).
-        const Material& parsed = checked.objects[*shown].material;
         Material edited = state.scene().objects[*shown].material;
         if (changes.contains("ambient")) edited.ambient = parsed.ambient;
         if (changes.contains("diffuse")) edited.diffuse = parsed.diffuse;
@@ -265,42 +324,20 @@ EMSCRIPTEN_KEEPALIVE void shadelab_redraw() {
 // Everything the page shows besides the canvas, as JSON: title, status, the scene (for the panel and for S),
 // the help text, flags, the renderer string, the last draw's error, the picture's place in the canvas and
 // the object the material controls edit.
+// What the panel's refresh reads, twice a second: everything but the scenes' objects (panelJson).
+EMSCRIPTEN_KEEPALIVE const char* shadelab_panel() {
+    return give(panelJson().dump());
+}
+
+// The panel's values and the whole scenes: as given, as drawn in the picture, and as a capture at 0 × 0
+// draws it (S, the tests, scripts/web.sh render).
 EMSCRIPTEN_KEEPALIVE const char* shadelab_ui() {
-    const Page& p = page();
-    const DemoState& s = *p.state;
+    const DemoState& s = *page().state;
     const app::PictureRect picture = pictureRect();
-    const auto shown = s.shownObject();
-    const nlohmann::json ui = {
-        {"title", app::windowTitle(s, p.frameMs)},
-        {"status", app::statusText(s)},
-        {"help", app::keyHelpText()},
-        {"showHelp", s.showHelp},
-        {"showPanel", s.showPanel},
-        {"presenting", s.presenting},
-        {"presentation", app::presentationLabel(s)},
-        {"matchHighlight", s.matchHighlight},
-        {"level", s.level()},
-        {"autoLevel", s.autoLevel()},
-        {"orthographic", s.orthographic()},
-        {"material", s.materialName()},
-        {"lights", s.lightsName()},
-        {"overlay", toString(s.drawn().overlay)},
-        {"view", toString(s.drawn().view)},
-        {"viewReport", s.viewReport},
-        {"probe", app::probeText(s)},
-        {"scene", nlohmann::json::parse(sceneToJson(p.state->scene()))},
-        {"current", nlohmann::json::parse(sceneToJson(s.current(picture.width, picture.height)))},
-        {"atImageSize", nlohmann::json::parse(sceneToJson(s.current()))}, // what a capture at 0 × 0 draws
-        {"sceneName", p.sceneName},
-        {"renderer", p.rendererString},
-        {"error", p.drawError},
-        {"warnings", p.warnings},
-        {"picture",
-         {{"x", picture.x}, {"y", picture.y}, {"width", picture.width}, {"height", picture.height}}},
-        {"editedObject", s.editedObjectNumber()}, // 0: all objects
-        {"editedObjectName", s.editedObjectName()},
-        {"shownObject", shown ? nlohmann::json(*shown) : nlohmann::json(nullptr)}, // whose material shows
-    };
+    nlohmann::json ui = panelJson();
+    ui["scene"] = nlohmann::json::parse(sceneToJson(page().state->scene()));
+    ui["current"] = nlohmann::json::parse(sceneToJson(s.current(picture.width, picture.height)));
+    ui["atImageSize"] = nlohmann::json::parse(sceneToJson(s.current()));
     return give(ui.dump());
 }
 

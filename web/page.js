@@ -1,7 +1,8 @@
 // The page around shadelab.wasm: the canvas size, the keys and the mouse, the control panel as the
 // browser's own controls, scene loading (bundled, file picker, drag and drop, ?scene=URL), S as a download,
-// and the messages. All state lives in the C++ DemoState (web/main.cpp); the panel shows what shadelab_ui()
-// returns and changes it through the same commands as the keys, or by an edited scene JSON.
+// and the messages. All state lives in the C++ DemoState (web/main.cpp); the panel shows what
+// shadelab_panel() returns (the scene's values and the shown object's material, never all its objects) and
+// changes it through the same commands as the keys, or by the edited values handed back as JSON.
 'use strict';
 
 const $ = (id) => document.getElementById(id);
@@ -82,12 +83,12 @@ function bind() {
   const c = (name, ret, args) => Module.cwrap(name, ret, args);
   const load = c('shadelab_load_scene', 'string', ['number', 'string']);
   const flags = c('shadelab_apply_flags', 'string', ['number']);
-  const edit = c('shadelab_edit_scene', 'string', ['number']);
+  const edit = c('shadelab_edit_settings', 'string', ['number']);
   const material = c('shadelab_edit_material', 'string', ['number']);
   return {
     loadScene: (text, name) => viaHeap(text, (pointer) => load(pointer, name)),
     applyFlags: (text) => viaHeap(text, flags),
-    editScene: (text) => viaHeap(text, edit),
+    editSettings: (text) => viaHeap(text, edit),
     editMaterial: (text) => viaHeap(text, material),
     chooseObject: c('shadelab_choose_object', null, ['number']),
     key: c('shadelab_key', 'number', ['number']),
@@ -98,6 +99,8 @@ function bind() {
     pointer: c('shadelab_pointer', null, ['number', 'number', 'number']),
     setMatch: c('shadelab_set_match_highlight', null, ['number']),
     redraw: c('shadelab_redraw', null, []),
+    // The panel's values without the scenes' objects (twice a second), and everything with them.
+    panel: () => JSON.parse(Module.ccall('shadelab_panel', 'string', [], [])),
     ui: () => JSON.parse(Module.ccall('shadelab_ui', 'string', [], [])),
     capture: c('shadelab_capture', 'number', ['number', 'number']),
     captureFloat: c('shadelab_capture_float', 'number', ['number', 'number']),
@@ -288,7 +291,7 @@ let ui = null;
 // The panel shows the state; a control changes it by a key's command or by an edited scene.
 function refresh() {
   if (!api) return;
-  ui = api.ui();
+  ui = api.panel();
   document.title = ui.title;
   $('status').textContent = ui.status;
   // The table keeps its columns (white-space: pre), so the hint is broken into short lines of its own.
@@ -300,7 +303,7 @@ function refresh() {
   $('help').hidden = !ui.showHelp;
   $('help-text').textContent = ui.help;
   if (ui.error) showMessage(ui.error);
-  const scene = ui.current;
+  const scene = ui.currentSettings;
   setIfIdle('shading', scene.shading);
   setIfIdle('lighting', scene.lighting);
   $('match').checked = ui.matchHighlight;
@@ -318,23 +321,23 @@ function refresh() {
   $('warnings').textContent = ui.warnings.map((w) => 'warning: ' + w).join('\n');
   $('warnings').hidden = !ui.warnings.length;
   // The material of the object the panel edits (the first when all are edited), as the window's panel.
-  const object = ui.shownObject === null ? null : ui.scene.objects[ui.shownObject];
-  $('material').hidden = !object;
-  if (object) {
-    const count = ui.scene.objects.length;
+  const material = ui.shownMaterial;
+  $('material').hidden = !material;
+  if (material) {
+    const count = ui.objectCount;
     $('object-row').hidden = count < 2;
     $('object').max = count;
     setIfIdle('object', ui.editedObject);
     $('object-out').textContent = ui.editedObjectName;
-    setIfIdle('ka', toHex(object.material.ambient));
-    setIfIdle('kd', toHex(object.material.diffuse));
-    setIfIdle('ks', toHex(object.material.specular));
-    setIfIdle('shininess', Math.log10(object.material.shininess));
-    $('shininess-out').textContent = object.material.shininess.toFixed(1);
+    setIfIdle('ka', toHex(material.ambient));
+    setIfIdle('kd', toHex(material.diffuse));
+    setIfIdle('ks', toHex(material.specular));
+    setIfIdle('shininess', Math.log10(material.shininess));
+    $('shininess-out').textContent = material.shininess.toFixed(1);
   }
-  setIfIdle('bands', ui.scene.toon_bands);
-  $('bands-out').textContent = ui.scene.toon_bands;
-  showLights(ui.scene.lights);
+  setIfIdle('bands', ui.settings.toon_bands);
+  $('bands-out').textContent = ui.settings.toon_bands;
+  showLights(ui.settings.lights);
 }
 
 // "split:gouraud,exact" is the select's "split".
@@ -401,16 +404,17 @@ function showLights(lights) {
   });
 }
 
-// Edits the scene (not the view) and hands it back; a refused edit shows its message.
+// Edits the scene's values (not its objects, not the view) and hands them back; a refused edit shows its
+// message.
 function edit(change) {
-  const scene = api.ui().scene;
-  change(scene);
-  showMessage(api.editScene(JSON.stringify(scene)));
+  const settings = api.panel().settings;
+  change(settings);
+  showMessage(api.editSettings(JSON.stringify(settings)));
   refresh();
 }
 
 function pressUntil(code, done, limit = 12) {
-  for (let i = 0; i < limit && !done(api.ui()); ++i) press(code);
+  for (let i = 0; i < limit && !done(api.panel()); ++i) press(code);
   refresh();
 }
 
@@ -418,7 +422,7 @@ function wireControls() {
   wireMouse();
   const keyOf = {flat: 49, gouraud: 50, phong: 51, toon: 52, exact: 53};
   $('shading').addEventListener('change', (e) => press(keyOf[e.target.value]));
-  $('lighting').addEventListener('change', (e) => pressUntil(66, (u) => u.current.lighting === e.target.value, 1));
+  $('lighting').addEventListener('change', (e) => pressUntil(66, (u) => u.currentSettings.lighting === e.target.value, 1));
   $('match').addEventListener('change', (e) => { api.setMatch(e.target.checked ? 1 : 0); refresh(); });
   $('level').addEventListener('input', (e) => {
     const target = Number(e.target.value);
@@ -436,7 +440,7 @@ function wireControls() {
   $('projection').addEventListener('change',
       (e) => pressUntil(79, (u) => u.orthographic === (e.target.value === 'orthographic'), 1));
   $('normals').addEventListener('change',
-      (e) => pressUntil(78, (u) => (u.current.vertex_normals || 'averaged') === e.target.value, 1));
+      (e) => pressUntil(78, (u) => (u.currentSettings.vertex_normals || 'averaged') === e.target.value, 1));
   // The material controls edit the chosen object (0: all objects; a probe click chooses the object it hits).
   const chooseObject = (e) => {
     if (e.target.value === '') return; // the field being retyped
@@ -484,7 +488,7 @@ let kept = null; // the last captureStart's picture
 function capture(width, height, kind) {
   const float = kind === 'float';
   const pointer = float ? api.captureFloat(width, height) : api.capture(width, height);
-  if (!pointer) throw new Error(api.ui().error || 'capture failed');
+  if (!pointer) throw new Error(api.panel().error || 'capture failed');
   const w = api.captureWidth(), h = api.captureHeight();
   const bytes = w * h * 4 * (float ? 4 : 1);
   return {width: w, height: h, rgba: Module.HEAPU8.slice(pointer, pointer + bytes)};
@@ -503,7 +507,7 @@ function download(blob, name) {
 // S: the picture (at its size in the canvas, without the bars) as an opaque PNG (as `shadelab render`
 // writes it) and the scene that draws it.
 function save() {
-  const picture = api.ui().picture;
+  const picture = api.panel().picture;
   const shot = capture(picture.width, picture.height);
   for (let i = 3; i < shot.rgba.length; i += 4) shot.rgba[i] = 255;
   const out = document.createElement('canvas');

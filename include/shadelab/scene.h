@@ -103,6 +103,10 @@ struct Scene {
 // Parses scene JSON text. `source` names the text in messages (a file name). Throws InputError with the
 // JSON path, e.g. "scene.json: lights[1].attenuation[2]: must be >= 0, got -1".
 Scene parseScene(std::string_view jsonText, std::string_view source = "scene");
+// One object's material as a scene spells it ({"ambient": [..], "diffuse": .., "specular": .., "shininess":
+// ..}), read and range-checked as parseScene reads objects[object].material, with the same messages (the
+// page's material sliders: one object's values, not a whole scene of thousands).
+Material parseMaterial(std::string_view jsonText, std::size_t object, std::string_view source = "scene");
 // Reads and parses a file; a missing or unreadable file is an InputError naming the path.
 Scene loadScene(const std::filesystem::path& path);
 // A scene's text is at most 16 MiB (kMaxSceneBytes): InputError "<name>: cannot read scene file: larger
