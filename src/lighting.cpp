@@ -100,6 +100,43 @@ std::optional<LightType> parseLightType(std::string_view text) {
     return parseName(text, kLightTypes);
 }
 
+std::string_view toString(LightingTerm term) {
+    switch (term) {
+    case LightingTerm::All:
+        return "all";
+    case LightingTerm::Ambient:
+        return "ambient";
+    case LightingTerm::Diffuse:
+        return "diffuse";
+    case LightingTerm::Specular:
+        return "specular";
+    }
+    return "unknown";
+}
+
+Material onlyTerm(const Material& material, LightingTerm term) {
+    const glm::dvec3 none(0.0);
+    Material out = material;
+    if (term != LightingTerm::All && term != LightingTerm::Ambient) out.ambient = none;
+    if (term != LightingTerm::All && term != LightingTerm::Diffuse) out.diffuse = none;
+    if (term != LightingTerm::All && term != LightingTerm::Specular) out.specular = none;
+    return out;
+}
+
+glm::dvec3 LightTerms::of(LightingTerm term) const {
+    switch (term) {
+    case LightingTerm::Ambient:
+        return ambient;
+    case LightingTerm::Diffuse:
+        return diffuse;
+    case LightingTerm::Specular:
+        return specular;
+    case LightingTerm::All:
+        break;
+    }
+    return total();
+}
+
 Light transformLight(const Light& light, const glm::dmat4& m) {
     Light out = light;
     out.position = glm::dvec3(m * glm::dvec4(light.position, 1.0));
@@ -158,7 +195,7 @@ LightTerms shadeTerms(const SurfacePoint& p, const Material& uncapped, std::span
 
 glm::dvec3 shade(const SurfacePoint& p, const Material& material, std::span<const Light> lights,
                  ShadeOptions options) {
-    return shadeTerms(p, material, lights, options).total();
+    return shadeTerms(p, material, lights, options).of(options.term);
 }
 
 glm::dvec3 clampColor(const glm::dvec3& c) {

@@ -36,7 +36,8 @@ ReferenceImage renderReference(const Scene& scene) {
     std::vector<Light> lightsView;
     lightsView.reserve(scene.lights.size());
     for (const Light& light : scene.lights) lightsView.push_back(transformLight(light, view.viewFromWorld));
-    const ShadeOptions options{scene.lighting, scene.shading == ShadingMode::Toon, scene.toonBands};
+    const ShadeOptions options{scene.lighting, scene.shading == ShadingMode::Toon, scene.toonBands,
+                               scene.term};
     const PixelRays rays{view.volume, view.orthographic, scene.width, scene.height};
     const glm::dvec3 background = clampColor(scene.background);
 

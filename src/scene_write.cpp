@@ -77,6 +77,7 @@ std::string sceneToJson(const Scene& scene) {
         {"projection", toJson(scene.projection)},
         {"shading", toString(scene.shading)},
         {"lighting", toString(scene.lighting)},
+        {"term", toString(scene.term)},
         {"toon_bands", scene.toonBands},
         {"tolerance_px", scene.tolerancePx},
         {"depth", toString(scene.depth)},

@@ -1,6 +1,7 @@
 // The lighting equations of DESIGN §3 against values worked by hand, plus their guards and the enum
 // spellings.
 #include "shadelab/lighting.h"
+#include "shadelab/vocabulary.h"
 
 #include <cmath>
 #include <limits>
@@ -306,6 +307,48 @@ TEST(Shade, LightsSumLinearly) {
     EXPECT_EQ(shade(point, exampleMaterial(), std::span<const Light>{}, ShadeOptions{}), glm::dvec3(0));
 }
 
+// One term (ShadeOptions::term): shade() returns that sum of shadeTerms alone, and it equals the whole
+// equation evaluated with the other terms' coefficients at 0 (onlyTerm, what the renderer draws): the two
+// ways of drawing a term agree, for every light type, both lighting models, with and without toon.
+TEST(Shade, OneTermIsThatSumAndTheWholeEquationWithTheOthersAtZero) {
+    Light ambient;
+    ambient.type = LightType::Ambient;
+    ambient.ambient = {0.1, 0.1, 0.3};
+    Light point = pointLight();
+    point.ambient = {0.2, 0.1, 0.1};
+    point.attenuation = {1, 0.1, 0.01};
+    const std::vector<Light> lights = {point, spotLight(40, 3), ambient};
+    const SurfacePoint p{kPoint, glm::normalize(glm::dvec3(0.1, -0.2, 1)),
+                         glm::normalize(glm::dvec3(0.3, 0.1, 1))};
+    for (LightingModel model : kLightingModels)
+        for (bool toon : {false, true}) {
+            const LightTerms terms = shadeTerms(p, exampleMaterial(8), lights, ShadeOptions{model, toon});
+            EXPECT_GT(glm::length(terms.ambient), 0);
+            EXPECT_GT(glm::length(terms.diffuse), 0);
+            if (!toon) { // toon's highlight is thresholded: this point lies below it
+                EXPECT_GT(glm::length(terms.specular), 0);
+            }
+            glm::dvec3 sum(0);
+            for (LightingTerm term : kLightingTerms) {
+                const ShadeOptions options{model, toon, kToonBands, term};
+                const glm::dvec3 picked = shade(p, exampleMaterial(8), lights, options);
+                const glm::dvec3 zeroed =
+                    shade(p, onlyTerm(exampleMaterial(8), term), lights, ShadeOptions{model, toon});
+                EXPECT_VEC_NEAR(picked, zeroed, 1e-15) << toString(term);
+                EXPECT_VEC_NEAR(picked, terms.of(term), 0) << toString(term);
+                if (term != LightingTerm::All) sum += picked;
+            }
+            EXPECT_VEC_NEAR(sum, terms.total(), 1e-15);
+            EXPECT_VEC_NEAR(terms.of(LightingTerm::Diffuse), terms.diffuse, 0);
+        }
+    const Material m = onlyTerm(exampleMaterial(8), LightingTerm::Specular);
+    EXPECT_EQ(m.ambient, glm::dvec3(0));
+    EXPECT_EQ(m.diffuse, glm::dvec3(0));
+    EXPECT_EQ(m.specular, exampleMaterial(8).specular);
+    EXPECT_EQ(m.shininess, 8);
+    EXPECT_EQ(onlyTerm(exampleMaterial(8), LightingTerm::All), exampleMaterial(8));
+}
+
 // ---- toon ----
 
 // Directional light from angle θ off the normal in the y–z plane: l·n = cos θ.
@@ -413,6 +456,7 @@ TEST(EnumSpelling, EveryValueRoundTrips) {
         EXPECT_EQ(toString(type), spelling);
         EXPECT_EQ(parseLightType(spelling), type);
     }
+    EXPECT_EQ(joinNames(kLightingTerms), "all, ambient, diffuse, specular");
 }
 
 TEST(EnumSpelling, UnknownSpellingsAreRejected) {

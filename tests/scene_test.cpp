@@ -110,6 +110,7 @@ void expectSameScene(const Scene& a, const Scene& b) {
     EXPECT_EQ(a.projection.far, b.projection.far);
     EXPECT_EQ(a.shading, b.shading);
     EXPECT_EQ(a.lighting, b.lighting);
+    EXPECT_EQ(a.term, b.term);
     EXPECT_EQ(a.toonBands, b.toonBands);
     EXPECT_EQ(a.tolerancePx, b.tolerancePx);
     EXPECT_EQ(a.depth, b.depth);
@@ -331,7 +332,7 @@ const std::vector<ErrorCase> kErrorCases = {
     {"UnknownTopLevelKey",
      R"({"shadding": "phong"})",
      {"scene.json: shadding: unknown key; expected one of image, camera, projection, shading, lighting, "
-      "toon_bands, tolerance_px, depth, vertex_normals, overlay, view, view_at, objects, lights"}},
+      "term, toon_bands, tolerance_px, depth, vertex_normals, overlay, view, view_at, objects, lights"}},
     {"OverlayUnknown",
      R"({"overlay": "wires"})",
      {"scene.json: overlay: unknown value \"wires\"; expected one of none, wireframe, normals"}},
@@ -371,6 +372,9 @@ const std::vector<ErrorCase> kErrorCases = {
     {"UnknownLighting",
      R"({"lighting": "blinn"})",
      {R"(lighting: unknown value "blinn"; expected one of phong, blinn-phong)"}},
+    {"UnknownTerm",
+     R"({"term": "spec"})",
+     {R"(term: unknown value "spec"; expected one of all, ambient, diffuse, specular)"}},
     {"UnknownProjectionType",
      R"({"projection": {"type": "fisheye"}})",
      {R"(projection.type: unknown value "fisheye"; expected one of perspective, frustum, orthographic)"}},
@@ -813,6 +817,7 @@ TEST(SceneJson, RoundTripsEveryFieldExactly) {
     scene.projection = {ProjectionType::Frustum, 40, -0.3, 0.2, -0.1, 0.25, 0.123456789, 99.5};
     scene.shading = ShadingMode::Toon;
     scene.lighting = LightingModel::Phong;
+    scene.term = LightingTerm::Specular;
     scene.toonBands = 7;
     scene.tolerancePx = 0.25;
     scene.depth = DepthMode::ReversedInfinite;

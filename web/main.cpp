@@ -211,6 +211,7 @@ EMSCRIPTEN_KEEPALIVE const char* shadelab_apply_flags(const char* flags) {
         };
         take("shading", o.shading);
         take("lighting", o.lighting);
+        take("term", o.term);
         take("size", o.size);
         take("subdivisions", o.subdivisions);
         take("tolerance-px", o.tolerancePx);

@@ -143,7 +143,7 @@ async function shadelabStarted() {
 // The command-line flags, given as ?shading=flat&size=256x256…, through the CLI's own parser.
 function applyUrlFlags() {
   const flags = {};
-  for (const name of ['shading', 'lighting', 'subdivisions', 'size', 'depth', 'tolerance-px', 'overlay', 'view'])
+  for (const name of ['shading', 'lighting', 'term', 'subdivisions', 'size', 'depth', 'tolerance-px', 'overlay', 'view'])
     if (params.has(name)) flags[name] = params.get(name);
   return Object.keys(flags).length ? api.applyFlags(JSON.stringify(flags)) : '';
 }
@@ -306,6 +306,7 @@ function refresh() {
   const scene = ui.currentSettings;
   setIfIdle('shading', scene.shading);
   setIfIdle('lighting', scene.lighting);
+  setIfIdle('term', scene.term);
   $('match').checked = ui.matchHighlight;
   setIfIdle('level', ui.level);
   $('level-out').textContent = ui.level + (ui.autoLevel ? ' (auto)' : '');
@@ -423,6 +424,7 @@ function wireControls() {
   const keyOf = {flat: 49, gouraud: 50, phong: 51, toon: 52, exact: 53};
   $('shading').addEventListener('change', (e) => press(keyOf[e.target.value]));
   $('lighting').addEventListener('change', (e) => pressUntil(66, (u) => u.currentSettings.lighting === e.target.value, 1));
+  $('term').addEventListener('change', (e) => pressUntil(75, (u) => u.currentSettings.term === e.target.value, 3));
   $('match').addEventListener('change', (e) => { api.setMatch(e.target.checked ? 1 : 0); refresh(); });
   $('level').addEventListener('input', (e) => {
     const target = Number(e.target.value);

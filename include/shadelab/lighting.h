@@ -18,6 +18,9 @@ namespace shadelab {
 enum class ShadingMode { Flat, Gouraud, Phong, Toon, Exact };
 enum class LightingModel { Phong, BlinnPhong };
 enum class LightType { Ambient, Directional, Point, Spot };
+// "term": which of the lighting sum's three terms a picture shows (DESIGN §3's k_a·I_a, the diffuse and the
+// specular sums), each as the shading mode evaluates it; all is the whole sum.
+enum class LightingTerm { All, Ambient, Diffuse, Specular };
 
 // The modes that shade the subdivided mesh: what the report, the showcase and the error view compare.
 inline constexpr std::array kShadingModes = {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong,
@@ -28,10 +31,13 @@ inline constexpr std::array kAllShadingModes = {ShadingMode::Flat, ShadingMode::
 inline constexpr std::array kLightingModels = {LightingModel::Phong, LightingModel::BlinnPhong};
 inline constexpr std::array kLightTypes = {LightType::Ambient, LightType::Directional, LightType::Point,
                                            LightType::Spot};
+inline constexpr std::array kLightingTerms = {LightingTerm::All, LightingTerm::Ambient, LightingTerm::Diffuse,
+                                              LightingTerm::Specular};
 
 std::string_view toString(ShadingMode mode);    // "flat" | "gouraud" | "phong" | "toon" | "exact"
 std::string_view toString(LightingModel model); // "phong" | "blinn-phong"
 std::string_view toString(LightType type);      // "ambient" | "directional" | "point" | "spot"
+std::string_view toString(LightingTerm term);   // "all" | "ambient" | "diffuse" | "specular"
 std::optional<ShadingMode> parseShadingMode(std::string_view text);
 std::optional<LightingModel> parseLightingModel(std::string_view text);
 std::optional<LightType> parseLightType(std::string_view text);
@@ -48,6 +54,11 @@ struct Material {
     double shininess = 32; // α for Phong, β for Blinn-Phong; >= 1
     bool operator==(const Material&) const = default;
 };
+
+// The material with the coefficients of every term but `term` set to 0: what the renderer draws for a
+// "term" (the shaders evaluate their one equation, and the other terms vanish from it). The CPU reference
+// does not use it: it takes the term from shadeTerms' three sums (ShadeOptions::term).
+Material onlyTerm(const Material& material, LightingTerm term);
 
 struct Light {
     LightType type = LightType::Point;
@@ -77,6 +88,7 @@ struct ShadeOptions {
     LightingModel model = LightingModel::BlinnPhong;
     bool toon = false;
     int toonBands = kToonBands;
+    LightingTerm term = LightingTerm::All; // what shade() returns: the whole sum or one of its terms
 };
 
 // The three sums of DESIGN §3's equation, each over every light and not yet clamped: Σ k_a·I_a,
@@ -85,11 +97,13 @@ struct ShadeOptions {
 struct LightTerms {
     glm::dvec3 ambient{0.0}, diffuse{0.0}, specular{0.0};
     glm::dvec3 total() const { return ambient + diffuse + specular; }
+    glm::dvec3 of(LightingTerm term) const; // one term, or total() for All
 };
 LightTerms shadeTerms(const SurfacePoint& point, const Material& material, std::span<const Light> lights,
                       ShadeOptions options);
 
-// I = Σ_lights [k_a·I_a + att·spot·(k_d·I_d·max(l·n,0) + [l·n > 0]·k_s·I_s·spec)], not yet clamped.
+// I = Σ_lights [k_a·I_a + att·spot·(k_d·I_d·max(l·n,0) + [l·n > 0]·k_s·I_s·spec)], not yet clamped; with
+// options.term, that term of it alone.
 glm::dvec3 shade(const SurfacePoint& point, const Material& material, std::span<const Light> lights,
                  ShadeOptions options);
 

@@ -86,6 +86,7 @@ struct Scene {
     Projection projection;
     ShadingMode shading = ShadingMode::Phong;
     LightingModel lighting = LightingModel::BlinnPhong;
+    LightingTerm term = LightingTerm::All; // "term": the whole lighting sum or one of its terms
     int toonBands = kToonBands; // "toon_bands": diffuse bands of toon shading, kMinToonBands..kMaxToonBands
     double tolerancePx = 0.5;   // "tolerance_px": the silhouette error "auto" subdivision allows, > 0
     DepthMode depth = DepthMode::Standard;

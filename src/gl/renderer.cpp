@@ -185,6 +185,10 @@ void Renderer::renderScene(const Scene& scene, int width, int height, int x) {
     Scene sized = scene;
     sized.width = width;
     sized.height = height;
+    // One term of the lighting sum: the other terms' coefficients are 0, and every shader's one equation
+    // (lighting.glsl) draws that term alone, as its shading mode evaluates it.
+    if (scene.term != LightingTerm::All)
+        for (SceneObject& object : sized.objects) object.material = onlyTerm(object.material, scene.term);
     const SceneView view = sceneView(sized);
 
     glViewport(x, 0, width, height);
@@ -197,7 +201,7 @@ void Renderer::renderScene(const Scene& scene, int width, int height, int x) {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_GREATER);
 
-    ProgramVariant variant = ProgramVariant::forScene(scene, specialization_ != Specialization::None);
+    ProgramVariant variant = ProgramVariant::forScene(sized, specialization_ != Specialization::None);
     variant.flatGeometryShader = flatGeometryShader_ && scene.shading == ShadingMode::Flat;
     variant.exactToon = exactToon_ && scene.shading == ShadingMode::Exact;
     std::vector<Light> lightsView;
@@ -215,7 +219,7 @@ void Renderer::renderScene(const Scene& scene, int width, int height, int x) {
     const ObjectProgram objectProgram = [&, bound = static_cast<const SurfaceProgram*>(nullptr)](
                                             const SceneObject& object) mutable -> const SurfaceLocations& {
         const SurfaceProgram& surface = program(
-            specialization_ == Specialization::Values ? variant.withValues(scene, object.material) : variant);
+            specialization_ == Specialization::Values ? variant.withValues(sized, object.material) : variant);
         if (&surface != bound) {
             glUseProgram(surface.program.get());
             setFrameUniforms(surface.at);

@@ -512,8 +512,9 @@ TEST_F(Browser, OverlayLightDragAndProbeAsInTheWindow) {
     expectCleanConsole(session.answer(console).at("console"));
 }
 
-// Keys 1–4, B, +, −, O change the page's picture as they change the window's: after each, the picture
-// differs from the one before, and it is what native `render` draws for the state the page reports.
+// Keys 1–4, B, K (each term of the lighting sum, then all), +, −, O change the page's picture as they change
+// the window's: after each, the picture differs from the one before, and it is what native `render` draws
+// for the state the page reports.
 TEST_F(Browser, KeysChangeThePictureAsInTheWindow) {
     Scene scene = litSphereScene(160, LightType::Point);
     scene.shading = ShadingMode::Toon;
@@ -528,7 +529,8 @@ TEST_F(Browser, KeysChangeThePictureAsInTheWindow) {
     };
     // B in Phong shading, where the highlight shows the model (toon's threshold can hide it).
     std::vector<Step> steps = {{"start", 0}, {"1", '1'}, {"2", '2'}, {"4", '4'}, {"5", '5'},
-                               {"3", '3'},   {"B", 'B'}, {"+", '='}, {"-", '-'}, {"O", 'O'}};
+                               {"3", '3'},   {"B", 'B'}, {"K", 'K'}, {"K", 'K'}, {"K", 'K'},
+                               {"K", 'K'},   {"+", '='}, {"-", '-'}, {"O", 'O'}};
     for (Step& step : steps) {
         if (step.code) step.press = session.key(step.code);
         step.ui = session.ui();
@@ -558,6 +560,7 @@ TEST_F(Browser, KeysChangeThePictureAsInTheWindow) {
     const json ui = session.answer(steps.back().ui).at("ui");
     EXPECT_TRUE(ui.at("orthographic").get<bool>());
     EXPECT_EQ(ui.at("current").at("lighting"), "phong") << "B from Blinn-Phong";
+    EXPECT_EQ(ui.at("current").at("term"), "all") << "K four times: ambient, diffuse, specular, all";
     expectCleanConsole(session.answer(console).at("console"));
 }
 

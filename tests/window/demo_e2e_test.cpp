@@ -87,11 +87,15 @@ struct Expected {
     int level = 3;
     double shininess = 16;
     ProjectionType projection = ProjectionType::Perspective;
+    LightingTerm term = LightingTerm::All;
 
-    // "shadelab — <shading> shading, <lighting> lighting | level N | <triangles> | <frame time> | H: keys"
+    // "shadelab — <shading> shading, <lighting> lighting[, <term> term only] | level N | <triangles> | <frame
+    // time> | H: keys"
     std::string titlePrefix() const {
         return "shadelab — " + std::string(toString(shading)) + " shading, " +
-               std::string(toString(lighting)) + " lighting | level " + std::to_string(level) + " | ";
+               std::string(toString(lighting)) + " lighting" +
+               (term == LightingTerm::All ? "" : ", " + std::string(toString(term)) + " term only") +
+               " | level " + std::to_string(level) + " | ";
     }
 };
 
@@ -116,6 +120,11 @@ const std::vector<KeyStep>& keySteps() {
          }},
         {"plus", [](Expected& e) { ++e.level; }}, // '+' is Shift + '=': the demo binds the '=' key
         {"minus", [](Expected& e) { --e.level; }},
+        // K: one term of the lighting sum at a time, then all of it again.
+        {"k", [](Expected& e) { e.term = LightingTerm::Ambient; }},
+        {"k", [](Expected& e) { e.term = LightingTerm::Diffuse; }},
+        {"k", [](Expected& e) { e.term = LightingTerm::Specular; }},
+        {"k", [](Expected& e) { e.term = LightingTerm::All; }},
         {"o", [](Expected& e) { e.projection = ProjectionType::Orthographic; }}, // not in the title
     };
     return kSteps;
@@ -299,6 +308,7 @@ Image checkState(DemoProcess& demo, const Expected& expected, const std::string&
     const Scene saved = loadScene(stem.string() + ".json");
     EXPECT_EQ(toString(saved.shading), toString(expected.shading));
     EXPECT_EQ(toString(saved.lighting), toString(expected.lighting));
+    EXPECT_EQ(toString(saved.term), toString(expected.term));
     EXPECT_EQ(toString(saved.projection.type), toString(expected.projection));
     EXPECT_EQ(saved.width, kWidth);
     EXPECT_EQ(saved.height, kHeight);
@@ -374,14 +384,16 @@ void DemoWindow::everyModeKeyShowsWhatRenderGives(const std::string& api) {
     Expected expected;
     demo.window().waitForTitle(expected.titlePrefix());
     Image previous = checkState(demo, expected, "start", scratch(), api);
+    int number = 0;
     for (const KeyStep& step : keySteps()) {
         SCOPED_TRACE(std::string("after key ") + step.key);
+        const std::string label = std::to_string(++number) + "-" + step.key; // K comes four times
         const auto start = Clock::now();
         demo.window().key(step.key);
         step.change(expected);
         demo.window().waitForTitle(expected.titlePrefix());
         std::printf("key %-6s title in %3.0f ms\n", step.key, msSince(start));
-        const Image picture = checkState(demo, expected, step.key, scratch(), api);
+        const Image picture = checkState(demo, expected, label, scratch(), api);
         // Each key changes the picture beyond the tolerance, so a window stuck on the state before fails.
         EXPECT_FALSE(compareImages(picture, previous, kWindowTolerance).passed)
             << "the picture after key " << step.key << " is the one before it";

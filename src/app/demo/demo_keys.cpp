@@ -22,6 +22,7 @@ const std::vector<KeyBinding>& bindings() {
         {{'V'}, "V", "split view: the mode beside exact; drag the divider", Command::ToggleSplitView},
         {{'I'}, "I", "intensity profile along the row under the pointer", Command::ToggleProfileView},
         {{'B'}, "B", "Phong <-> Blinn-Phong lighting", Command::ToggleLighting},
+        {{'K'}, "K", "term: all, then ambient, diffuse, specular alone", Command::NextTerm},
         {{kKeyEqual, kKeyKeypadAdd}, "+", "subdivision level up", Command::LevelUp},
         {{kKeyMinus, kKeyKeypadSubtract}, "-", "subdivision level down", Command::LevelDown},
         {{'A'}, "A", "automatic level: silhouette error < tolerance_px", Command::AutoLevel},

@@ -156,6 +156,9 @@ bool DemoState::apply(Command command) {
     case Command::ToggleLighting:
         toggleLighting();
         break;
+    case Command::NextTerm: // all, ambient, diffuse, specular, all
+        scene_.term = kLightingTerms[(std::size_t(scene_.term) + 1) % kLightingTerms.size()];
+        break;
     case Command::LevelUp:
         changeLevels(+1);
         break;
@@ -241,6 +244,9 @@ std::string DemoState::describeChange(Command command) const {
         return scene.view.kind == ViewKind::Scene ? "view: scene" : "view: " + toString(scene.view);
     case Command::ToggleLighting:
         return std::string(toString(scene.lighting)) + " lighting";
+    case Command::NextTerm:
+        return scene.term == LightingTerm::All ? "every term of the lighting sum"
+                                               : "the " + std::string(toString(scene.term)) + " term alone";
     case Command::LevelUp:
     case Command::LevelDown:
         return "level " + std::to_string(level());

@@ -37,6 +37,7 @@ enum class Command {
     ToggleSplitView,
     ToggleProfileView,
     ToggleLighting,
+    NextTerm,
     LevelUp,
     LevelDown,
     ToggleProjection,

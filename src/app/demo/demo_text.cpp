@@ -17,9 +17,11 @@ std::string formatVector(const glm::dvec3& v) {
 
 namespace {
 
+// "phong shading, blinn-phong lighting", and with one term drawn ", specular term only".
 std::string modes(const Scene& scene) {
     return std::string(toString(scene.shading)) + " shading, " + std::string(toString(scene.lighting)) +
-           " lighting";
+           " lighting" +
+           (scene.term == LightingTerm::All ? "" : ", " + std::string(toString(scene.term)) + " term only");
 }
 
 // What is drawn: the mesh's level (and "(auto)"), or for exact shading, which draws no mesh, the ray cast.
@@ -110,7 +112,9 @@ std::string presentationLabel(const DemoState& state) {
     const Scene scene = state.drawn();
     // Three short lines rather than two long ones: the label's letters can be larger in the same width.
     std::string label = std::string(toString(scene.shading)) + " shading\n" +
-                        std::string(toString(scene.lighting)) + " lighting\n" +
+                        std::string(toString(scene.lighting)) + " lighting" +
+                        (scene.term == LightingTerm::All ? "" : ", " + std::string(toString(scene.term))) +
+                        "\n" +
                         (scene.shading == ShadingMode::Exact ? std::string("ray-cast")
                                                              : "level " + std::to_string(state.level()));
     if (!scene.objects.empty()) {

@@ -93,6 +93,7 @@ Scene composeScene(const std::string& path, const SceneOverrides& overrides) {
 Scene applyOverrides(Scene scene, const SceneOverrides& o, const std::string& path) {
     if (o.shading) scene.shading = parseNameOrThrow(*o.shading, "--shading", kAllShadingModes);
     if (o.lighting) scene.lighting = parseNameOrThrow(*o.lighting, "--lighting", kLightingModels);
+    if (o.term) scene.term = parseNameOrThrow(*o.term, "--term", kLightingTerms);
     if (o.subdivisions) {
         const int level = parseLevel(*o.subdivisions);
         for (SceneObject& object : scene.objects) object.subdivisions = level;

@@ -28,6 +28,10 @@ void addSceneFlags(CLI::App& command, SceneOverrides& o) {
             " (exact: each sphere ray-cast per pixel, the analytic reference; overrides the scene)");
     command.add_option("--lighting", o.lighting,
                        "Lighting model: " + joinNames(kLightingModels) + " (overrides the scene)");
+    command.add_option("--term", o.term,
+                       "Term of the lighting sum drawn: " + joinNames(kLightingTerms) +
+                           " (ambient k_a*I_a, diffuse k_d*I_d*max(l.n,0), specular k_s*I_s*spec, each as "
+                           "the shading mode evaluates it; all: their sum)");
     command.add_option("--subdivisions", o.subdivisions,
                        "Subdivision level of every object, 0.." + std::to_string(kMaxSubdivisions) +
                            ", or auto: the smallest level whose silhouette error stays below --tolerance-px");

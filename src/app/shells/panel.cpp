@@ -118,6 +118,13 @@ void Panel::draw(DemoState& state, const std::string& status, int columnWidth) {
         ImGui::PushTextWrapPos(0.0f);
         ImGui::TextUnformatted(status.c_str());
         ImGui::Checkbox("B keeps the highlight size (beta = 4 alpha)", &state.matchHighlight);
+        // Which term of the lighting sum is drawn (K cycles them).
+        ImGui::TextUnformatted("term (K):");
+        for (const LightingTerm term : kLightingTerms) {
+            ImGui::SameLine();
+            if (ImGui::RadioButton(std::string(toString(term)).c_str(), scene.term == term))
+                scene.term = term;
+        }
         if (!scene.objects.empty() && ImGui::CollapsingHeader("material", ImGuiTreeNodeFlags_DefaultOpen)) {
             // An edit applies to the chosen object (a probe click picks one), or to all of them only when
             // "all objects" (0) is chosen.
