@@ -4,7 +4,7 @@
 #      program's own build, without debug information; warnings are errors); the packages only the checks
 #      need (X, clang's tools, emscripten, Chromium) install beside it
 #   2. from here on, beside the foreground and with the cores it leaves idle (lower CPU priorities): the
-#      sanitizer tree's build (clang, -O1), clang-tidy (.clang-tidy) on src/, the fuzzers' build
+#      sanitizer tree's build (clang; -O1, the tests' own sources -O0), clang-tidy (.clang-tidy) on src/, the fuzzers' build
 #   3. the browser build (scripts/web.sh build); formatting (.clang-format) of src/, include/, tests/, web/
 #   4. the whole test suite on the release build: CPU tests, GL tests on every headless backend (EGL with
 #      OpenGL and with OpenGL ES, OSMesa), the command line end to end, the demo window under Xvfb, the page
@@ -12,10 +12,11 @@
 #   5. the permission-dropping tests again with the binary in a folder only root can enter, as a clone in
 #      /root is; the program installed into an empty prefix runs the CI example (examples/ci/)
 #   6. the suite under AddressSanitizer + UndefinedBehaviorSanitizer (+ LeakSanitizer; only Mesa's and the
-#      system GL stack's own allocations are suppressed), built by clang at -O1: the CPU, command-line,
-#      window and EGL + OpenGL tests whole, and of the OpenGL ES and OSMesa copies of the GL tests the ones
-#      that exercise those contexts' own code (the rest is the same renderer code on the same driver). The
-#      page's tests are left out: the page is WebAssembly, not built with the sanitizers.
+#      system GL stack's own allocations are suppressed), built by clang at -O1 (the tests' own sources at
+#      -O0, tests/CMakeLists.txt): the CPU, command-line, window and EGL + OpenGL tests whole, and of the
+#      OpenGL ES and OSMesa copies of the GL tests the ones that exercise those contexts' own code (the rest
+#      is the same renderer code on the same driver). The page's tests are left out: the page is
+#      WebAssembly, not built with the sanitizers.
 #   7. the fuzzers for a fixed budget (scripts/fuzz.sh)
 # Extra arguments go to every ctest run (e.g. -R cpu.). SHADELAB_QUICK=1 skips step 2 and stops after step 4.
 set -euo pipefail
@@ -113,10 +114,11 @@ SHADELAB_BUILD_TYPE=Release scripts/setup.sh --build -- -DSHADELAB_WERROR=ON \
 finish "checks' packages"
 
 # Built by clang (the fuzzers' compiler, installed with the checks' packages) and linked by lld, at -O1 (what
-# AddressSanitizer's own documentation asks for): the suite under the sanitizers takes 2:45 instead of 6:57
-# at -O0 for 4.7 more CPU-minutes of compiling, and clang compiles this tree in half gcc's time (with the
-# tests' precompiled header, a quarter). A second compiler's warnings are errors here too, beside the release
-# tree's gcc. Line tables only (-g1): the sanitizers' reports still name file and line.
+# AddressSanitizer's own documentation asks for): the suite under the sanitizers takes about 3 minutes instead
+# of 6:57 with everything at -O0. The tests' own sources are built at -O0 all the same (tests/CMakeLists.txt:
+# a third of their -O1 compile time, the suite as long), and clang compiles this tree in half gcc's time.
+# A second compiler's warnings are errors here too, beside the release tree's gcc (and clang's
+# -Wreserved-identifier, CMakeLists.txt). Line tables only (-g1): the sanitizers' reports name file and line.
 build_asan() {
   # A tree configured by another compiler is made anew: CMake keeps a tree's compiler.
   local cache=build-asan/CMakeCache.txt
@@ -173,7 +175,7 @@ rm -rf "$prefix"
 
 stage "sanitizer build (what the release tests left)"
 finish "sanitizer build"
-stage "tests under AddressSanitizer + UndefinedBehaviorSanitizer (clang, -O1)"
+stage "tests under AddressSanitizer + UndefinedBehaviorSanitizer (clang; -O1, the tests' code -O0)"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 # The suppressions from a file every user can read: the permission-dropping tests run the program as nobody,
