@@ -133,12 +133,14 @@ nlohmann::json settingsJson(const Scene& scene) {
 
 // Object `index`'s material as the scene file spells it.
 nlohmann::json materialJson(const Scene& scene, std::size_t index) {
-    Scene one = scene;
+    Scene one; // the defaults, but for that object: its material is written the same in any scene
     one.objects = {scene.objects[index]};
     return nlohmann::json::parse(sceneToJson(one)).at("objects").at(0).at("material");
 }
 
-// What the panel shows, with the scenes' values but not their objects: the shown object's material alone.
+// Everything the page shows besides the canvas, but the scenes' objects: title, status, the scene's values
+// (as given and as drawn), the shown object's material, the help text, the renderer string, the last
+// draw's error, the picture's place in the canvas and the object the material controls edit.
 nlohmann::json panelJson() {
     const Page& p = page();
     const DemoState& s = *p.state;
@@ -322,9 +324,6 @@ EMSCRIPTEN_KEEPALIVE void shadelab_redraw() {
     page().dirty = true;
 }
 
-// Everything the page shows besides the canvas, as JSON: title, status, the scene (for the panel and for S),
-// the help text, flags, the renderer string, the last draw's error, the picture's place in the canvas and
-// the object the material controls edit.
 // What the panel's refresh reads, twice a second: everything but the scenes' objects (panelJson).
 EMSCRIPTEN_KEEPALIVE const char* shadelab_panel() {
     return give(panelJson().dump());
