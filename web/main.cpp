@@ -123,10 +123,9 @@ template <typename Read> bool captureInto(int width, int height, gl::ColorFormat
 
 // The scene as JSON without its objects: the panel's refresh runs twice a second, and the objects of a
 // large scene are megabytes of JSON (10,000 of them: 2 s a call, and the page stopped answering).
-nlohmann::json settingsJson(const Scene& scene) {
-    Scene settings = scene;
-    settings.objects.clear();
-    nlohmann::json json = nlohmann::json::parse(sceneToJson(settings));
+nlohmann::json settingsJson(Scene scene) { // by value: DemoState::current's copy moves in
+    scene.objects.clear();
+    nlohmann::json json = nlohmann::json::parse(sceneToJson(scene));
     json.erase("objects");
     return json;
 }
