@@ -100,6 +100,7 @@ function bind() {
     setMatch: c('shadelab_set_match_highlight', null, ['number']),
     redraw: c('shadelab_redraw', null, []),
     // The panel's values without the scenes' objects (twice a second), and everything with them.
+    panelText: () => Module.ccall('shadelab_panel', 'string', [], []),
     panel: () => JSON.parse(Module.ccall('shadelab_panel', 'string', [], [])),
     ui: () => JSON.parse(Module.ccall('shadelab_ui', 'string', [], [])),
     capture: c('shadelab_capture', 'number', ['number', 'number']),
@@ -137,7 +138,10 @@ async function shadelabStarted() {
   showMessage(message);
   refresh();
   window.shadelab.ready = true;
-  setInterval(refresh, 500); // the title's frame time
+  // The title's frame time, and what changed without a control (a draw error): twice a second, and only
+  // when the panel's values changed, since rewriting unchanged text still repaints the page (an idle page
+  // took 12 % of a core in headless Chromium doing that).
+  setInterval(() => refresh(true), 500);
 }
 
 // The command-line flags, given as ?shading=flat&size=256x256…, through the CLI's own parser.
@@ -287,11 +291,17 @@ const toHex = (c) => '#' + c.map((v) => Math.round(Math.min(Math.max(v, 0), 1) *
 const fromHex = (hex) => [1, 3, 5].map((i) => parseInt(hex.substr(i, 2), 16) / 255);
 
 let ui = null;
+let shownPanel = ''; // the panel's values that refresh last showed, as text
 
-// The panel shows the state; a control changes it by a key's command or by an edited scene.
-function refresh() {
+// The panel shows the state; a control changes it by a key's command or by an edited scene. `ifChanged`:
+// nothing is written when the values are those shown (a draw error is shown again all the same: it stays
+// until an action replaces it).
+function refresh(ifChanged = false) {
   if (!api) return;
-  ui = api.panel();
+  const text = api.panelText();
+  if (ifChanged && text === shownPanel && !ui.error) return;
+  shownPanel = text;
+  ui = JSON.parse(text);
   document.title = ui.title;
   $('status').textContent = ui.status;
   // The table keeps its columns (white-space: pre), so the hint is broken into short lines of its own.

@@ -351,7 +351,7 @@ TEST_P(OutputSafety, SignalDuringWriteLeavesNoTempAndTheOldFile) {
         options.signal = signal;
         // Sent while the temporary file exists: the moment that used to leave it behind.
         options.signalWhen = [&] { return hasTempFile(dir_); };
-        const Outcome r = run({"reference", "--size", "2500x2500", "--out", "good.png"}, options);
+        const Outcome r = run({"reference", "--size", "1500x1500", "--out", "good.png"}, options);
         EXPECT_EQ(r.signal, signal) << "the exit status must say the signal: " << describe(r);
         EXPECT_FALSE(hasTempFile(dir_)) << "signal " << signal;
         EXPECT_EQ(readFile(out), kPrecious) << "signal " << signal;
