@@ -1,5 +1,6 @@
 #include "shadelab/camera.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -142,6 +143,25 @@ glm::dmat3 normalMatrix(const glm::dmat4& viewFromObject) {
     glm::dmat3 cof(glm::cross(m[1], m[2]), glm::cross(m[2], m[0]), glm::cross(m[0], m[1]));
     const double det = glm::dot(m[0], cof[0]);
     return det < 0 ? -cof : cof;
+}
+
+std::string_view toString(NormalMatrixRule rule) {
+    return rule == NormalMatrixRule::Model ? "model" : "inverse-transpose";
+}
+
+glm::dmat3 normalViewFromObject(const glm::dmat4& viewFromObject, NormalMatrixRule rule) {
+    const auto largestEntry = [](const glm::dmat3& m) {
+        double k = 0;
+        for (int c = 0; c < 3; ++c)
+            for (int r = 0; r < 3; ++r) k = std::max(k, std::abs(m[c][r]));
+        return k;
+    };
+    const glm::dmat3 linear(viewFromObject);
+    const double k = largestEntry(linear);
+    const glm::dmat3 unit = k > 0 ? linear / k : linear;
+    const glm::dmat3 normal = rule == NormalMatrixRule::Model ? unit : normalMatrix(glm::dmat4(unit));
+    const double n = largestEntry(normal);
+    return n > 0 ? normal / n : normal;
 }
 
 } // namespace shadelab

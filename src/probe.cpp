@@ -69,8 +69,8 @@ std::optional<ProbePoint> pickSurfacePoint(const Scene& scene, double x, double 
     rays.ray(x, y, originView, directionView);
     RayHit hit;
     for (std::size_t k = 0; k < scene.objects.size(); ++k)
-        intersectObject(prepareObject(scene.objects[k], view.viewFromWorld), int(k), originView,
-                        directionView, view.volume.near, far, hit);
+        intersectObject(prepareObject(scene.objects[k], view.viewFromWorld, scene.normalMatrix), int(k),
+                        originView, directionView, view.volume.near, far, hit);
     if (hit.object < 0) return std::nullopt;
     return ProbePoint{std::size_t(hit.object), unitDirection(hit.pointObject)};
 }
@@ -82,7 +82,7 @@ ProbeReport probeSurface(const Scene& scene, const ProbePoint& point, const Sphe
     const SceneView view = sceneView(scene);
     const SceneObject& object = scene.objects[point.object];
     const ObjectFrame frame{view.viewFromWorld * worldFromObject(object),
-                            prepareObject(object, view.viewFromWorld)};
+                            prepareObject(object, view.viewFromWorld, scene.normalMatrix)};
     std::vector<Light> lightsView;
     int light = -1;
     for (const Light& l : scene.lights) {

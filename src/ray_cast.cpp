@@ -19,16 +19,17 @@ double maxAbsEntry(const glm::dmat3& m) {
 } // namespace
 
 // viewFromObject's 3×3 is (rotation)·diag(radius·scale). Its determinant is radius³·sx·sy·sz, which a
-// generic inverse or the cofactor matrix under/overflows for extreme radii (radius 1e-9 gives cofactors
-// of 1e-18, which safeNormalize treats as zero). Dividing by the largest entry first keeps both O(1): the
-// inverse is then rescaled back, and the normal matrix only needs its direction (it is renormalized).
-ObjectInView prepareObject(const SceneObject& object, const glm::dmat4& viewFromWorld) {
+// generic inverse under/overflows for extreme radii (radius 1e-9 gives a determinant of 1e-27). Dividing by
+// the largest entry first keeps it O(1); the inverse is then rescaled back. The normal matrix is scaled the
+// same way (normalViewFromObject), by the scene's rule.
+ObjectInView prepareObject(const SceneObject& object, const glm::dmat4& viewFromWorld,
+                           NormalMatrixRule rule) {
     const glm::dmat4 viewFromObject = viewFromWorld * worldFromObject(object);
     const glm::dmat3 linear(viewFromObject);
     const double k = maxAbsEntry(linear); // > 0: validated radius > 0 and non-zero scale
     const glm::dmat3 unit = linear / k;
     return ObjectInView{glm::inverse(unit) / k, glm::dvec3(viewFromObject[3]),
-                        normalMatrix(glm::dmat4(unit))};
+                        normalViewFromObject(viewFromObject, rule)};
 }
 
 // Intersects the view-space ray origin + s·direction with `object` and keeps the hit in `best` when it lies

@@ -82,6 +82,7 @@ std::string sceneToJson(const Scene& scene) {
         {"tolerance_px", scene.tolerancePx},
         {"depth", toString(scene.depth)},
         {"vertex_normals", toString(scene.vertexNormals)},
+        {"normal_matrix", toString(scene.normalMatrix)},
         {"overlay", toString(scene.overlay)},
         {"view", toString(scene.view)},
         {"objects", objects},

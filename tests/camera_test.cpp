@@ -1,6 +1,7 @@
 // Camera frame, projections and the normal matrix against DESIGN §2 and GLM's own matrices.
 #include "shadelab/camera.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -448,6 +449,44 @@ TEST(NormalMatrix, StaysFiniteForNearSingularAndSingularMatrices) {
     rankOne[0] = glm::dvec4(1, 2, 3, 0);
     rankOne[3][3] = 1;
     EXPECT_TRUE(allFinite(normalMatrix(rankOne)));
+}
+
+// normalViewFromObject: the model rule's matrix is M's own 3×3 and the inverse-transpose rule's is (M⁻¹)ᵀ,
+// each up to a positive scale that makes its largest entry 1, also for radii of 1e-30 and 1e30. Checked
+// against GLM's own inverseTranspose and M itself: for the ellipsoid diag(4, 1, 0.5), the normal at
+// p = (1, 1, 1)/√3 goes along (4, 1, 0.5) by M and along (1/4, 1, 2) by (M⁻¹)ᵀ.
+TEST(NormalMatrix, EachRuleIsItsMatrixScaledToLargestEntryOne) {
+    const glm::dmat4 view = glm::rotate(glm::translate(glm::dmat4(1.0), glm::dvec3(3, -2, 5)), 0.7,
+                                        glm::normalize(glm::dvec3(1, 2, -1)));
+    for (const double radius : {1e-30, 1.0, 1e30}) {
+        for (const glm::dvec3 scale : {glm::dvec3(4, 1, 0.5), glm::dvec3(-2, 0.5, 1.5)}) {
+            const glm::dmat4 m = view * glm::scale(glm::dmat4(1.0), radius * scale);
+            const glm::dmat3 m3(view);
+            SCOPED_TRACE("radius " + std::to_string(radius) + ", scale " + str(scale));
+            for (const NormalMatrixRule rule : kNormalMatrixRules) {
+                const glm::dmat3 n = normalViewFromObject(m, rule);
+                EXPECT_TRUE(allFinite(n));
+                double largest = 0;
+                for (int c = 0; c < 3; ++c)
+                    for (int r = 0; r < 3; ++r) largest = std::max(largest, std::abs(n[c][r]));
+                EXPECT_NEAR(largest, 1, 1e-15) << toString(rule);
+                const glm::dvec3 p = glm::normalize(glm::dvec3(1, 1, 1));
+                // Independently: M·p, or (M⁻¹)ᵀ·p from GLM at the unit radius (the direction is radius-free).
+                const glm::dmat3 unitM = m3 * glm::dmat3(glm::scale(glm::dmat4(1.0), scale));
+                const glm::dvec3 expected =
+                    rule == NormalMatrixRule::Model ? unitM * p : glm::inverseTranspose(unitM) * p;
+                EXPECT_LE(glm::length(glm::normalize(n * p) - glm::normalize(expected)), 1e-12)
+                    << toString(rule) << ": " << str(glm::normalize(n * p)) << " against "
+                    << str(glm::normalize(expected));
+            }
+            // The two rules differ under this uneven scale (the lesson's whole point).
+            const glm::dvec3 p = glm::normalize(glm::dvec3(1, 1, 1));
+            EXPECT_GT(
+                glm::length(glm::normalize(normalViewFromObject(m, NormalMatrixRule::Model) * p) -
+                            glm::normalize(normalViewFromObject(m, NormalMatrixRule::InverseTranspose) * p)),
+                0.5);
+        }
+    }
 }
 
 } // namespace

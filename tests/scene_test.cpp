@@ -115,6 +115,7 @@ void expectSameScene(const Scene& a, const Scene& b) {
     EXPECT_EQ(a.tolerancePx, b.tolerancePx);
     EXPECT_EQ(a.depth, b.depth);
     EXPECT_EQ(a.vertexNormals, b.vertexNormals);
+    EXPECT_EQ(a.normalMatrix, b.normalMatrix);
     ASSERT_EQ(a.objects.size(), b.objects.size());
     for (std::size_t i = 0; i < a.objects.size(); ++i) expectSameObject(a.objects[i], b.objects[i]);
     ASSERT_EQ(a.lights.size(), b.lights.size());
@@ -332,7 +333,9 @@ const std::vector<ErrorCase> kErrorCases = {
     {"UnknownTopLevelKey",
      R"({"shadding": "phong"})",
      {"scene.json: shadding: unknown key; expected one of image, camera, projection, shading, lighting, "
-      "term, toon_bands, tolerance_px, depth, vertex_normals, overlay, view, view_at, objects, lights"}},
+      "term, toon_bands, tolerance_px, depth, vertex_normals, normal_matrix, overlay, view, view_at, "
+      "objects, "
+      "lights"}},
     {"OverlayUnknown",
      R"({"overlay": "wires"})",
      {"scene.json: overlay: unknown value \"wires\"; expected one of none, wireframe, normals"}},
@@ -375,6 +378,9 @@ const std::vector<ErrorCase> kErrorCases = {
     {"UnknownTerm",
      R"({"term": "spec"})",
      {R"(term: unknown value "spec"; expected one of all, ambient, diffuse, specular)"}},
+    {"UnknownNormalMatrix",
+     R"({"normal_matrix": "inverse"})",
+     {R"(normal_matrix: unknown value "inverse"; expected one of inverse-transpose, model)"}},
     {"UnknownProjectionType",
      R"({"projection": {"type": "fisheye"}})",
      {R"(projection.type: unknown value "fisheye"; expected one of perspective, frustum, orthographic)"}},
@@ -822,6 +828,7 @@ TEST(SceneJson, RoundTripsEveryFieldExactly) {
     scene.tolerancePx = 0.25;
     scene.depth = DepthMode::ReversedInfinite;
     scene.vertexNormals = VertexNormals::Exact;
+    scene.normalMatrix = NormalMatrixRule::Model;
     SceneObject ellipsoid;
     ellipsoid.center = {1e-7, 2, -3};
     ellipsoid.scale = {-1.5, 0.25, 3};

@@ -184,6 +184,10 @@ nlohmann::json panelJson() {
         {"currentSettings", settingsJson(s.current(picture.width, picture.height))}, // as drawn, likewise
         {"objectCount", scene.objects.size()},
         {"shownMaterial", material},
+        {"shownScale",
+         shown ? nlohmann::json::array({scene.objects[*shown].scale.x, scene.objects[*shown].scale.y,
+                                        scene.objects[*shown].scale.z})
+               : nlohmann::json(nullptr)},
         {"sceneName", p.sceneName},
         {"renderer", p.rendererString},
         {"error", p.drawError},
@@ -228,6 +232,7 @@ EMSCRIPTEN_KEEPALIVE const char* shadelab_apply_flags(const char* flags) {
         take("shading", o.shading);
         take("lighting", o.lighting);
         take("term", o.term);
+        take("normal-matrix", o.normalMatrix);
         take("size", o.size);
         take("subdivisions", o.subdivisions);
         take("tolerance-px", o.tolerancePx);
@@ -320,6 +325,14 @@ EMSCRIPTEN_KEEPALIVE const char* shadelab_edit_material(const char* json) {
         if (changes.contains("specular")) edited.specular = parsed.specular;
         if (changes.contains("shininess")) edited.shininess = parsed.shininess;
         state.editMaterial(edited);
+        requestDraw();
+    });
+}
+
+// The panel's scale sliders: the shown object's scale (DemoState::editScale), or a message.
+EMSCRIPTEN_KEEPALIVE const char* shadelab_edit_scale(double x, double y, double z) {
+    return guarded([&] {
+        page().state->editScale({x, y, z});
         requestDraw();
     });
 }

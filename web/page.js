@@ -91,6 +91,7 @@ function bind() {
     editSettings: (text) => viaHeap(text, edit),
     editMaterial: (text) => viaHeap(text, material),
     chooseObject: c('shadelab_choose_object', null, ['number']),
+    editScale: c('shadelab_edit_scale', 'string', ['number', 'number', 'number']),
     key: c('shadelab_key', 'number', ['number']),
     drag: c('shadelab_drag', null, ['number', 'number']),
     zoom: c('shadelab_zoom', null, ['number']),
@@ -147,7 +148,7 @@ async function shadelabStarted() {
 // The command-line flags, given as ?shading=flat&size=256x256…, through the CLI's own parser.
 function applyUrlFlags() {
   const flags = {};
-  for (const name of ['shading', 'lighting', 'term', 'subdivisions', 'size', 'depth', 'tolerance-px', 'overlay', 'view'])
+  for (const name of ['shading', 'lighting', 'term', 'normal-matrix', 'subdivisions', 'size', 'depth', 'tolerance-px', 'overlay', 'view'])
     if (params.has(name)) flags[name] = params.get(name);
   return Object.keys(flags).length ? api.applyFlags(JSON.stringify(flags)) : '';
 }
@@ -317,6 +318,7 @@ function refresh(ifChanged = false) {
   setIfIdle('shading', scene.shading);
   setIfIdle('lighting', scene.lighting);
   setIfIdle('term', scene.term);
+  setIfIdle('normal-matrix', scene.normal_matrix);
   $('match').checked = ui.matchHighlight;
   setIfIdle('level', ui.level);
   $('level-out').textContent = ui.level + (ui.autoLevel ? ' (auto)' : '');
@@ -345,6 +347,8 @@ function refresh(ifChanged = false) {
     setIfIdle('ks', toHex(material.specular));
     setIfIdle('shininess', Math.log10(material.shininess));
     $('shininess-out').textContent = material.shininess.toFixed(1);
+    ['x', 'y', 'z'].forEach((axis, i) => setIfIdle('scale-' + axis, ui.shownScale[i]));
+    $('scale-out').textContent = ui.shownScale.map((v) => v.toFixed(2)).join(' ');
   }
   setIfIdle('bands', ui.settings.toon_bands);
   $('bands-out').textContent = ui.settings.toon_bands;
@@ -435,6 +439,8 @@ function wireControls() {
   $('shading').addEventListener('change', (e) => press(keyOf[e.target.value]));
   $('lighting').addEventListener('change', (e) => pressUntil(66, (u) => u.currentSettings.lighting === e.target.value, 1));
   $('term').addEventListener('change', (e) => pressUntil(75, (u) => u.currentSettings.term === e.target.value, 3));
+  $('normal-matrix').addEventListener('change',
+      (e) => pressUntil(74, (u) => u.currentSettings.normal_matrix === e.target.value, 1));
   $('match').addEventListener('change', (e) => { api.setMatch(e.target.checked ? 1 : 0); refresh(); });
   $('level').addEventListener('input', (e) => {
     const target = Number(e.target.value);
@@ -471,6 +477,12 @@ function wireControls() {
   }
   $('shininess').addEventListener('input', (e) =>
     editMaterial({shininess: Math.round(10 ** Number(e.target.value) * 10) / 10}));
+  // The object's scale: x, y, z (an uneven one makes the ellipsoid of the normal-matrix lesson, J).
+  for (const axis of ['x', 'y', 'z'])
+    $('scale-' + axis).addEventListener('input', () => {
+      showMessage(api.editScale(...['x', 'y', 'z'].map((a) => Number($('scale-' + a).value))));
+      refresh();
+    });
   $('bands').addEventListener('input', (e) => edit((s) => { s.toon_bands = Number(e.target.value); }));
   $('next-material').addEventListener('click', () => press(77));
   $('next-lights').addEventListener('click', () => press(76));

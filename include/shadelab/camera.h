@@ -4,6 +4,9 @@
 // depth clear of 0 (see gl/renderer.cpp).
 #pragma once
 
+#include <array>
+#include <string_view>
+
 #include <glm/glm.hpp>
 
 namespace shadelab {
@@ -51,5 +54,20 @@ glm::dmat4 reversedOrthographicClipFromView(const ViewVolume& volume);
 // (M⁻¹)ᵀ up to a positive scale. Never divides, so it stays finite for near-singular M; normals must be
 // renormalized after it.
 glm::dmat3 normalMatrix(const glm::dmat4& viewFromObject);
+
+// The scene's "normal_matrix": what takes object-space normals to view space. InverseTranspose is (M⁻¹)ᵀ
+// (normalMatrix), which keeps a normal perpendicular to its surface under any M; Model is M itself, what
+// students first try: right for rotations and uniform scale, wrong (tilted towards the stretched axis)
+// wherever M scales unevenly (DESIGN §2). Model is the lesson's wrong picture, drawn on purpose.
+enum class NormalMatrixRule { InverseTranspose, Model };
+inline constexpr std::array kNormalMatrixRules = {NormalMatrixRule::InverseTranspose,
+                                                  NormalMatrixRule::Model};
+std::string_view toString(NormalMatrixRule rule); // "inverse-transpose" | "model"
+
+// The normal matrix of `rule` for viewFromObject's upper 3×3, divided by its largest entry: only its
+// direction counts (the shaders and the reference renormalize), and so it fits float for radii from 1e-30 to
+// 1e30, where the cofactor itself scales like radius². M is scaled to O(1) before the cofactor is taken, so
+// the cofactor cannot under- or overflow either.
+glm::dmat3 normalViewFromObject(const glm::dmat4& viewFromObject, NormalMatrixRule rule);
 
 } // namespace shadelab

@@ -15,9 +15,9 @@ namespace shadelab {
 struct ObjectInView {
     glm::dmat3 objectFromView3;      // inverse of viewFromObject's upper 3×3
     glm::dvec3 originView;           // viewFromObject's translation: the centre in view space
-    glm::dmat3 normalViewFromObject; // normalMatrix(viewFromObject), rescaled to O(1)
+    glm::dmat3 normalViewFromObject; // normalViewFromObject(viewFromObject, rule): O(1)
 };
-ObjectInView prepareObject(const SceneObject& object, const glm::dmat4& viewFromWorld);
+ObjectInView prepareObject(const SceneObject& object, const glm::dmat4& viewFromWorld, NormalMatrixRule rule);
 
 struct RayHit {
     double s = std::numeric_limits<double>::infinity(); // ray parameter: point = origin + s·direction

@@ -15,8 +15,17 @@ struct ReferenceImage {
     std::vector<int> objectId; // per pixel, top row first: index into scene.objects, −1 for background
 };
 
-// Exact per-point lighting (the limit of Phong shading; toon bands when scene.shading is toon).
+// Exact per-point lighting (the limit of Phong shading; toon bands when scene.shading is toon), with the
+// scene's normal matrix rule: the wrong picture of "normal_matrix": "model" has its own exact oracle.
 ReferenceImage renderReference(const Scene& scene);
+
+// The scene a picture's error is measured against: the scene with normals by (M⁻¹)ᵀ, the truth, whatever
+// its rule. The error, split and profile views' exact and `shadelab report` use it, so with normals by M
+// they show what the wrong matrix costs (DESIGN §2).
+inline Scene withTrueNormals(Scene scene) {
+    scene.normalMatrix = NormalMatrixRule::InverseTranspose;
+    return scene;
+}
 
 // Pixels whose every neighbour within `radius` (Chebyshev distance) shows the same object in `ids` —
 // the "interior" used for error measurement (DESIGN §6: silhouette eroded by 2 px).

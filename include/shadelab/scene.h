@@ -87,6 +87,8 @@ struct Scene {
     ShadingMode shading = ShadingMode::Phong;
     LightingModel lighting = LightingModel::BlinnPhong;
     LightingTerm term = LightingTerm::All; // "term": the whole lighting sum or one of its terms
+    // "normal_matrix": inverse-transpose, or model (normals by M: the lecture's wrong picture, on purpose)
+    NormalMatrixRule normalMatrix = NormalMatrixRule::InverseTranspose;
     int toonBands = kToonBands; // "toon_bands": diffuse bands of toon shading, kMinToonBands..kMaxToonBands
     double tolerancePx = 0.5;   // "tolerance_px": the silhouette error "auto" subdivision allows, > 0
     DepthMode depth = DepthMode::Standard;

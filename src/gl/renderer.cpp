@@ -86,20 +86,14 @@ void setLightValues(const SurfaceLocations& at, bool specialized, const std::vec
 }
 
 void setTransforms(const SurfaceLocations& at, const glm::dmat4& clipFromView,
-                   const glm::dmat4& viewFromObject) {
+                   const glm::dmat4& viewFromObject, NormalMatrixRule rule) {
     // Composed in double; only the camera-relative products are rounded to float.
     const glm::mat4 clipFromObject(clipFromView * viewFromObject);
     const glm::mat4 viewFromObjectF(viewFromObject);
-    // The cofactor scales like radius²: divided by its largest entry it fits float for radii from 1e-30 to
-    // 1e30 (normals are renormalized in the shader anyway).
-    glm::dmat3 normal = normalMatrix(viewFromObject);
-    double largest = 0;
-    for (int c = 0; c < 3; ++c)
-        for (int r = 0; r < 3; ++r) largest = std::max(largest, std::abs(normal[c][r]));
-    const glm::mat3 normalViewFromObject(largest > 0 ? normal / largest : normal);
+    const glm::mat3 normalViewFromObjectF(normalViewFromObject(viewFromObject, rule)); // O(1): fits float
     glUniformMatrix4fv(at.clipFromObject, 1, GL_FALSE, glm::value_ptr(clipFromObject));
     glUniformMatrix4fv(at.viewFromObject, 1, GL_FALSE, glm::value_ptr(viewFromObjectF));
-    glUniformMatrix3fv(at.normalViewFromObject, 1, GL_FALSE, glm::value_ptr(normalViewFromObject));
+    glUniformMatrix3fv(at.normalViewFromObject, 1, GL_FALSE, glm::value_ptr(normalViewFromObjectF));
 }
 
 // Back faces of a closed mesh lie behind its front faces: culling them halves the fragments shaded
@@ -202,7 +196,10 @@ void Renderer::renderScene(const Scene& scene, int width, int height, int x) {
     glDepthFunc(GL_GREATER);
 
     ProgramVariant variant = ProgramVariant::forScene(sized, specialization_ != Specialization::None);
-    variant.flatGeometryShader = flatGeometryShader_ && scene.shading == ShadingMode::Flat;
+    // The geometry stage derives each face's normal from its view-space corners: the true normal, which is
+    // the inverse-transpose rule's; the model rule needs the face normal attribute transformed by M.
+    variant.flatGeometryShader = flatGeometryShader_ && scene.shading == ShadingMode::Flat &&
+                                 scene.normalMatrix == NormalMatrixRule::InverseTranspose;
     variant.exactToon = exactToon_ && scene.shading == ShadingMode::Exact;
     std::vector<Light> lightsView;
     lightsView.reserve(scene.lights.size());
@@ -247,7 +244,7 @@ void Renderer::drawMeshes(const Scene& sized, const SceneView& view, const Progr
     for (const SceneObject& object : sized.objects) {
         const SurfaceLocations& at = objectProgram(object);
         const glm::dmat4 viewFromObject = view.viewFromWorld * worldFromObject(object);
-        setTransforms(at, view.clipFromView, viewFromObject);
+        setTransforms(at, view.clipFromView, viewFromObject, sized.normalMatrix);
         cullBackFaces(object, viewFromObject, view.volume.near);
         if (variant.flatGeometryShader)
             glUniform1f(at.handedness, glm::determinant(glm::dmat3(viewFromObject)) < 0 ? -1.0f : 1.0f);
@@ -283,7 +280,7 @@ void Renderer::drawExact(const Scene& sized, const SceneView& view, const Object
         glUniformMatrix4fv(at.clipFromView, 1, GL_FALSE, glm::value_ptr(glm::mat4(view.clipFromView)));
         glUniform1f(at.depthZeroToOne, view.depth != DepthMode::Standard ? 1.0f : 0.0f);
         glUniform1f(at.alpha, exactObjectIds_ ? float(index + 1) : 1.0f);
-        const ObjectInView prepared = prepareObject(object, view.viewFromWorld);
+        const ObjectInView prepared = prepareObject(object, view.viewFromWorld, sized.normalMatrix);
         glUniform4fv(at.ndcRect, 1, glm::value_ptr(rect));
         glUniformMatrix3fv(at.objectFromView, 1, GL_FALSE,
                            glm::value_ptr(glm::mat3(prepared.objectFromView3)));

@@ -16,6 +16,7 @@
 #include "shadelab/gl/renderer.h"
 #include "shadelab/gl/screen_pass.h"
 #include "shadelab/image.h"
+#include "shadelab/reference.h"
 #include "shadelab/subdivision.h"
 #include "shadelab/text.h"
 
@@ -136,8 +137,8 @@ void Views::renderModeAndExact(const Scene& scene, int width, int height) {
     targets_->exact.fit(width, height, true, depth);
     Scene mode = scene;
     mode.view = View{};
-    mode.overlay = Overlay::None; // the lines are no part of the shading's error
-    Scene exact = mode;
+    mode.overlay = Overlay::None;        // the lines are no part of the shading's error
+    Scene exact = withTrueNormals(mode); // with normals by M, the error is what the wrong matrix costs
     exact.shading = ShadingMode::Exact;
     exact.overlay = Overlay::None;
     targets_->mode.bind();
@@ -240,7 +241,9 @@ Scene splitSideScene(const Scene& scene, const SplitSide& side) {
     if (side.lighting) out.lighting = *side.lighting;
     if (side.level)
         for (SceneObject& o : out.objects) o.subdivisions = *side.level;
-    return out;
+    // The exact side is the truth, as the error view's exact: beside a picture with normals by M it shows
+    // what the right matrix draws.
+    return side.shading == ShadingMode::Exact ? withTrueNormals(out) : out;
 }
 
 std::string sideLabel(const Scene& scene, const SplitSide& side) {

@@ -249,7 +249,7 @@ TEST(DemoKeys, EveryCommandHasExactlyOneBinding) {
 }
 
 TEST(DemoKeys, UnboundKeysGiveNoCommand) {
-    for (int key : {GLFW_KEY_Q, GLFW_KEY_Z, GLFW_KEY_J, GLFW_KEY_SPACE, GLFW_KEY_6, GLFW_KEY_F3,
+    for (int key : {GLFW_KEY_Q, GLFW_KEY_Z, GLFW_KEY_Y, GLFW_KEY_SPACE, GLFW_KEY_6, GLFW_KEY_F3,
                     GLFW_KEY_ENTER, GLFW_KEY_UNKNOWN, 0})
         EXPECT_FALSE(commandForKey(key).has_value()) << "key " << key;
 }
@@ -1297,6 +1297,42 @@ TEST(DemoPanelEdits, AnEditChangesTheChosenObjectOrThatPropertyOfAll) {
     EXPECT_FALSE(empty.shownObject().has_value());
     empty.editMaterial(m); // nothing to edit, and no crash
     EXPECT_EQ(empty.materialName(), "scene's own");
+}
+
+// The panel's scale: the chosen object's, or every object's with all chosen; a zero or non-finite
+// component is refused with a message naming the object's place and changes nothing. J then toggles the
+// normal matrix, and the title says so.
+TEST(DemoObjects, ScaleEditsTheChosenObjectOrAllAndJTogglesTheNormalMatrix) {
+    using namespace shadelab::app;
+    shadelab::Scene scene =
+        shadelab::parseScene(R"({"objects": [{"center": [-2, 0, 0]}, {"center": [2, 0, 0]}]})");
+    DemoState state(scene);
+    state.chooseEditedObject(2);
+    state.editScale({1.5, 0.5, 1});
+    EXPECT_EQ(state.scene().objects[1].scale, glm::dvec3(1.5, 0.5, 1));
+    EXPECT_EQ(state.scene().objects[0].scale, glm::dvec3(1));
+    try {
+        state.editScale({1, 0, 1});
+        ADD_FAILURE() << "a zero scale was accepted";
+    } catch (const shadelab::InputError& e) {
+        EXPECT_STREQ(e.what(), "objects[1].scale[1]: must be finite and non-zero, got 0");
+    }
+    EXPECT_THROW(state.editScale({std::nan(""), 1, 1}), shadelab::InputError);
+    EXPECT_EQ(state.scene().objects[1].scale, glm::dvec3(1.5, 0.5, 1)) << "a refused edit changed the scale";
+    state.chooseEditedObject(0); // all: the first object's scale shows; y changes on both, x stays each's
+    state.editScale({1, 2, 1});
+    EXPECT_EQ(state.scene().objects[0].scale, glm::dvec3(1, 2, 1));
+    EXPECT_EQ(state.scene().objects[1].scale, glm::dvec3(1.5, 2, 1));
+
+    EXPECT_EQ(state.scene().normalMatrix, shadelab::NormalMatrixRule::InverseTranspose);
+    ASSERT_TRUE(state.apply(*commandForKey('J')));
+    EXPECT_EQ(state.scene().normalMatrix, shadelab::NormalMatrixRule::Model);
+    EXPECT_NE(windowTitle(state, 1.0).find("normals by M"), std::string::npos) << windowTitle(state, 1.0);
+    EXPECT_NE(presentationLabel(state).find("NORMALS BY M"), std::string::npos) << presentationLabel(state);
+    EXPECT_EQ(state.lastChange(), "normals transformed by M: wrong wherever M scales unevenly");
+    ASSERT_TRUE(state.apply(*commandForKey('J')));
+    EXPECT_EQ(state.scene().normalMatrix, shadelab::NormalMatrixRule::InverseTranspose);
+    EXPECT_EQ(windowTitle(state, 1.0).find("normals by M"), std::string::npos);
 }
 
 // Issue 29: exact shading draws no mesh, so the title, the status and the presentation label name the ray

@@ -512,13 +512,14 @@ TEST_F(Browser, OverlayLightDragAndProbeAsInTheWindow) {
     expectCleanConsole(session.answer(console).at("console"));
 }
 
-// Keys 1–4, B, K (each term of the lighting sum, then all), +, −, O change the page's picture as they change
-// the window's: after each, the picture differs from the one before, and it is what native `render` draws
-// for the state the page reports.
+// Keys 1–4, B, K (each term of the lighting sum, then all), J (normals by M and back), +, −, O change the
+// page's picture as they change the window's: after each, the picture differs from the one before, and it
+// is what native `render` draws for the state the page reports.
 TEST_F(Browser, KeysChangeThePictureAsInTheWindow) {
     Scene scene = litSphereScene(160, LightType::Point);
     scene.shading = ShadingMode::Toon;
     scene.objects[0].subdivisions = 3;
+    scene.objects[0].scale = {1.4, 0.7, 1}; // an ellipsoid: normals by M (J) change its picture
     Session session;
     session.open();
     session.load(scene);
@@ -528,9 +529,9 @@ TEST_F(Browser, KeysChangeThePictureAsInTheWindow) {
         std::size_t ui = 0, capture = 0, press = 0;
     };
     // B in Phong shading, where the highlight shows the model (toon's threshold can hide it).
-    std::vector<Step> steps = {{"start", 0}, {"1", '1'}, {"2", '2'}, {"4", '4'}, {"5", '5'},
-                               {"3", '3'},   {"B", 'B'}, {"K", 'K'}, {"K", 'K'}, {"K", 'K'},
-                               {"K", 'K'},   {"+", '='}, {"-", '-'}, {"O", 'O'}};
+    std::vector<Step> steps = {{"start", 0}, {"1", '1'}, {"2", '2'}, {"4", '4'}, {"5", '5'}, {"3", '3'},
+                               {"B", 'B'},   {"K", 'K'}, {"K", 'K'}, {"K", 'K'}, {"K", 'K'}, {"J", 'J'},
+                               {"J", 'J'},   {"+", '='}, {"-", '-'}, {"O", 'O'}};
     for (Step& step : steps) {
         if (step.code) step.press = session.key(step.code);
         step.ui = session.ui();
@@ -561,6 +562,7 @@ TEST_F(Browser, KeysChangeThePictureAsInTheWindow) {
     EXPECT_TRUE(ui.at("orthographic").get<bool>());
     EXPECT_EQ(ui.at("current").at("lighting"), "phong") << "B from Blinn-Phong";
     EXPECT_EQ(ui.at("current").at("term"), "all") << "K four times: ambient, diffuse, specular, all";
+    EXPECT_EQ(ui.at("current").at("normal_matrix"), "inverse-transpose") << "J twice: model, then back";
     expectCleanConsole(session.answer(console).at("console"));
 }
 
@@ -964,6 +966,13 @@ TEST_F(Browser, MaterialControlsEditTheChosenObjectAndAProbeClickChoosesIt) {
     session.panel("#object", "0");             // all objects
     session.panel("#shininess", "2", "input"); // log10: 100
     const std::size_t all = session.ui();
+    // The scale sliders (the normal-matrix lesson's ellipsoid): object 3's x, then every object's y.
+    session.panel("#object", "3");
+    const std::size_t scaled = session.panel("#scale-x", "2.5", "input");
+    const std::size_t scaledValue = session.element("#scale-out");
+    session.panel("#object", "0");
+    session.panel("#scale-y", "0.5", "input");
+    const std::size_t allScaled = session.ui();
     const std::size_t console = session.console();
     if (!session.run(dir_)) return;
 
@@ -1018,6 +1027,17 @@ TEST_F(Browser, MaterialControlsEditTheChosenObjectAndAProbeClickChoosesIt) {
         expected.shininess = 100;
         EXPECT_EQ(allScene.objects[i].material, expected)
             << "shininess " << allScene.objects[i].material.shininess;
+    }
+
+    // Object 3 got x = 2.5; then every object y = 0.5, each keeping its x (as the material sliders).
+    ASSERT_TRUE(session.answer(scaled).at("found").get<bool>()) << "no scale slider";
+    EXPECT_EQ(session.answer(scaledValue).at("element").at("text"), "2.50 1.00 1.00");
+    const Scene scaledScene = parseScene(session.answer(allScaled).at("ui").at("scene").dump(), "page state");
+    ASSERT_EQ(scaledScene.objects.size(), 12u);
+    for (std::size_t i = 0; i < 12; ++i) {
+        SCOPED_TRACE("object " + std::to_string(i + 1));
+        EXPECT_EQ(scaledScene.objects[i].scale, glm::dvec3(i == 2 ? 2.5 : 1, 0.5, 1))
+            << "scale " << scaledScene.objects[i].scale.x << " " << scaledScene.objects[i].scale.y;
     }
     expectCleanConsole(session.answer(console).at("console"));
 }

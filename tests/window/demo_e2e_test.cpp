@@ -88,14 +88,16 @@ struct Expected {
     double shininess = 16;
     ProjectionType projection = ProjectionType::Perspective;
     LightingTerm term = LightingTerm::All;
+    NormalMatrixRule normalMatrix = NormalMatrixRule::InverseTranspose;
 
-    // "shadelab — <shading> shading, <lighting> lighting[, <term> term only] | level N | <triangles> | <frame
-    // time> | H: keys"
+    // "shadelab — <shading> shading, <lighting> lighting[, <term> term only][, normals by M] | level N |
+    // <triangles> | <frame time> | H: keys"
     std::string titlePrefix() const {
         return "shadelab — " + std::string(toString(shading)) + " shading, " +
                std::string(toString(lighting)) + " lighting" +
                (term == LightingTerm::All ? "" : ", " + std::string(toString(term)) + " term only") +
-               " | level " + std::to_string(level) + " | ";
+               (normalMatrix == NormalMatrixRule::Model ? ", normals by M" : "") + " | level " +
+               std::to_string(level) + " | ";
     }
 };
 
@@ -125,6 +127,9 @@ const std::vector<KeyStep>& keySteps() {
         {"k", [](Expected& e) { e.term = LightingTerm::Diffuse; }},
         {"k", [](Expected& e) { e.term = LightingTerm::Specular; }},
         {"k", [](Expected& e) { e.term = LightingTerm::All; }},
+        // J: normals by M, the wrong matrix (the scene's object is an ellipsoid, where it shows), and back.
+        {"j", [](Expected& e) { e.normalMatrix = NormalMatrixRule::Model; }},
+        {"j", [](Expected& e) { e.normalMatrix = NormalMatrixRule::InverseTranspose; }},
         {"o", [](Expected& e) { e.projection = ProjectionType::Orthographic; }}, // not in the title
     };
     return kSteps;
@@ -309,6 +314,7 @@ Image checkState(DemoProcess& demo, const Expected& expected, const std::string&
     EXPECT_EQ(toString(saved.shading), toString(expected.shading));
     EXPECT_EQ(toString(saved.lighting), toString(expected.lighting));
     EXPECT_EQ(toString(saved.term), toString(expected.term));
+    EXPECT_EQ(toString(saved.normalMatrix), toString(expected.normalMatrix));
     EXPECT_EQ(toString(saved.projection.type), toString(expected.projection));
     EXPECT_EQ(saved.width, kWidth);
     EXPECT_EQ(saved.height, kHeight);
@@ -378,7 +384,10 @@ TEST_F(DemoWindow, ScreenshotIsWhatRenderGivesPixelForPixel) {
 // Every key of keySteps() through the window of `api` (gl or gles), each state checked against `render
 // --api` of the same API.
 void DemoWindow::everyModeKeyShowsWhatRenderGives(const std::string& api) {
-    const fs::path scene = writeScene("scene.json", sceneJson(kWidth, kHeight, 3, "toon", "phong"));
+    // An ellipsoid, so that J (normals by M) changes the picture.
+    std::string json = sceneJson(kWidth, kHeight, 3, "toon", "phong");
+    json.replace(json.find(R"("radius": 1.1,)"), 14, R"("radius": 1.1, "scale": [1.4, 0.7, 1],)");
+    const fs::path scene = writeScene("scene.json", json);
     DemoProcess& demo =
         startDemo("demo", {scene.string(), "--size", kSize, "--hide-panel", "--gl-debug", "--api", api});
     Expected expected;

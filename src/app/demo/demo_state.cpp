@@ -159,6 +159,11 @@ bool DemoState::apply(Command command) {
     case Command::NextTerm: // all, ambient, diffuse, specular, all
         scene_.term = kLightingTerms[(std::size_t(scene_.term) + 1) % kLightingTerms.size()];
         break;
+    case Command::ToggleNormalMatrix:
+        scene_.normalMatrix = scene_.normalMatrix == NormalMatrixRule::Model
+                                  ? NormalMatrixRule::InverseTranspose
+                                  : NormalMatrixRule::Model;
+        break;
     case Command::LevelUp:
         changeLevels(+1);
         break;
@@ -247,6 +252,10 @@ std::string DemoState::describeChange(Command command) const {
     case Command::NextTerm:
         return scene.term == LightingTerm::All ? "every term of the lighting sum"
                                                : "the " + std::string(toString(scene.term)) + " term alone";
+    case Command::ToggleNormalMatrix:
+        return scene.normalMatrix == NormalMatrixRule::Model
+                   ? "normals transformed by M: wrong wherever M scales unevenly"
+                   : "normals transformed by (M^-1)^T";
     case Command::LevelUp:
     case Command::LevelDown:
         return "level " + std::to_string(level());
@@ -426,6 +435,26 @@ void DemoState::editMaterial(const Material& edited) {
         }
     }
     materialEdited_ = true;
+}
+
+void DemoState::editScale(const glm::dvec3& scale) {
+    const auto shown = shownObject();
+    if (!shown) return;
+    for (int i = 0; i < 3; ++i)
+        if (!std::isfinite(scale[i]) || scale[i] == 0) {
+            char value[32];
+            std::snprintf(value, sizeof value, "%g", scale[i]);
+            throw InputError("objects[" + std::to_string(*shown) + "].scale[" + std::to_string(i) +
+                             "]: must be finite and non-zero, got " + value);
+        }
+    const glm::dvec3 before = scene_.objects[*shown].scale;
+    if (editedObject != kAllObjects) {
+        scene_.objects[*shown].scale = scale;
+    } else { // as editMaterial: only the component that changed, on every object
+        for (SceneObject& o : scene_.objects)
+            for (int i = 0; i < 3; ++i)
+                if (scale[i] != before[i]) o.scale[i] = scale[i];
+    }
 }
 
 std::string DemoState::lightsName() const {

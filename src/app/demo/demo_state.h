@@ -38,6 +38,7 @@ enum class Command {
     ToggleProfileView,
     ToggleLighting,
     NextTerm,
+    ToggleNormalMatrix,
     LevelUp,
     LevelDown,
     ToggleProjection,
@@ -171,6 +172,11 @@ public:
     // chosen, each property that differs from the shown material's is set on every object, so one slider
     // changes that property everywhere and each object keeps its others. materialName() then says so.
     void editMaterial(const Material& edited);
+    // A panel edit of the shown object's scale (the ellipsoid's axes, times its radius), for the
+    // normal-matrix lesson (J): the edited object's; with all objects chosen, the component that differs
+    // from the shown object's is set on every object, as editMaterial does. Throws InputError naming
+    // objects[N].scale for a component that is zero or not finite, as a scene file would.
+    void editScale(const glm::dvec3& scale);
     // What the last drawn view measured, in words ("error: interior mean 2.54/255, max 98.5/255"), set by
     // drawDemo; "" for the plain scene.
     std::string viewReport;

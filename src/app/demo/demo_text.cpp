@@ -17,11 +17,13 @@ std::string formatVector(const glm::dvec3& v) {
 
 namespace {
 
-// "phong shading, blinn-phong lighting", and with one term drawn ", specular term only".
+// "phong shading, blinn-phong lighting", with one term drawn ", specular term only", with normals by M
+// ", normals by M".
 std::string modes(const Scene& scene) {
     return std::string(toString(scene.shading)) + " shading, " + std::string(toString(scene.lighting)) +
            " lighting" +
-           (scene.term == LightingTerm::All ? "" : ", " + std::string(toString(scene.term)) + " term only");
+           (scene.term == LightingTerm::All ? "" : ", " + std::string(toString(scene.term)) + " term only") +
+           (scene.normalMatrix == NormalMatrixRule::Model ? ", normals by M" : "");
 }
 
 // What is drawn: the mesh's level (and "(auto)"), or for exact shading, which draws no mesh, the ray cast.
@@ -111,7 +113,8 @@ std::string probeText(const DemoState& state) {
 std::string presentationLabel(const DemoState& state) {
     const Scene scene = state.drawn();
     // Three short lines rather than two long ones: the label's letters can be larger in the same width.
-    std::string label = std::string(toString(scene.shading)) + " shading\n" +
+    std::string label = std::string(toString(scene.shading)) + " shading" +
+                        (scene.normalMatrix == NormalMatrixRule::Model ? ", normals by M" : "") + "\n" +
                         std::string(toString(scene.lighting)) + " lighting" +
                         (scene.term == LightingTerm::All ? "" : ", " + std::string(toString(scene.term))) +
                         "\n" +

@@ -94,6 +94,8 @@ Scene applyOverrides(Scene scene, const SceneOverrides& o, const std::string& pa
     if (o.shading) scene.shading = parseNameOrThrow(*o.shading, "--shading", kAllShadingModes);
     if (o.lighting) scene.lighting = parseNameOrThrow(*o.lighting, "--lighting", kLightingModels);
     if (o.term) scene.term = parseNameOrThrow(*o.term, "--term", kLightingTerms);
+    if (o.normalMatrix)
+        scene.normalMatrix = parseNameOrThrow(*o.normalMatrix, "--normal-matrix", kNormalMatrixRules);
     if (o.subdivisions) {
         const int level = parseLevel(*o.subdivisions);
         for (SceneObject& object : scene.objects) object.subdivisions = level;

@@ -1,5 +1,5 @@
-// The flags that override a scene (--shading, --lighting, --term, --subdivisions, --tolerance-px, --depth,
-// --overlay, --view, --size):
+// The flags that override a scene (--shading, --lighting, --term, --normal-matrix, --subdivisions,
+// --tolerance-px, --depth, --overlay, --view, --size):
 // one parser for the command line, the demo and the browser page, so a flag means the same everywhere.
 #pragma once
 
@@ -14,6 +14,7 @@ namespace shadelab::app {
 struct SceneOverrides {
     std::optional<std::string> shading, lighting, size;
     std::optional<std::string> term;         // all | ambient | diffuse | specular
+    std::optional<std::string> normalMatrix; // inverse-transpose | model
     std::optional<std::string> subdivisions; // a level or "auto"
     std::optional<std::string> tolerancePx;  // a decimal number, parsed by composeScene
     std::optional<std::string> depth;        // standard | reversed | reversed-infinite

@@ -181,9 +181,10 @@ std::vector<ReportRow> measureReport(HeadlessContext& context, const Scene& scen
                 const bool toon = configured.shading == ShadingMode::Toon;
                 auto reference = references.find({configured.lighting, toon});
                 if (reference == references.end())
-                    reference =
-                        references.emplace(std::pair{configured.lighting, toon}, renderReference(configured))
-                            .first;
+                    reference = references
+                                    .emplace(std::pair{configured.lighting, toon},
+                                             renderReference(withTrueNormals(configured)))
+                                    .first;
                 gl.errorTarget.bind();
                 gl.renderer.render(configured, configured.width, configured.height);
                 const ReportError e = measureError(gl.errorTarget.readFloat(), reference->second);

@@ -32,6 +32,11 @@ void addSceneFlags(CLI::App& command, SceneOverrides& o) {
                        "Term of the lighting sum drawn: " + joinNames(kLightingTerms) +
                            " (ambient k_a*I_a, diffuse k_d*I_d*max(l.n,0), specular k_s*I_s*spec, each as "
                            "the shading mode evaluates it; all: their sum)");
+    command.add_option(
+        "--normal-matrix", o.normalMatrix,
+        "What transforms normals: " + joinNames(kNormalMatrixRules) +
+            " (inverse-transpose: (M^-1)^T, which keeps them perpendicular to the surface; model: "
+            "M itself, wrong wherever M scales unevenly, the lecture's wrong picture on purpose)");
     command.add_option("--subdivisions", o.subdivisions,
                        "Subdivision level of every object, 0.." + std::to_string(kMaxSubdivisions) +
                            ", or auto: the smallest level whose silhouette error stays below --tolerance-px");

@@ -125,6 +125,13 @@ void Panel::draw(DemoState& state, const std::string& status, int columnWidth) {
             if (ImGui::RadioButton(std::string(toString(term)).c_str(), scene.term == term))
                 scene.term = term;
         }
+        // What transforms normals (J toggles): the right matrix, or M itself, the lecture's wrong one.
+        ImGui::TextUnformatted("normals by (J):");
+        for (const NormalMatrixRule rule : kNormalMatrixRules) {
+            ImGui::SameLine();
+            const char* label = rule == NormalMatrixRule::Model ? "M (wrong)" : "(M^-1)^T";
+            if (ImGui::RadioButton(label, scene.normalMatrix == rule)) scene.normalMatrix = rule;
+        }
         if (!scene.objects.empty() && ImGui::CollapsingHeader("material", ImGuiTreeNodeFlags_DefaultOpen)) {
             // An edit applies to the chosen object (a probe click picks one), or to all of them only when
             // "all objects" (0) is chosen.
@@ -137,6 +144,11 @@ void Panel::draw(DemoState& state, const std::string& status, int columnWidth) {
             }
             Material edited = scene.objects[*state.shownObject()].material;
             if (materialControls(edited)) state.editMaterial(edited);
+            // The object's scale: an uneven one makes an ellipsoid, where normals by M (J) go wrong.
+            glm::vec3 scale(scene.objects[*state.shownObject()].scale);
+            if (ImGui::DragFloat3("scale x y z", &scale.x, 0.01f, 0.1f, 4.0f, "%.2f",
+                                  ImGuiSliderFlags_AlwaysClamp))
+                state.editScale(glm::dvec3(scale));
         }
         if (ImGui::CollapsingHeader("lights"))
             for (std::size_t i = 0; i < scene.lights.size(); ++i) lightControls(scene.lights[i], int(i));
