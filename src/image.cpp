@@ -18,8 +18,6 @@
 
 namespace shadelab {
 
-namespace fs = std::filesystem;
-
 namespace {
 
 std::size_t checkedSize(int w, int h, std::size_t channels) {

@@ -16,6 +16,7 @@
 #include "shadelab/atomic_file.h"
 #include "shadelab/errors.h"
 #include "shadelab/image.h"
+#include "shadelab/image_file.h"
 #include "shadelab/text.h"
 
 namespace shadelab {

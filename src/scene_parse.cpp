@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "scene_internal.h"
+#include "shadelab/scene_file.h"
 #include "shadelab/text.h"
 #include "shadelab/vocabulary.h"
 

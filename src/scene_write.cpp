@@ -9,6 +9,7 @@
 
 #include "scene_internal.h"
 #include "shadelab/atomic_file.h"
+#include "shadelab/scene_file.h"
 
 namespace shadelab {
 

@@ -16,6 +16,7 @@
 
 #include "shadelab/errors.h"
 #include "shadelab/image.h"
+#include "shadelab/image_file.h"
 
 namespace shadelab {
 namespace {

@@ -11,6 +11,7 @@
 
 #include "shadelab/errors.h"
 #include "shadelab/scene.h"
+#include "shadelab/scene_file.h"
 
 namespace glm {
 // Readable failures for EXPECT_EQ on vectors (gtest finds PrintTo by argument-dependent lookup).

@@ -3,7 +3,6 @@
 #pragma once
 
 #include <cstdint>
-#include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -40,16 +39,8 @@ struct ImageF {
 std::uint8_t toUnorm8(double c);
 Image toImage8(const ImageF& image);
 
-// Writes an opaque RGB PNG (alpha dropped) to a temporary file beside `path`, then renames it over `path`.
-// Throws RuntimeError naming the path on any failure, leaving nothing behind.
-void writePng(const Image& image, const std::filesystem::path& path);
 // The PNG file writePng writes, as bytes in memory.
 std::string encodePng(const Image& image);
-// Reads a PNG's stored samples as 8-bit RGBA (alpha 255 if the file has none): any colour type, 16-bit
-// samples scaled to 8 (v/257, rounded), no gamma applied (gAMA, sRGB, iCCP are ignored), so two files that
-// hold the same samples read the same. A header claiming more pixels than the file can hold is refused
-// before anything is allocated for it. Throws RuntimeError naming the path.
-Image readPng(const std::filesystem::path& path);
 // Decodes a complete PNG held in memory (signature, every row, and the closing IEND chunk) as readPng does.
 // Throws RuntimeError "<what>: <reason>" for anything truncated or corrupt.
 Image decodePng(std::string_view bytes, std::string_view what);

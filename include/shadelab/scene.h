@@ -4,7 +4,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -110,8 +109,6 @@ Scene parseScene(std::string_view jsonText, std::string_view source = "scene");
 // ..}), read and range-checked as parseScene reads objects[object].material, with the same messages (the
 // page's material sliders: one object's values, not a whole scene of thousands).
 Material parseMaterial(std::string_view jsonText, std::size_t object, std::string_view source = "scene");
-// Reads and parses a file; a missing or unreadable file is an InputError naming the path.
-Scene loadScene(const std::filesystem::path& path);
 // A scene's text is at most 16 MiB (kMaxSceneBytes): InputError "<name>: cannot read scene file: larger
 // than 16 MiB; not a scene file" beyond it, as the command line says while it reads and the page before it
 // parses.
@@ -126,8 +123,6 @@ std::string sceneToJson(const Scene& scene);
 // [200, 30, 30] reads as 0..255 and draws a white blob). One message per colour, naming its JSON path.
 inline constexpr double kSuspectColour = 10;
 std::vector<std::string> sceneWarnings(const Scene& scene);
-// sceneToJson written atomically to `path`; throws RuntimeError naming the path.
-void saveScene(const Scene& scene, const std::filesystem::path& path);
 
 // Checks the ranges of DESIGN §4 on a scene built in code or changed by flags (parseScene already does).
 void validateScene(const Scene& scene);

@@ -16,6 +16,7 @@
 
 #include "cli/run_process.h"
 #include "shadelab/image.h"
+#include "shadelab/image_file.h"
 
 namespace {
 

@@ -33,6 +33,7 @@
 
 #include "cli/run_process.h"
 #include "shadelab/image.h"
+#include "shadelab/image_file.h"
 #include "shadelab/lighting.h"
 #include "shadelab/scene.h"
 #include "shadelab/vocabulary.h"

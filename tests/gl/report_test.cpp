@@ -15,6 +15,8 @@
 #include "app/report/report.h"
 #include "gl/gl_test_support.h"
 #include "shadelab/errors.h"
+#include "shadelab/image_file.h"
+#include "shadelab/scene_file.h"
 #include "shadelab/subdivision.h"
 
 namespace shadelab::test {

@@ -34,7 +34,9 @@
 #include "cli/run_process.h"
 #include "gl/gl_test_support.h"
 #include "gl/projected_mesh.h"
+#include "shadelab/image_file.h"
 #include "shadelab/probe.h"
+#include "shadelab/scene_file.h"
 #include "shadelab/window.h"
 
 namespace shadelab::test {

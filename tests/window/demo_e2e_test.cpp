@@ -27,7 +27,9 @@
 
 #include <gtest/gtest.h>
 
+#include "shadelab/image_file.h"
 #include "shadelab/scene.h"
+#include "shadelab/scene_file.h"
 #include "shadelab/subdivision.h"
 #include "window/demo_process.h"
 

@@ -1,4 +1,5 @@
 #include "window/demo_process.h"
+#include "shadelab/image_file.h"
 
 #include <algorithm>
 #include <cstdio>

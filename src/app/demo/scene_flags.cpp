@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "shadelab/errors.h"
+#include "shadelab/scene_file.h"
 #include "shadelab/scene_values.h"
 #include "shadelab/sphere.h"
 #include "shadelab/text.h"

@@ -23,6 +23,7 @@
 #include "shadelab/atomic_file.h"
 #include "shadelab/errors.h"
 #include "shadelab/gl/loader.h"
+#include "shadelab/scene_file.h"
 #include "shadelab/text.h"
 
 namespace shadelab::app {

@@ -14,6 +14,7 @@
 #include "shadelab/errors.h"
 #include "shadelab/gl/program.h"
 #include "shadelab/headless.h"
+#include "shadelab/image_file.h"
 #include "shadelab/reference.h"
 #include "shadelab/text.h"
 
