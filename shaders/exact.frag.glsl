@@ -69,6 +69,7 @@ void main() {
     vec3 normalView = safeNormalize(uNormalViewFromObject * pointObject, vec3(0.0, 0.0, 1.0));
 
     vec4 clip = uClipFromView * vec4(positionView, 1.0);
+    if (!(clip.w > 0.0)) discard; // the clipper's w > 0, which a ray-cast fragment makes itself (camera.h)
     float depthNdc = clamp(clip.z / clip.w, -1.0, 1.0);
     gl_FragDepth = mix(0.5 * depthNdc + 0.5, depthNdc, uDepthZeroToOne);
 

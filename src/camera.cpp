@@ -145,6 +145,10 @@ glm::dmat3 normalMatrix(const glm::dmat4& viewFromObject) {
     return det < 0 ? -cof : cof;
 }
 
+std::string_view toString(PerspectiveMatrix matrix) {
+    return matrix == PerspectiveMatrix::Unnegated ? "unnegated" : "webgl";
+}
+
 std::string_view toString(NormalMatrixRule rule) {
     return rule == NormalMatrixRule::Model ? "model" : "inverse-transpose";
 }

@@ -71,7 +71,7 @@ std::optional<ProbePoint> pickSurfacePoint(const Scene& scene, double x, double 
     for (std::size_t k = 0; k < scene.objects.size(); ++k)
         intersectObject(prepareObject(scene.objects[k], view.viewFromWorld, scene.normalMatrix), int(k),
                         originView, directionView, view.volume.near, far, hit);
-    if (hit.object < 0) return std::nullopt;
+    if (hit.object < 0 || !view.passesW(originView + hit.s * directionView)) return std::nullopt; // as drawn
     return ProbePoint{std::size_t(hit.object), unitDirection(hit.pointObject)};
 }
 

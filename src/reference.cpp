@@ -59,6 +59,10 @@ ReferenceImage renderReference(const Scene& scene) {
             }
             const SurfacePoint point = exactSurfacePoint(objects[std::size_t(hit.object)], hit, originView,
                                                          directionView, rays.orthographic);
+            if (!view.passesW(point.position)) { // clipped (the unnegated perspective matrix)
+                writePixel(pixel, background, 0);
+                continue;
+            }
             const glm::dvec3 color = clampColor(
                 shade(point, scene.objects[std::size_t(hit.object)].material, lightsView, options));
             writePixel(pixel, color, 1);

@@ -110,6 +110,9 @@ SceneView sceneView(const Scene& scene) {
             view.orthographic
                 ? reversedOrthographicClipFromView(view.volume)
                 : reversedPerspectiveClipFromView(view.volume, scene.depth == DepthMode::ReversedInfinite);
+    // The perspective matrix before DESIGN §2's multiplication by −1, on purpose (camera.h).
+    if (scene.perspectiveMatrix == PerspectiveMatrix::Unnegated && !view.orthographic)
+        view.clipFromView = -view.clipFromView;
     if (!finiteMatrix(view.clipFromView))
         fail("projection",
              "its planes give a non-finite projection matrix (left/right, bottom/top or near/far "

@@ -298,10 +298,10 @@ std::vector<Light> readLights(const Json& json) {
 }
 
 Scene readScene(const Json& root) {
-    static constexpr std::array<std::string_view, 16> kKeys = {
-        "image",      "camera",       "projection", "shading",        "lighting",      "term",
-        "toon_bands", "tolerance_px", "depth",      "vertex_normals", "normal_matrix", "overlay",
-        "view",       "view_at",      "objects",    "lights"};
+    static constexpr std::array<std::string_view, 17> kKeys = {
+        "image",      "camera",       "projection", "perspective_matrix", "shading",       "lighting", "term",
+        "toon_bands", "tolerance_px", "depth",      "vertex_normals",     "normal_matrix", "overlay",  "view",
+        "view_at",    "objects",      "lights"};
     requireObject(root, "");
     checkKeys(root, "", kKeys);
     Scene scene;
@@ -313,6 +313,8 @@ Scene readScene(const Json& root) {
     if (const Json* lighting = member(root, "lighting"))
         scene.lighting = readEnum(*lighting, "lighting", kLightingModels);
     if (const Json* term = member(root, "term")) scene.term = readEnum(*term, "term", kLightingTerms);
+    if (const Json* matrix = member(root, "perspective_matrix"))
+        scene.perspectiveMatrix = readEnum(*matrix, "perspective_matrix", kPerspectiveMatrices);
     if (const Json* rule = member(root, "normal_matrix"))
         scene.normalMatrix = readEnum(*rule, "normal_matrix", kNormalMatrixRules);
     readIntField(root, "", "toon_bands", kToonBandRange, scene.toonBands);

@@ -76,6 +76,7 @@ std::string sceneToJson(const Scene& scene) {
          {{"width", scene.width}, {"height", scene.height}, {"background", toJson(scene.background)}}},
         {"camera", {{"eye", toJson(scene.eye)}, {"target", toJson(scene.target)}, {"up", toJson(scene.up)}}},
         {"projection", toJson(scene.projection)},
+        {"perspective_matrix", toString(scene.perspectiveMatrix)},
         {"shading", toString(scene.shading)},
         {"lighting", toString(scene.lighting)},
         {"term", toString(scene.term)},

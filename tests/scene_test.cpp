@@ -117,6 +117,7 @@ void expectSameScene(const Scene& a, const Scene& b) {
     EXPECT_EQ(a.depth, b.depth);
     EXPECT_EQ(a.vertexNormals, b.vertexNormals);
     EXPECT_EQ(a.normalMatrix, b.normalMatrix);
+    EXPECT_EQ(a.perspectiveMatrix, b.perspectiveMatrix);
     ASSERT_EQ(a.objects.size(), b.objects.size());
     for (std::size_t i = 0; i < a.objects.size(); ++i) expectSameObject(a.objects[i], b.objects[i]);
     ASSERT_EQ(a.lights.size(), b.lights.size());
@@ -333,10 +334,9 @@ const std::vector<ErrorCase> kErrorCases = {
     // Unknown keys at every level, with the keys that would be accepted.
     {"UnknownTopLevelKey",
      R"({"shadding": "phong"})",
-     {"scene.json: shadding: unknown key; expected one of image, camera, projection, shading, lighting, "
-      "term, toon_bands, tolerance_px, depth, vertex_normals, normal_matrix, overlay, view, view_at, "
-      "objects, "
-      "lights"}},
+     {"scene.json: shadding: unknown key; expected one of image, camera, projection, perspective_matrix, "
+      "shading, lighting, term, toon_bands, tolerance_px, depth, vertex_normals, normal_matrix, overlay, "
+      "view, view_at, objects, lights"}},
     {"OverlayUnknown",
      R"({"overlay": "wires"})",
      {"scene.json: overlay: unknown value \"wires\"; expected one of none, wireframe, normals"}},
@@ -382,6 +382,9 @@ const std::vector<ErrorCase> kErrorCases = {
     {"UnknownNormalMatrix",
      R"({"normal_matrix": "inverse"})",
      {R"(normal_matrix: unknown value "inverse"; expected one of inverse-transpose, model)"}},
+    {"UnknownPerspectiveMatrix",
+     R"({"perspective_matrix": "opengl"})",
+     {R"(perspective_matrix: unknown value "opengl"; expected one of webgl, unnegated)"}},
     {"UnknownProjectionType",
      R"({"projection": {"type": "fisheye"}})",
      {R"(projection.type: unknown value "fisheye"; expected one of perspective, frustum, orthographic)"}},
@@ -683,6 +686,32 @@ TEST(SceneView, Perspective) {
     EXPECT_TRUE(allFinite(view.clipFromView));
 }
 
+// "perspective_matrix": "unnegated" is the WebGL matrix times −1 (the lecture's matrix before its −1): a
+// point in front of the eye gets w = z < 0 and fails the clipper's w > 0, where the WebGL matrix gives it
+// w = −z > 0. Orthographic: unchanged.
+TEST(SceneView, UnnegatedPerspectiveMatrixPutsEveryPointInFrontAtNegativeW) {
+    for (const char* projection : {R"({"fovy_deg": 50, "near": 0.25, "far": 40})",
+                                   R"({"type": "frustum", "left": -0.3, "right": 0.1, "bottom": -0.2,
+                                       "top": 0.4, "near": 0.5, "far": 9})"}) {
+        Scene scene = parseScene(std::string(R"({"projection": )") + projection + "}");
+        const SceneView webgl = sceneView(scene);
+        scene.perspectiveMatrix = PerspectiveMatrix::Unnegated;
+        const SceneView unnegated = sceneView(scene);
+        EXPECT_EQ(unnegated.clipFromView, -webgl.clipFromView) << projection;
+        for (const glm::dvec3 p : {glm::dvec3(0, 0, -1), glm::dvec3(0.1, -0.2, -5), glm::dvec3(3, 1, -30)}) {
+            EXPECT_TRUE(webgl.passesW(p));
+            EXPECT_FALSE(unnegated.passesW(p));
+            EXPECT_EQ((unnegated.clipFromView * glm::dvec4(p, 1)).w, p.z) << "w = z before the -1";
+        }
+    }
+    Scene ortho =
+        parseScene(R"({"projection": {"type": "orthographic", "left": -2, "right": 2, "bottom": -1.5,
+        "top": 1.5, "near": 1, "far": 7}})");
+    const glm::dmat4 webgl = sceneView(ortho).clipFromView;
+    ortho.perspectiveMatrix = PerspectiveMatrix::Unnegated;
+    EXPECT_EQ(sceneView(ortho).clipFromView, webgl);
+}
+
 TEST(SceneView, Frustum) {
     Scene scene = parseScene(R"({"projection": {"type": "frustum", "left": -0.3, "right": 0.1,
         "bottom": -0.2, "top": 0.4, "near": 0.5, "far": 9}})");
@@ -830,6 +859,7 @@ TEST(SceneJson, RoundTripsEveryFieldExactly) {
     scene.depth = DepthMode::ReversedInfinite;
     scene.vertexNormals = VertexNormals::Exact;
     scene.normalMatrix = NormalMatrixRule::Model;
+    scene.perspectiveMatrix = PerspectiveMatrix::Unnegated;
     SceneObject ellipsoid;
     ellipsoid.center = {1e-7, 2, -3};
     ellipsoid.scale = {-1.5, 0.25, 3};

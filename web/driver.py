@@ -28,7 +28,7 @@ from serve import PageHandler  # noqa: E402  (the page's files only, as scripts/
 import cli_rules  # noqa: E402  (the command line's rules for scene files and outputs)
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'build-web', 'site')
-FLAGS = ['shading', 'lighting', 'term', 'normal-matrix', 'subdivisions', 'size', 'depth', 'tolerance-px', 'overlay', 'view']
+FLAGS = ['shading', 'lighting', 'term', 'normal-matrix', 'perspective-matrix', 'subdivisions', 'size', 'depth', 'tolerance-px', 'overlay', 'view']
 CHROME_ARGS = ['--headless=new', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--no-sandbox',
                '--disable-dev-shm-usage', '--window-size=1280,800', '--force-device-scale-factor=1']
 

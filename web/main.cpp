@@ -233,6 +233,7 @@ EMSCRIPTEN_KEEPALIVE const char* shadelab_apply_flags(const char* flags) {
         take("lighting", o.lighting);
         take("term", o.term);
         take("normal-matrix", o.normalMatrix);
+        take("perspective-matrix", o.perspectiveMatrix);
         take("size", o.size);
         take("subdivisions", o.subdivisions);
         take("tolerance-px", o.tolerancePx);

@@ -148,7 +148,7 @@ async function shadelabStarted() {
 // The command-line flags, given as ?shading=flat&size=256x256…, through the CLI's own parser.
 function applyUrlFlags() {
   const flags = {};
-  for (const name of ['shading', 'lighting', 'term', 'normal-matrix', 'subdivisions', 'size', 'depth', 'tolerance-px', 'overlay', 'view'])
+  for (const name of ['shading', 'lighting', 'term', 'normal-matrix', 'perspective-matrix', 'subdivisions', 'size', 'depth', 'tolerance-px', 'overlay', 'view'])
     if (params.has(name)) flags[name] = params.get(name);
   return Object.keys(flags).length ? api.applyFlags(JSON.stringify(flags)) : '';
 }
@@ -319,6 +319,7 @@ function refresh(ifChanged = false) {
   setIfIdle('lighting', scene.lighting);
   setIfIdle('term', scene.term);
   setIfIdle('normal-matrix', scene.normal_matrix);
+  setIfIdle('perspective-matrix', scene.perspective_matrix);
   $('match').checked = ui.matchHighlight;
   setIfIdle('level', ui.level);
   $('level-out').textContent = ui.level + (ui.autoLevel ? ' (auto)' : '');
@@ -439,6 +440,8 @@ function wireControls() {
   $('shading').addEventListener('change', (e) => press(keyOf[e.target.value]));
   $('lighting').addEventListener('change', (e) => pressUntil(66, (u) => u.currentSettings.lighting === e.target.value, 1));
   $('term').addEventListener('change', (e) => pressUntil(75, (u) => u.currentSettings.term === e.target.value, 3));
+  $('perspective-matrix').addEventListener('change',
+      (e) => pressUntil(85, (u) => u.currentSettings.perspective_matrix === e.target.value, 1));
   $('normal-matrix').addEventListener('change',
       (e) => pressUntil(74, (u) => u.currentSettings.normal_matrix === e.target.value, 1));
   $('match').addEventListener('change', (e) => { api.setMatch(e.target.checked ? 1 : 0); refresh(); });

@@ -42,6 +42,14 @@ glm::dmat4 orthographicClipFromView(const ViewVolume& volume);
 // diag(1,1,−1,1)·glm::frustumRH_NO(l, r, b, t, near, far).
 glm::dmat4 perspectiveClipFromView(const ViewVolume& volume);
 
+// The scene's "perspective_matrix": webgl is the matrix above, the perspective matrix of the lecture
+// multiplied by −1 (DESIGN §2); unnegated is that matrix before the multiplication, which gives every point
+// in front of the eye w = z < 0, so the clipper removes them all: the picture is empty, the lecture's reason
+// for the −1, drawn on purpose. An orthographic matrix has w = 1 and no −1 to leave out.
+enum class PerspectiveMatrix { WebGl, Unnegated };
+inline constexpr std::array kPerspectiveMatrices = {PerspectiveMatrix::WebGl, PerspectiveMatrix::Unnegated};
+std::string_view toString(PerspectiveMatrix matrix); // "webgl" | "unnegated"
+
 // Reversed-Z for a [0, 1] clip range (glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE)): near → depth 1, far →
 // 0, so the float depth buffer's dense range near 0 meets 1/z's crowding near the far plane and the two
 // cancel: Δd ≈ 1.2e-7·d at any near/far (DESIGN §2). x and y as in the standard matrices.

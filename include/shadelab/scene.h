@@ -88,6 +88,9 @@ struct Scene {
     LightingTerm term = LightingTerm::All; // "term": the whole lighting sum or one of its terms
     // "normal_matrix": inverse-transpose, or model (normals by M: the lecture's wrong picture, on purpose)
     NormalMatrixRule normalMatrix = NormalMatrixRule::InverseTranspose;
+    // "perspective_matrix": webgl, or unnegated (before the −1: nothing in front of the eye survives
+    // clipping)
+    PerspectiveMatrix perspectiveMatrix = PerspectiveMatrix::WebGl;
     int toonBands = kToonBands; // "toon_bands": diffuse bands of toon shading, kMinToonBands..kMaxToonBands
     double tolerancePx = 0.5;   // "tolerance_px": the silhouette error "auto" subdivision allows, > 0
     DepthMode depth = DepthMode::Standard;
@@ -140,6 +143,13 @@ struct SceneView {
     ViewVolume volume;
     bool orthographic = false;
     DepthMode depth = DepthMode::Standard; // which clipFromView this is, and the depth set-up it needs
+
+    // The clipper's test that only w decides: w > 0. Every point in front of the eye passes it with the
+    // WebGL matrix, none with the unnegated one; the ray casts (the reference, exact shading, the probe) make
+    // it as the rasterizer does.
+    bool passesW(const glm::dvec3& positionView) const {
+        return (clipFromView * glm::dvec4(positionView, 1.0)).w > 0;
+    }
 };
 SceneView sceneView(const Scene& scene); // throws InputError for a degenerate camera or bad planes
 glm::dmat4 worldFromObject(const SceneObject& object); // translate(center)·scale(radius·scale)

@@ -514,9 +514,10 @@ TEST_F(Browser, OverlayLightDragAndProbeAsInTheWindow) {
     expectCleanConsole(session.answer(console).at("console"));
 }
 
-// Keys 1–4, B, K (each term of the lighting sum, then all), J (normals by M and back), +, −, O change the
-// page's picture as they change the window's: after each, the picture differs from the one before, and it
-// is what native `render` draws for the state the page reports.
+// Keys 1–4, B, K (each term of the lighting sum, then all), J (normals by M and back), U (the unnegated
+// perspective matrix, an empty picture, and back), +, −, O change the page's picture as they change the
+// window's: after each, the picture differs from the one before, and it is what native `render` draws for
+// the state the page reports.
 TEST_F(Browser, KeysChangeThePictureAsInTheWindow) {
     Scene scene = litSphereScene(160, LightType::Point);
     scene.shading = ShadingMode::Toon;
@@ -533,7 +534,7 @@ TEST_F(Browser, KeysChangeThePictureAsInTheWindow) {
     // B in Phong shading, where the highlight shows the model (toon's threshold can hide it).
     std::vector<Step> steps = {{"start", 0}, {"1", '1'}, {"2", '2'}, {"4", '4'}, {"5", '5'}, {"3", '3'},
                                {"B", 'B'},   {"K", 'K'}, {"K", 'K'}, {"K", 'K'}, {"K", 'K'}, {"J", 'J'},
-                               {"J", 'J'},   {"+", '='}, {"-", '-'}, {"O", 'O'}};
+                               {"J", 'J'},   {"U", 'U'}, {"U", 'U'}, {"+", '='}, {"-", '-'}, {"O", 'O'}};
     for (Step& step : steps) {
         if (step.code) step.press = session.key(step.code);
         step.ui = session.ui();
@@ -565,6 +566,7 @@ TEST_F(Browser, KeysChangeThePictureAsInTheWindow) {
     EXPECT_EQ(ui.at("current").at("lighting"), "phong") << "B from Blinn-Phong";
     EXPECT_EQ(ui.at("current").at("term"), "all") << "K four times: ambient, diffuse, specular, all";
     EXPECT_EQ(ui.at("current").at("normal_matrix"), "inverse-transpose") << "J twice: model, then back";
+    EXPECT_EQ(ui.at("current").at("perspective_matrix"), "webgl") << "U twice: unnegated, then back";
     expectCleanConsole(session.answer(console).at("console"));
 }
 

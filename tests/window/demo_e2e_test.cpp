@@ -91,6 +91,7 @@ struct Expected {
     ProjectionType projection = ProjectionType::Perspective;
     LightingTerm term = LightingTerm::All;
     NormalMatrixRule normalMatrix = NormalMatrixRule::InverseTranspose;
+    PerspectiveMatrix perspectiveMatrix = PerspectiveMatrix::WebGl;
 
     // "shadelab — <shading> shading, <lighting> lighting[, <term> term only][, normals by M] | level N |
     // <triangles> | <frame time> | H: keys"
@@ -98,8 +99,11 @@ struct Expected {
         return "shadelab — " + std::string(toString(shading)) + " shading, " +
                std::string(toString(lighting)) + " lighting" +
                (term == LightingTerm::All ? "" : ", " + std::string(toString(term)) + " term only") +
-               (normalMatrix == NormalMatrixRule::Model ? ", normals by M" : "") + " | level " +
-               std::to_string(level) + " | ";
+               (normalMatrix == NormalMatrixRule::Model ? ", normals by M" : "") +
+               (perspectiveMatrix == PerspectiveMatrix::Unnegated
+                    ? ", unnegated perspective matrix: w < 0 in front, all clipped"
+                    : "") +
+               " | level " + std::to_string(level) + " | ";
     }
 };
 
@@ -132,6 +136,9 @@ const std::vector<KeyStep>& keySteps() {
         // J: normals by M, the wrong matrix (the scene's object is an ellipsoid, where it shows), and back.
         {"j", [](Expected& e) { e.normalMatrix = NormalMatrixRule::Model; }},
         {"j", [](Expected& e) { e.normalMatrix = NormalMatrixRule::InverseTranspose; }},
+        // U: the perspective matrix before its -1, where everything is clipped (an empty picture), and back.
+        {"u", [](Expected& e) { e.perspectiveMatrix = PerspectiveMatrix::Unnegated; }},
+        {"u", [](Expected& e) { e.perspectiveMatrix = PerspectiveMatrix::WebGl; }},
         {"o", [](Expected& e) { e.projection = ProjectionType::Orthographic; }}, // not in the title
     };
     return kSteps;
@@ -317,6 +324,7 @@ Image checkState(DemoProcess& demo, const Expected& expected, const std::string&
     EXPECT_EQ(toString(saved.lighting), toString(expected.lighting));
     EXPECT_EQ(toString(saved.term), toString(expected.term));
     EXPECT_EQ(toString(saved.normalMatrix), toString(expected.normalMatrix));
+    EXPECT_EQ(toString(saved.perspectiveMatrix), toString(expected.perspectiveMatrix));
     EXPECT_EQ(toString(saved.projection.type), toString(expected.projection));
     EXPECT_EQ(saved.width, kWidth);
     EXPECT_EQ(saved.height, kHeight);

@@ -159,6 +159,11 @@ bool DemoState::apply(Command command) {
     case Command::NextTerm: // all, ambient, diffuse, specular, all
         scene_.term = kLightingTerms[(std::size_t(scene_.term) + 1) % kLightingTerms.size()];
         break;
+    case Command::TogglePerspectiveMatrix:
+        scene_.perspectiveMatrix = scene_.perspectiveMatrix == PerspectiveMatrix::Unnegated
+                                       ? PerspectiveMatrix::WebGl
+                                       : PerspectiveMatrix::Unnegated;
+        break;
     case Command::ToggleNormalMatrix:
         scene_.normalMatrix = scene_.normalMatrix == NormalMatrixRule::Model
                                   ? NormalMatrixRule::InverseTranspose
@@ -252,6 +257,12 @@ std::string DemoState::describeChange(Command command) const {
     case Command::NextTerm:
         return scene.term == LightingTerm::All ? "every term of the lighting sum"
                                                : "the " + std::string(toString(scene.term)) + " term alone";
+    case Command::TogglePerspectiveMatrix:
+        if (scene.perspectiveMatrix == PerspectiveMatrix::WebGl)
+            return "the WebGL perspective matrix (times -1)";
+        return scene.projection.type == ProjectionType::Orthographic
+                   ? "the unnegated perspective matrix: no effect on an orthographic projection"
+                   : "the unnegated perspective matrix: w < 0 in front of the eye, everything clipped";
     case Command::ToggleNormalMatrix:
         return scene.normalMatrix == NormalMatrixRule::Model
                    ? "normals transformed by M: wrong wherever M scales unevenly"

@@ -39,6 +39,7 @@ enum class Command {
     ToggleLighting,
     NextTerm,
     ToggleNormalMatrix,
+    TogglePerspectiveMatrix,
     LevelUp,
     LevelDown,
     ToggleProjection,

@@ -17,13 +17,21 @@ std::string formatVector(const glm::dvec3& v) {
 
 namespace {
 
+// With the unnegated perspective matrix, what it does: the picture is empty, and why.
+std::string unnegated(const Scene& scene) {
+    if (scene.perspectiveMatrix == PerspectiveMatrix::WebGl) return "";
+    return scene.projection.type == ProjectionType::Orthographic
+               ? ", unnegated matrix (orthographic: no -1 to leave out)"
+               : ", unnegated perspective matrix: w < 0 in front, all clipped";
+}
+
 // "phong shading, blinn-phong lighting", with one term drawn ", specular term only", with normals by M
 // ", normals by M".
 std::string modes(const Scene& scene) {
     return std::string(toString(scene.shading)) + " shading, " + std::string(toString(scene.lighting)) +
            " lighting" +
            (scene.term == LightingTerm::All ? "" : ", " + std::string(toString(scene.term)) + " term only") +
-           (scene.normalMatrix == NormalMatrixRule::Model ? ", normals by M" : "");
+           (scene.normalMatrix == NormalMatrixRule::Model ? ", normals by M" : "") + unnegated(scene);
 }
 
 // What is drawn: the mesh's level (and "(auto)"), or for exact shading, which draws no mesh, the ray cast.
@@ -114,8 +122,12 @@ std::string presentationLabel(const DemoState& state) {
     const Scene scene = state.drawn();
     // Three short lines rather than two long ones: the label's letters can be larger in the same width.
     std::string label = std::string(toString(scene.shading)) + " shading" +
-                        (scene.normalMatrix == NormalMatrixRule::Model ? ", normals by M" : "") + "\n" +
-                        std::string(toString(scene.lighting)) + " lighting" +
+                        (scene.normalMatrix == NormalMatrixRule::Model ? ", normals by M" : "") +
+                        (scene.perspectiveMatrix == PerspectiveMatrix::Unnegated &&
+                                 scene.projection.type != ProjectionType::Orthographic
+                             ? ", unnegated: w < 0, all clipped"
+                             : "") +
+                        "\n" + std::string(toString(scene.lighting)) + " lighting" +
                         (scene.term == LightingTerm::All ? "" : ", " + std::string(toString(scene.term))) +
                         "\n" +
                         (scene.shading == ShadingMode::Exact ? std::string("ray-cast")

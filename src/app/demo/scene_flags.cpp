@@ -95,6 +95,9 @@ Scene applyOverrides(Scene scene, const SceneOverrides& o, const std::string& pa
     if (o.shading) scene.shading = parseNameOrThrow(*o.shading, "--shading", kAllShadingModes);
     if (o.lighting) scene.lighting = parseNameOrThrow(*o.lighting, "--lighting", kLightingModels);
     if (o.term) scene.term = parseNameOrThrow(*o.term, "--term", kLightingTerms);
+    if (o.perspectiveMatrix)
+        scene.perspectiveMatrix =
+            parseNameOrThrow(*o.perspectiveMatrix, "--perspective-matrix", kPerspectiveMatrices);
     if (o.normalMatrix)
         scene.normalMatrix = parseNameOrThrow(*o.normalMatrix, "--normal-matrix", kNormalMatrixRules);
     if (o.subdivisions) {

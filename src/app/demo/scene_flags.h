@@ -1,5 +1,5 @@
-// The flags that override a scene (--shading, --lighting, --term, --normal-matrix, --subdivisions,
-// --tolerance-px, --depth, --overlay, --view, --size):
+// The flags that override a scene (--shading, --lighting, --term, --normal-matrix, --perspective-matrix,
+// --subdivisions, --tolerance-px, --depth, --overlay, --view, --size):
 // one parser for the command line, the demo and the browser page, so a flag means the same everywhere.
 #pragma once
 
@@ -13,13 +13,14 @@ namespace shadelab::app {
 // Flags that override the scene file. Unset flags leave the scene's values.
 struct SceneOverrides {
     std::optional<std::string> shading, lighting, size;
-    std::optional<std::string> term;         // all | ambient | diffuse | specular
-    std::optional<std::string> normalMatrix; // inverse-transpose | model
-    std::optional<std::string> subdivisions; // a level or "auto"
-    std::optional<std::string> tolerancePx;  // a decimal number, parsed by composeScene
-    std::optional<std::string> depth;        // standard | reversed | reversed-infinite
-    std::optional<std::string> overlay;      // none | wireframe | normals
-    std::optional<std::string> view;         // scene | error | profile | split:A,B (view.h)
+    std::optional<std::string> term;              // all | ambient | diffuse | specular
+    std::optional<std::string> normalMatrix;      // inverse-transpose | model
+    std::optional<std::string> perspectiveMatrix; // webgl | unnegated
+    std::optional<std::string> subdivisions;      // a level or "auto"
+    std::optional<std::string> tolerancePx;       // a decimal number, parsed by composeScene
+    std::optional<std::string> depth;             // standard | reversed | reversed-infinite
+    std::optional<std::string> overlay;           // none | wireframe | normals
+    std::optional<std::string> view;              // scene | error | profile | split:A,B (view.h)
 };
 
 // The scene file (or the DESIGN §4 defaults when `path` is empty) with the overrides applied and the

@@ -33,6 +33,11 @@ void addSceneFlags(CLI::App& command, SceneOverrides& o) {
                            " (ambient k_a*I_a, diffuse k_d*I_d*max(l.n,0), specular k_s*I_s*spec, each as "
                            "the shading mode evaluates it; all: their sum)");
     command.add_option(
+        "--perspective-matrix", o.perspectiveMatrix,
+        "Perspective matrix: " + joinNames(kPerspectiveMatrices) +
+            " (webgl: the lecture's matrix times -1, w > 0 in front of the eye; unnegated: before "
+            "the -1, w < 0 in front, so everything is clipped and the picture is empty, on purpose)");
+    command.add_option(
         "--normal-matrix", o.normalMatrix,
         "What transforms normals: " + joinNames(kNormalMatrixRules) +
             " (inverse-transpose: (M^-1)^T, which keeps them perpendicular to the surface; model: "

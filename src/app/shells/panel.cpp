@@ -125,6 +125,14 @@ void Panel::draw(DemoState& state, const std::string& status, int columnWidth) {
             if (ImGui::RadioButton(std::string(toString(term)).c_str(), scene.term == term))
                 scene.term = term;
         }
+        // The perspective matrix (U toggles): WebGL's, or the lecture's before its -1 (everything clipped).
+        ImGui::TextUnformatted("perspective matrix (U):");
+        for (const PerspectiveMatrix matrix : kPerspectiveMatrices) {
+            ImGui::SameLine();
+            const char* label = matrix == PerspectiveMatrix::Unnegated ? "unnegated (w < 0)" : "WebGL (-1)";
+            if (ImGui::RadioButton(label, scene.perspectiveMatrix == matrix))
+                scene.perspectiveMatrix = matrix;
+        }
         // What transforms normals (J toggles): the right matrix, or M itself, the lecture's wrong one.
         ImGui::TextUnformatted("normals by (J):");
         for (const NormalMatrixRule rule : kNormalMatrixRules) {
