@@ -129,7 +129,7 @@ void Panel::draw(DemoState& state, const std::string& status, int columnWidth) {
         ImGui::TextUnformatted("perspective matrix (U):");
         for (const PerspectiveMatrix matrix : kPerspectiveMatrices) {
             ImGui::SameLine();
-            const char* label = matrix == PerspectiveMatrix::Unnegated ? "unnegated (w < 0)" : "WebGL (-1)";
+            const char* label = matrix == PerspectiveMatrix::Unnegated ? "unnegated" : "WebGL (-1)";
             if (ImGui::RadioButton(label, scene.perspectiveMatrix == matrix))
                 scene.perspectiveMatrix = matrix;
         }
