@@ -153,18 +153,19 @@ std::string_view toString(NormalMatrixRule rule) {
     return rule == NormalMatrixRule::Model ? "model" : "inverse-transpose";
 }
 
+double largestAbsEntry(const glm::dmat3& m) {
+    double k = 0;
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r) k = std::max(k, std::abs(m[c][r]));
+    return k;
+}
+
 glm::dmat3 normalViewFromObject(const glm::dmat4& viewFromObject, NormalMatrixRule rule) {
-    const auto largestEntry = [](const glm::dmat3& m) {
-        double k = 0;
-        for (int c = 0; c < 3; ++c)
-            for (int r = 0; r < 3; ++r) k = std::max(k, std::abs(m[c][r]));
-        return k;
-    };
     const glm::dmat3 linear(viewFromObject);
-    const double k = largestEntry(linear);
+    const double k = largestAbsEntry(linear);
     const glm::dmat3 unit = k > 0 ? linear / k : linear;
     const glm::dmat3 normal = rule == NormalMatrixRule::Model ? unit : normalMatrix(glm::dmat4(unit));
-    const double n = largestEntry(normal);
+    const double n = largestAbsEntry(normal);
     return n > 0 ? normal / n : normal;
 }
 

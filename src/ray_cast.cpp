@@ -1,22 +1,11 @@
 #include "shadelab/ray_cast.h"
 
-#include <algorithm>
 #include <cmath>
 #include <utility>
 
 #include "shadelab/camera.h"
 
 namespace shadelab {
-namespace {
-
-double maxAbsEntry(const glm::dmat3& m) {
-    double k = 0;
-    for (int c = 0; c < 3; ++c)
-        for (int r = 0; r < 3; ++r) k = std::max(k, std::abs(m[c][r]));
-    return k;
-}
-
-} // namespace
 
 // viewFromObject's 3×3 is (rotation)·diag(radius·scale). Its determinant is radius³·sx·sy·sz, which a
 // generic inverse under/overflows for extreme radii (radius 1e-9 gives a determinant of 1e-27). Dividing by
@@ -26,7 +15,7 @@ ObjectInView prepareObject(const SceneObject& object, const glm::dmat4& viewFrom
                            NormalMatrixRule rule) {
     const glm::dmat4 viewFromObject = viewFromWorld * worldFromObject(object);
     const glm::dmat3 linear(viewFromObject);
-    const double k = maxAbsEntry(linear); // > 0: validated radius > 0 and non-zero scale
+    const double k = largestAbsEntry(linear); // > 0: validated radius > 0 and non-zero scale
     const glm::dmat3 unit = linear / k;
     return ObjectInView{glm::inverse(unit) / k, glm::dvec3(viewFromObject[3]),
                         normalViewFromObject(viewFromObject, rule)};

@@ -111,8 +111,7 @@ SceneView sceneView(const Scene& scene) {
                 ? reversedOrthographicClipFromView(view.volume)
                 : reversedPerspectiveClipFromView(view.volume, scene.depth == DepthMode::ReversedInfinite);
     // The perspective matrix before DESIGN §2's multiplication by −1, on purpose (camera.h).
-    if (scene.perspectiveMatrix == PerspectiveMatrix::Unnegated && !view.orthographic)
-        view.clipFromView = -view.clipFromView;
+    if (leavesOutTheMinusOne(scene)) view.clipFromView = -view.clipFromView;
     if (!finiteMatrix(view.clipFromView))
         fail("projection",
              "its planes give a non-finite projection matrix (left/right, bottom/top or near/far "
@@ -121,6 +120,11 @@ SceneView sceneView(const Scene& scene) {
     if (!finiteMatrix(view.viewFromWorld))
         fail("camera", "eye and target give a non-finite view matrix; move them closer to the origin");
     return view;
+}
+
+bool leavesOutTheMinusOne(const Scene& scene) {
+    return scene.perspectiveMatrix == PerspectiveMatrix::Unnegated &&
+           scene.projection.type != ProjectionType::Orthographic;
 }
 
 glm::dmat4 worldFromObject(const SceneObject& object) {

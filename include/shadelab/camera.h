@@ -72,6 +72,9 @@ inline constexpr std::array kNormalMatrixRules = {NormalMatrixRule::InverseTrans
                                                   NormalMatrixRule::Model};
 std::string_view toString(NormalMatrixRule rule); // "inverse-transpose" | "model"
 
+// max |m[c][r]|: what normalViewFromObject and the ray cast divide a matrix by to keep it O(1).
+double largestAbsEntry(const glm::dmat3& m);
+
 // The normal matrix of `rule` for viewFromObject's upper 3×3, divided by its largest entry: only its
 // direction counts (the shaders and the reference renormalize), and so it fits float for radii from 1e-30 to
 // 1e30, where the cofactor itself scales like radius². M is scaled to O(1) before the cofactor is taken, so

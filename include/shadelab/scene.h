@@ -152,6 +152,9 @@ struct SceneView {
     }
 };
 SceneView sceneView(const Scene& scene); // throws InputError for a degenerate camera or bad planes
+// Whether sceneView leaves out the perspective matrix's −1 ("perspective_matrix": "unnegated" on a
+// perspective or frustum projection; an orthographic one has no −1), so that everything is clipped.
+bool leavesOutTheMinusOne(const Scene& scene);
 glm::dmat4 worldFromObject(const SceneObject& object); // translate(center)·scale(radius·scale)
 
 } // namespace shadelab

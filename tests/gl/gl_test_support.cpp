@@ -1,6 +1,7 @@
 #include "gl/gl_test_support.h"
 
 #include <memory>
+#include <stdexcept>
 
 #include "shadelab/errors.h"
 
@@ -115,6 +116,12 @@ Scene litSphereScene(int size, LightType type) {
 static Scene withObjects(Scene scene, std::vector<SceneObject> objects) {
     scene.objects = std::move(objects);
     return scene;
+}
+
+const AnalyticCase& analyticCase(std::string_view name) {
+    for (const AnalyticCase& c : analyticCases())
+        if (name == c.name) return c;
+    throw std::logic_error("no analytic case " + std::string(name));
 }
 
 const std::vector<AnalyticCase>& analyticCases() {

@@ -67,6 +67,7 @@ inline void PrintTo(const AnalyticCase& c, std::ostream* os) {
     *os << c.name;
 }
 const std::vector<AnalyticCase>& analyticCases();
+const AnalyticCase& analyticCase(std::string_view name); // one of them by name; throws std::logic_error
 
 } // namespace shadelab::test
 

@@ -10,12 +10,6 @@
 namespace shadelab::test {
 namespace {
 
-const AnalyticCase& analyticCase(std::string_view name) {
-    for (const AnalyticCase& c : analyticCases())
-        if (name == c.name) return c;
-    throw std::logic_error("no analytic case " + std::string(name));
-}
-
 std::size_t coveredPixels(const Image& image) {
     std::size_t covered = 0;
     for (std::size_t i = 3; i < image.rgba.size(); i += 4) covered += image.rgba[i] != 0;

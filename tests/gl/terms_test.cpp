@@ -17,12 +17,6 @@ Scene withTerm(Scene scene, LightingTerm term) {
     return scene;
 }
 
-const AnalyticCase& analyticCase(std::string_view name) {
-    for (const AnalyticCase& c : analyticCases())
-        if (name == c.name) return c;
-    throw std::logic_error("no analytic case " + std::string(name));
-}
-
 // The renderer draws a term by zeroing the other terms' coefficients (onlyTerm); the reference takes the
 // term from its three sums (LightTerms::of). Phong shading at level 8 is held to the bars of the whole sum
 // (analytic_test.cpp: mean < 0.5/255, max <= 4/255 on the interior), for both lighting models.

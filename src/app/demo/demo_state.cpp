@@ -260,9 +260,9 @@ std::string DemoState::describeChange(Command command) const {
     case Command::TogglePerspectiveMatrix:
         if (scene.perspectiveMatrix == PerspectiveMatrix::WebGl)
             return "the WebGL perspective matrix (times -1)";
-        return scene.projection.type == ProjectionType::Orthographic
-                   ? "the unnegated perspective matrix: no effect on an orthographic projection"
-                   : "the unnegated perspective matrix: w < 0 in front of the eye, everything clipped";
+        return leavesOutTheMinusOne(scene)
+                   ? "the unnegated perspective matrix: w < 0 in front of the eye, everything clipped"
+                   : "the unnegated perspective matrix: no effect on an orthographic projection";
     case Command::ToggleNormalMatrix:
         return scene.normalMatrix == NormalMatrixRule::Model
                    ? "normals transformed by M: wrong wherever M scales unevenly"

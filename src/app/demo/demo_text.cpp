@@ -20,9 +20,8 @@ namespace {
 // With the unnegated perspective matrix, what it does: the picture is empty, and why.
 std::string unnegated(const Scene& scene) {
     if (scene.perspectiveMatrix == PerspectiveMatrix::WebGl) return "";
-    return scene.projection.type == ProjectionType::Orthographic
-               ? ", unnegated matrix (orthographic: no -1 to leave out)"
-               : ", unnegated perspective matrix: w < 0 in front, all clipped";
+    return leavesOutTheMinusOne(scene) ? ", unnegated perspective matrix: w < 0 in front, all clipped"
+                                       : ", unnegated matrix (orthographic: no -1 to leave out)";
 }
 
 // "phong shading, blinn-phong lighting", with one term drawn ", specular term only", with normals by M
@@ -123,11 +122,8 @@ std::string presentationLabel(const DemoState& state) {
     // Three short lines rather than two long ones: the label's letters can be larger in the same width.
     std::string label = std::string(toString(scene.shading)) + " shading" +
                         (scene.normalMatrix == NormalMatrixRule::Model ? ", normals by M" : "") +
-                        (scene.perspectiveMatrix == PerspectiveMatrix::Unnegated &&
-                                 scene.projection.type != ProjectionType::Orthographic
-                             ? ", unnegated: w < 0, all clipped"
-                             : "") +
-                        "\n" + std::string(toString(scene.lighting)) + " lighting" +
+                        (leavesOutTheMinusOne(scene) ? ", unnegated: w < 0, all clipped" : "") + "\n" +
+                        std::string(toString(scene.lighting)) + " lighting" +
                         (scene.term == LightingTerm::All ? "" : ", " + std::string(toString(scene.term))) +
                         "\n" +
                         (scene.shading == ShadingMode::Exact ? std::string("ray-cast")
