@@ -19,6 +19,7 @@
 
 #include "app/demo/demo_draw.h"
 #include "app/demo/demo_state.h"
+#include "app/demo/matrices_text.h"
 #include "app/demo/scene_flags.h"
 #include "shadelab/errors.h"
 #include "shadelab/gl/loader.h"
@@ -152,6 +153,18 @@ nlohmann::json materialJson(const Scene& scene, std::size_t index) {
     return nlohmann::json::parse(sceneToJson(one)).at("objects").at(0).at("material");
 }
 
+// The lecture's matrices for the picture as drawn, and the shown object's; a refused scene's message.
+std::string matricesText(const DemoState& state, const app::PictureRect& picture) {
+    try {
+        const Scene drawn = state.current(picture.width, picture.height);
+        std::string text = app::cameraMatricesText(drawn);
+        if (const auto shown = state.shownObject()) text += app::objectMatricesText(drawn, *shown);
+        return text;
+    } catch (const InputError& e) {
+        return e.what();
+    }
+}
+
 // Everything the page shows besides the canvas, but the scenes' objects: title, status, the scene's values
 // (as given and as drawn), the shown object's material, the help text, the renderer string, the last
 // draw's error, the picture's place in the canvas and the object the material controls edit.
@@ -180,6 +193,7 @@ nlohmann::json panelJson() {
         {"view", toString(s.drawn().view)},
         {"viewReport", s.viewReport},
         {"probe", app::probeText(s)},
+        {"matrices", matricesText(s, picture)},
         {"settings", settingsJson(scene)}, // the scene less its objects
         {"currentSettings", settingsJson(s.current(picture.width, picture.height))}, // as drawn, likewise
         {"objectCount", scene.objects.size()},
@@ -334,6 +348,17 @@ EMSCRIPTEN_KEEPALIVE const char* shadelab_edit_material(const char* json) {
 EMSCRIPTEN_KEEPALIVE const char* shadelab_edit_scale(double x, double y, double z) {
     return guarded([&] {
         page().state->editScale({x, y, z});
+        requestDraw();
+    });
+}
+
+// The panel's view-volume fields: the drawn projection with a value changed, written as the scene's
+// "projection" ({"type": "perspective", "fovy_deg": 30, "near": 1, "far": 9}), read by the scene parser
+// (its messages name projection.<field>) and applied by DemoState::editViewVolume; or a message.
+EMSCRIPTEN_KEEPALIVE const char* shadelab_edit_view_volume(const char* projectionJson) {
+    return guarded([&] {
+        const nlohmann::json wrapped = {{"projection", nlohmann::json::parse(projectionJson)}};
+        page().state->editViewVolume(parseScene(wrapped.dump(), "view volume").projection);
         requestDraw();
     });
 }

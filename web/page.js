@@ -92,6 +92,7 @@ function bind() {
     editMaterial: (text) => viaHeap(text, material),
     chooseObject: c('shadelab_choose_object', null, ['number']),
     editScale: c('shadelab_edit_scale', 'string', ['number', 'number', 'number']),
+    editViewVolume: c('shadelab_edit_view_volume', 'string', ['string']),
     key: c('shadelab_key', 'number', ['number']),
     drag: c('shadelab_drag', null, ['number', 'number']),
     zoom: c('shadelab_zoom', null, ['number']),
@@ -351,6 +352,21 @@ function refresh(ifChanged = false) {
     ['x', 'y', 'z'].forEach((axis, i) => setIfIdle('scale-' + axis, ui.shownScale[i]));
     $('scale-out').textContent = ui.shownScale.map((v) => v.toFixed(2)).join(' ');
   }
+  // The view volume as drawn: fovy (perspective) or the window l, r, b, t, and near and far on a log scale.
+  const volume = scene.projection;
+  $('fovy-row').hidden = volume.type !== 'perspective';
+  $('window-row').hidden = volume.type === 'perspective';
+  if (volume.type === 'perspective') {
+    setIfIdle('fovy', volume.fovy_deg);
+    $('fovy-out').textContent = volume.fovy_deg.toFixed(1);
+  } else {
+    for (const side of ['left', 'right', 'bottom', 'top']) setIfIdle(side, Number(volume[side].toPrecision(4)));
+  }
+  setIfIdle('near', Math.log10(volume.near));
+  setIfIdle('far', Math.log10(volume.far));
+  $('near-out').textContent = Number(volume.near.toPrecision(3));
+  $('far-out').textContent = Number(volume.far.toPrecision(3));
+  $('matrices').textContent = ui.matrices;
   setIfIdle('bands', ui.settings.toon_bands);
   $('bands-out').textContent = ui.settings.toon_bands;
   showLights(ui.settings.lights);
@@ -486,6 +502,18 @@ function wireControls() {
       showMessage(api.editScale(...['x', 'y', 'z'].map((a) => Number($('scale-' + a).value))));
       refresh();
     });
+  // The view volume: the drawn projection with the one value changed (DemoState::editViewVolume).
+  const editVolume = (change) => {
+    const volume = Object.assign({}, ui.currentSettings.projection, change);
+    showMessage(api.editViewVolume(JSON.stringify(volume)));
+    refresh();
+  };
+  $('fovy').addEventListener('input', (e) => editVolume({fovy_deg: Number(e.target.value)}));
+  for (const side of ['left', 'right', 'bottom', 'top'])
+    $(side).addEventListener('change', (e) => editVolume({[side]: Number(e.target.value)}));
+  for (const plane of ['near', 'far'])
+    $(plane).addEventListener('input', (e) =>
+      editVolume({[plane]: Number((10 ** Number(e.target.value)).toPrecision(3))}));
   $('bands').addEventListener('input', (e) => edit((s) => { s.toon_bands = Number(e.target.value); }));
   $('next-material').addEventListener('click', () => press(77));
   $('next-lights').addEventListener('click', () => press(76));

@@ -2,6 +2,7 @@
 // key table, the orbit camera, the material and light presets and DemoState::apply/current. Expected values
 // come from the issue, DESIGN and GLFW's key codes, not from demo_state.cpp.
 #include "app/demo/demo_state.h"
+#include "app/demo/matrices_text.h"
 #include "app/demo/scene_flags.h"
 
 #include <algorithm>
@@ -18,6 +19,7 @@
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h> // only for the GLFW_KEY_* constants: the window reports GLFW key codes
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 #include "shadelab/camera.h"
@@ -1169,6 +1171,121 @@ TEST(DemoState, LevelUpBeyondTheWorkLimitIsRefused) {
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("once per side of the split"), std::string::npos) << e.what();
     }
+}
+
+// ---- the view volume on the panel and the page ----
+
+TEST(DemoViewVolume, AnEditBecomesTheDrawnProjectionAndARefusalNamesTheField) {
+    DemoState state{Scene{}};
+    const Projection narrow{ProjectionType::Perspective, 30, -1, 1, -1, 1, 1, 9};
+    state.editViewVolume(narrow);
+    EXPECT_EQ(state.current().projection, narrow);
+    EXPECT_EQ(parseScene(sceneToJson(state.current())).projection, narrow) << "S saves the edited volume";
+    Projection backwards = narrow;
+    backwards.far = 0.5;
+    try {
+        state.editViewVolume(backwards);
+        ADD_FAILURE() << "far < near was accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("projection.far"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(state.current().projection, narrow) << "a refused edit changed the volume";
+
+    // An orthographic box, off-centre and not of the picture's aspect, is drawn as edited; zooming out
+    // scales it about the axis by the distance, as the demo's orthographic zoom always has.
+    const Projection box{ProjectionType::Orthographic, 40, -2, 1, -1.5, 1.5, 0.5, 20};
+    state.editViewVolume(box);
+    EXPECT_TRUE(state.orthographic());
+    EXPECT_EQ(state.current().projection, box);
+    const double before = glm::length(state.current().eye - state.current().target);
+    state.zoom(-2);
+    const double ratio = glm::length(state.current().eye - state.current().target) / before;
+    ASSERT_GT(ratio, 1.1);
+    const Projection zoomed = state.current().projection;
+    EXPECT_NEAR(zoomed.left, box.left * ratio, 1e-12);
+    EXPECT_NEAR(zoomed.right, box.right * ratio, 1e-12);
+    EXPECT_NEAR(zoomed.top, box.top * ratio, 1e-12);
+    EXPECT_EQ(zoomed.near, box.near);
+    // O goes to perspective from the edited box, showing the same height at the target.
+    state.apply(Command::ToggleProjection);
+    const Scene perspective = state.current();
+    EXPECT_EQ(perspective.projection.type, ProjectionType::Perspective);
+    EXPECT_NEAR(std::tan(perspective.projection.fovyDeg * kDeg / 2) * glm::length(perspective.eye),
+                box.top * ratio, 1e-9);
+}
+
+// Reads the rows "[ a b c d ]" after the line that starts with `heading`.
+std::vector<std::vector<double>> matrixAfter(const std::string& text, const std::string& heading, int rows) {
+    std::istringstream in(text);
+    std::string line;
+    while (std::getline(in, line) && line.rfind(heading, 0) != 0) {
+    }
+    std::vector<std::vector<double>> out;
+    while (int(out.size()) < rows && std::getline(in, line)) {
+        const std::size_t open = line.find('[');
+        if (open == std::string::npos || std::isalpha(static_cast<unsigned char>(line[open + 1])))
+            continue; // a note under the heading: "[l,r] = ..."
+        std::istringstream numbers(line.substr(line.find('[') + 1));
+        std::vector<double> row;
+        for (double x; numbers >> x;) row.push_back(x);
+        out.push_back(row);
+    }
+    return out;
+}
+
+void expectMatrix(const std::vector<std::vector<double>>& shown, const glm::dmat4& expected,
+                  const std::string& name) {
+    ASSERT_EQ(shown.size(), 4u) << name;
+    for (int r = 0; r < 4; ++r) {
+        ASSERT_EQ(shown[std::size_t(r)].size(), 4u) << name << " row " << r;
+        for (int c = 0; c < 4; ++c)
+            EXPECT_NEAR(shown[std::size_t(r)][std::size_t(c)], expected[c][r], 5e-5)
+                << name << " [" << r << "][" << c << "]";
+    }
+}
+
+TEST(MatricesText, ShowsMCamAndTheWebGlMatrixAsTheLectureWritesThem) {
+    Scene scene;
+    scene.eye = {1, 2, 3};
+    scene.target = {0, 0.5, 0};
+    scene.width = 400;
+    scene.height = 200;
+    const std::string text = cameraMatricesText(scene);
+    // M_cam is glm::lookAt (DESIGN §2); the projection is DESIGN §2's matrix written out with n = -near,
+    // f = -far and the window of fovy and the aspect.
+    expectMatrix(matrixAfter(text, "M_cam", 4), glm::lookAt(scene.eye, scene.target, scene.up), "M_cam");
+    const double n = -0.5, f = -20, t = 0.5 * std::tan(20 * kDeg), r = 2 * t;
+    glm::dmat4 webGl(0.0);
+    webGl[0][0] = -2 * n / (2 * r);
+    webGl[1][1] = -2 * n / (2 * t);
+    webGl[2][2] = -(n + f) / (n - f);
+    webGl[3][2] = 2 * f * n / (n - f);
+    webGl[2][3] = -1;
+    expectMatrix(matrixAfter(text, "M_proj", 4), webGl, "M_proj");
+    EXPECT_NE(text.find("w = -z > 0"), std::string::npos) << text;
+    scene.perspectiveMatrix = PerspectiveMatrix::Unnegated;
+    const std::string unnegated = cameraMatricesText(scene);
+    expectMatrix(matrixAfter(unnegated, "M_proj", 4), -webGl, "unnegated M_proj");
+    EXPECT_NE(unnegated.find("w = z < 0"), std::string::npos) << unnegated;
+}
+
+TEST(MatricesText, TheNormalMatrixIsTheInverseTransposeOrMItself) {
+    Scene scene;
+    scene.objects[0].scale = {2, 1, 1};
+    scene.objects[0].center = {0.5, 0, 0};
+    const auto normal = [&] { return matrixAfter(objectMatricesText(scene, 0), "normal matrix", 3); };
+    // The camera looks down -z from +z: M_cam's upper 3x3 is the identity, so the normal matrix of
+    // scale(2, 1, 1) is diag(1/2, 1, 1), and M itself is diag(2, 1, 1).
+    ASSERT_EQ(normal().size(), 3u);
+    EXPECT_NEAR(normal()[0][0], 0.5, 1e-9);
+    EXPECT_NEAR(normal()[1][1], 1, 1e-9);
+    EXPECT_NE(objectMatricesText(scene, 0).find("((M_cam M)^-1)^T"), std::string::npos);
+    scene.normalMatrix = NormalMatrixRule::Model;
+    EXPECT_NEAR(normal()[0][0], 2, 1e-9);
+    EXPECT_NE(objectMatricesText(scene, 0).find("wrong on purpose"), std::string::npos);
+    const auto model = matrixAfter(objectMatricesText(scene, 0), "M (object 1", 4);
+    ASSERT_EQ(model.size(), 4u);
+    EXPECT_EQ(model[0], (std::vector<double>{2, 0, 0, 0.5}));
 }
 
 } // namespace

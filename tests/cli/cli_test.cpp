@@ -116,6 +116,28 @@ TEST_F(CliTest, RenderWithoutSceneWritesOnlyThePng) {
     EXPECT_EQ(size->height, 64u);
 }
 
+// The lecture's matrices for a scene, alone or beside the picture; never mixed into a PNG on standard
+// output.
+TEST_F(CliTest, PrintMatricesPrintsTheCameraAndEveryObject) {
+    const Outcome alone = shadelab({"render", "--print-matrices", "--perspective-matrix", "unnegated"});
+    ASSERT_EQ(alone.exitCode, 0) << describe(alone);
+    EXPECT_TRUE(listing(dir_).empty()) << "nothing is written without --out";
+    for (const char* part :
+         {"e = [   0.0000   0.0000   4.0000 ]", "M_cam = [u v w e]^-1", "M_proj, perspective", "w = z < 0",
+          "M (object 1", "normal matrix ((M_cam M)^-1)^T"})
+        EXPECT_NE(alone.out.find(part), std::string::npos) << part << " in\n" << alone.out;
+    writeFile(dir_ / "two.json", R"({"image": {"width": 32, "height": 32},
+                                     "objects": [{"center": [-1, 0, 0]}, {"center": [1, 0, 0]}]})");
+    const Outcome both = shadelab({"render", "two.json", "--print-matrices", "--out", "two.png"});
+    ASSERT_EQ(both.exitCode, 0) << describe(both);
+    EXPECT_NE(both.out.find("M (object 2"), std::string::npos) << both.out;
+    EXPECT_TRUE(pngSize(readFile(dir_ / "two.png"))) << "--out still renders";
+    const Outcome piped = shadelab({"render", "--print-matrices", "--out", "-"});
+    EXPECT_EQ(piped.exitCode, 2) << describe(piped);
+    EXPECT_NE(piped.err.find("--print-matrices"), std::string::npos) << piped.err;
+    EXPECT_EQ(piped.out, "") << "neither matrices nor a PNG";
+}
+
 TEST_F(CliTest, RenderSceneFileToAbsolutePath) {
     writeFile(dir_ / "scene.json", smallScene());
     const Outcome run =

@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -649,6 +650,16 @@ TEST_F(Browser, PanelEditsGoThroughTheSceneParser) {
     session.panel(attenuation + "(3)", "0");
     const std::size_t zero = session.panel(attenuation + "(1)", "0");
     const std::size_t message = session.message();
+    // The view volume: a narrower field of view, then the near plane moved through the sphere (3.6 of
+    // the eye's 4 to its centre: the front cap is clipped), then a far plane short of near, refused.
+    const std::size_t narrowed = session.panel("#fovy", "30", "input");
+    const std::size_t clipping = session.panel("#near", std::to_string(std::log10(3.6)), "input");
+    const std::size_t clipped = session.capture();
+    const std::size_t clippedUi = session.ui();
+    const std::size_t matrices = session.element("#matrices");
+    session.panel("#far", "-2", "input"); // 0.01, nearer than near
+    const std::size_t refused = session.message();
+    const std::size_t afterRefusal = session.ui();
     const std::size_t console = session.console();
     if (!session.run(dir_)) return;
     EXPECT_TRUE(session.answer(cutoff).at("found").get<bool>());
@@ -663,6 +674,33 @@ TEST_F(Browser, PanelEditsGoThroughTheSceneParser) {
     EXPECT_TRUE(session.answer(zero).at("found").get<bool>());
     const std::string shown = session.answer(message).at("message");
     EXPECT_NE(shown.find("attenuation"), std::string::npos) << shown;
+
+    EXPECT_TRUE(session.answer(narrowed).at("found").get<bool>()) << "no field-of-view slider";
+    EXPECT_TRUE(session.answer(clipping).at("found").get<bool>()) << "no near-plane slider";
+    const Scene clippedScene =
+        parseScene(session.answer(clippedUi).at("ui").at("scene").dump(), "page state");
+    EXPECT_EQ(clippedScene.projection.fovyDeg, 30);
+    EXPECT_EQ(clippedScene.projection.near, 3.6);
+    // The page draws what `render` draws of the scene it holds, the clipped cap included.
+    Scene expectedClip = wide;
+    expectedClip.lights[0].attenuation = clippedScene.lights[0].attenuation; // b and c edited to 0
+    expectedClip.projection.fovyDeg = 30;
+    expectedClip.projection.near = 3.6;
+    const Image& clippedImage = session.image(clipped);
+    const Comparison clip =
+        compareImages(clippedImage, nativeGles().render(expectedClip), swiftShaderTolerance(clippedImage));
+    EXPECT_TRUE(clip.passed) << clip.summary();
+    Scene unclipped = expectedClip;
+    unclipped.projection.near = 0.5;
+    EXPECT_FALSE(compareImages(clippedImage, nativeGles().render(unclipped), Tolerance{2, 0, 0}).passed)
+        << "a near plane through the sphere must change the picture";
+    const std::string matrixText = session.answer(matrices).at("element").at("text");
+    EXPECT_NE(matrixText.find("M_cam = [u v w e]^-1"), std::string::npos) << matrixText;
+    EXPECT_NE(matrixText.find("n = -3.6, f = -20"), std::string::npos) << matrixText;
+    const std::string refusal = session.answer(refused).at("message");
+    EXPECT_NE(refusal.find("projection.far"), std::string::npos) << refusal;
+    EXPECT_EQ(session.answer(afterRefusal).at("ui").at("scene").at("projection").at("far"), 20)
+        << "a refused edit leaves the view volume as it was";
     expectCleanConsole(session.answer(console).at("console"));
 }
 

@@ -96,11 +96,12 @@ Scene DemoState::current(int width, int height) const {
         s.up = {0, 1, 0}; // the orbit's elevation stays short of the poles: never parallel
     }
 
+    // The view volume the scene came with, or the one last edited on the panel (editViewVolume).
     const Projection& own = initial_.projection;
     const double aspect = double(s.width) / s.height;
     const double distance = glm::length(s.eye - s.target);
     // The half-height the view shows at the target: ties the two projections together so O keeps the size.
-    const double zoom = distance / initialCamera_.distance;
+    const double zoom = distance / volumeDistance_;
     double halfHeight = 0;
     if (own.type == ProjectionType::Orthographic)
         halfHeight = 0.5 * (own.top - own.bottom) * zoom;
@@ -119,8 +120,11 @@ Scene DemoState::current(int width, int height) const {
                         own.near,
                         own.far};
     } else if (orthographic_) {
-        // The scene's own box, zoomed, and widened or narrowed to the framebuffer's aspect.
-        const double centreX = 0.5 * (own.left + own.right), halfWidth = halfHeight * aspect;
+        // The scene's own box, zoomed, and widened or narrowed by as much as the framebuffer's aspect
+        // differs from the scene's (a window of another shape must not stretch the picture).
+        const double widening = aspect / (double(scene_.width) / scene_.height);
+        const double centreX = 0.5 * (own.left + own.right);
+        const double halfWidth = 0.5 * (own.right - own.left) * zoom * widening;
         const double centreY = 0.5 * (own.bottom + own.top) * zoom;
         s.projection.left = centreX * zoom - halfWidth;
         s.projection.right = centreX * zoom + halfWidth;

@@ -78,6 +78,7 @@ std::span<const LightPreset> lightPresets() {
 DemoState::DemoState(Scene scene)
     : initial_(scene), scene_(std::move(scene)),
       initialCamera_(OrbitCamera::looking(scene_.eye, scene_.target)), camera_(initialCamera_),
+      volumeDistance_(initialCamera_.distance),
       orthographic_(scene_.projection.type == ProjectionType::Orthographic) {
     for (const SceneObject& o : scene_.objects) exponents_.push_back(o.material.shininess);
 }
@@ -466,6 +467,16 @@ void DemoState::editScale(const glm::dvec3& scale) {
             for (int i = 0; i < 3; ++i)
                 if (scale[i] != before[i]) o.scale[i] = scale[i];
     }
+}
+
+void DemoState::editViewVolume(const Projection& edited) {
+    Scene check = drawn();
+    check.projection = edited;
+    validateSceneValues(check);
+    initial_.projection = edited;
+    scene_.projection = edited;
+    orthographic_ = edited.type == ProjectionType::Orthographic;
+    volumeDistance_ = glm::length(check.eye - check.target);
 }
 
 std::string DemoState::lightsName() const {

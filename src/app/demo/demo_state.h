@@ -178,6 +178,11 @@ public:
     // from the shown object's is set on every object, as editMaterial does. Throws InputError naming
     // objects[N].scale for a component that is zero or not finite, as a scene file would.
     void editScale(const glm::dvec3& scale);
+    // A panel edit of the view volume (the lecture's "viewing and projection normalization"): `edited`
+    // becomes the drawn projection, its type included (O then toggles from it, and zoom scales an
+    // orthographic box from where it was edited). Throws InputError naming projection.<field> for a value
+    // a scene file could not hold (near >= far, fovy outside (0, 180), left == right...).
+    void editViewVolume(const Projection& edited);
     // What the last drawn view measured, in words ("error: interior mean 2.54/255, max 98.5/255"), set by
     // drawDemo; "" for the plain scene.
     std::string viewReport;
@@ -202,6 +207,9 @@ private:
     Scene initial_, scene_;
     OrbitCamera initialCamera_, camera_;
     bool cameraMoved_ = false;
+    // The camera distance the scene's view volume (initial_.projection) belongs to: an orthographic box is
+    // scaled by the distance over it, so zooming keeps the picture's scale as under perspective.
+    double volumeDistance_ = 1;
     // The exponent each object's shininess stands for before the clamp to >= 1, so that B twice restores
     // a β below 4 exactly (β/4 < 1 would otherwise be lost to the clamp).
     std::vector<double> exponents_;

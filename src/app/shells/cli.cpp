@@ -179,7 +179,13 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
                      "compiled in; off: the uber program")
         ->transform(CLI::IsMember({"on", "off", "true", "false", "1", "0"}, CLI::ignore_case))
         ->capture_default_str();
-    render->add_option("--out", renderOut, "Output PNG, or - for standard output (required)");
+    render->add_option("--out", renderOut,
+                       "Output PNG, or - for standard output (required unless --print-matrices)");
+    bool printMatrices = false;
+    render->add_flag(
+        "--print-matrices", printMatrices,
+        "Print the camera frame e, u, v, w, M_cam, the projection matrix and each object's M and "
+        "normal matrix (standard output); with --out FILE it renders too");
 
     std::string referenceScene, referenceOut;
     SceneOverrides referenceFlags;
@@ -289,6 +295,7 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
         setContext(command, renderContext);
         command.verbose = verbose;
         command.specialize = specialize;
+        command.printMatrices = printMatrices;
     } else if (*benchCommand) {
         command.kind = ParsedCommand::Kind::Bench;
         command.bench = bench;
@@ -318,9 +325,13 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
         command.kind = ParsedCommand::Kind::EglDevices;
         return command;
     }
-    if (command.kind == ParsedCommand::Kind::Render && renderOut.empty())
-        throw InputError("--out is required: the PNG to write, or - for standard output\nRun with --help for "
-                         "more information.");
+    if (command.kind == ParsedCommand::Kind::Render && renderOut.empty() && !printMatrices)
+        throw InputError("--out is required: the PNG to write, or - for standard output (or --print-matrices "
+                         "alone to print the matrices)\nRun with --help for more information.");
+    if (command.kind == ParsedCommand::Kind::Render && printMatrices && renderOut == "-")
+        throw InputError(
+            "--print-matrices: the matrices go to standard output, and so would the PNG of --out "
+            "-; write the PNG to a file (--out FILE.png) or leave --out out");
     return command;
 }
 

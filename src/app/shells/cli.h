@@ -27,6 +27,7 @@ struct ParsedCommand {
     std::string eglDevice;       // Render, Bench, Report: --egl-device N; "list" gives Kind::EglDevices
     bool verbose = false;        // Render: --verbose
     bool specialize = true;      // Render: --specialize
+    bool printMatrices = false;  // Render: --print-matrices
     DemoOptions demo;            // Demo
     BenchOptions bench;          // Bench: frames, warm-up and filter; size, backend and JSON are below
     std::string benchSize = "800x600", benchJson; // Bench: --size (checked by composeSize), --json

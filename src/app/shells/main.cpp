@@ -11,6 +11,7 @@
 #endif
 
 #include "app/bench/bench.h"
+#include "app/demo/matrices_text.h"
 #include "app/report/report.h"
 #include "app/shells/cli.h"
 #include "app/shells/commands.h"
@@ -27,6 +28,14 @@ void warnAbout(const Scene& scene, const std::string& file) {
     for (const std::string& warning : sceneWarnings(scene))
         std::fprintf(stderr, "shadelab: warning: %s%s\n", file.empty() ? "" : printable(file + ": ").c_str(),
                      printable(warning).c_str());
+}
+
+// render --print-matrices: the camera's matrices, then each object's.
+void printMatrices(const Scene& scene) {
+    std::string text = app::cameraMatricesText(scene);
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) text += app::objectMatricesText(scene, i);
+    std::fputs(text.c_str(), stdout);
+    std::fflush(stdout);
 }
 
 // llvmpipe allocates each frame's binned scene on the heap, in blocks, and frees it when the frame is
@@ -55,10 +64,16 @@ int run(int argc, char** argv) {
         std::fputs(command.text.c_str(), stdout);
         return command.exitCode;
     case Kind::Render: {
-        app::checkOutputPath(command.out);
-        refuseOverwritingInput(command.out, "--out", command.scene); // before anything is rendered
+        if (!command.out.empty()) {
+            app::checkOutputPath(command.out);
+            refuseOverwritingInput(command.out, "--out", command.scene); // before anything is rendered
+        }
         const Scene scene = app::composeScene(command.scene, command.overrides);
         warnAbout(scene, command.scene);
+        if (command.printMatrices) {
+            printMatrices(scene);
+            if (command.out.empty()) return kExitOk;
+        }
         const ContextRequest context =
             app::contextFromArguments(command.backend, command.api, command.eglDevice);
         return app::runRender(scene, context, command.out, command.specialize, command.verbose);

@@ -7,6 +7,8 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include "app/demo/matrices_text.h"
+#include "shadelab/errors.h"
 #include "shadelab/gl/loader.h"
 #include "shadelab/window.h"
 
@@ -76,6 +78,52 @@ void lightControls(Light& light, int index) {
         ImGui::TreePop();
     }
     ImGui::PopID();
+}
+
+// The drawn view volume (the lecture's "viewing and projection normalization"): the field of view or the
+// window l, r, b, t, and near and far, as distances. An edit the scene could not hold (near past far) is
+// refused with its message under the fields.
+void viewVolumeControls(DemoState& state, std::string& refusal) {
+    Projection p = state.drawn().projection;
+    const Projection before = p;
+    // near and far drag by 1 % of their value a pixel (a near of 0.01 and of 10 both by feel); the window's
+    // edges linearly.
+    auto drag = [](const char* label, double& value, float speed, float lowest, float highest,
+                   ImGuiSliderFlags flags) {
+        float f = float(value);
+        if (ImGui::DragFloat(label, &f, speed, lowest, highest, "%.4g", flags)) value = double(f);
+    };
+    if (p.type == ProjectionType::Perspective) {
+        drag("fovy (deg)", p.fovyDeg, 0.2f, 1, 170, ImGuiSliderFlags_None);
+    } else {
+        drag("left l", p.left, 0.01f, -100, 100, ImGuiSliderFlags_None);
+        drag("right r", p.right, 0.01f, -100, 100, ImGuiSliderFlags_None);
+        drag("bottom b", p.bottom, 0.01f, -100, 100, ImGuiSliderFlags_None);
+        drag("top t", p.top, 0.01f, -100, 100, ImGuiSliderFlags_None);
+    }
+    drag("near (n = -near)", p.near, float(p.near) * 0.01f, 0.001f, 1000, ImGuiSliderFlags_None);
+    drag("far (f = -far)", p.far, float(p.far) * 0.01f, 0.001f, 10000, ImGuiSliderFlags_None);
+    if (p != before) {
+        try {
+            state.editViewVolume(p);
+            refusal.clear();
+        } catch (const InputError& e) {
+            refusal = e.what();
+        }
+    }
+    if (!refusal.empty()) ImGui::TextColored({1.0f, 0.5f, 0.4f, 1.0f}, "%s", refusal.c_str());
+}
+
+// e, u, v, w, M_cam, the projection matrix, and the shown object's M and normal matrix, live.
+void matricesControls(const DemoState& state) {
+    const Scene drawn = state.drawn();
+    try {
+        std::string text = cameraMatricesText(drawn);
+        if (const auto shown = state.shownObject()) text += objectMatricesText(drawn, *shown);
+        ImGui::TextUnformatted(text.c_str());
+    } catch (const InputError& e) {
+        ImGui::TextUnformatted(e.what());
+    }
 }
 
 } // namespace
@@ -158,6 +206,9 @@ void Panel::draw(DemoState& state, const std::string& status, int columnWidth) {
                                   ImGuiSliderFlags_AlwaysClamp))
                 state.editScale(glm::dvec3(scale));
         }
+        if (ImGui::CollapsingHeader("view volume (fovy or l r b t, near, far)"))
+            viewVolumeControls(state, volumeRefusal_);
+        if (ImGui::CollapsingHeader("matrices (e u v w, M_cam, M_proj, M, N)")) matricesControls(state);
         if (ImGui::CollapsingHeader("lights"))
             for (std::size_t i = 0; i < scene.lights.size(); ++i) lightControls(scene.lights[i], int(i));
         if (ImGui::CollapsingHeader("probe (click the sphere)", ImGuiTreeNodeFlags_DefaultOpen)) {

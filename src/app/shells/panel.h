@@ -31,6 +31,7 @@ public:
 
 private:
     Api api_;
+    std::string volumeRefusal_; // why the last view-volume edit was refused, shown under its fields
 };
 
 } // namespace shadelab::app
