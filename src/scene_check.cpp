@@ -202,6 +202,18 @@ void checkViewAt(double at) {
         fail("view_at", "must be between 0 and 1 (a fraction of the picture), got " + formatNumber(at));
 }
 
+void checkObserver(const Observer& observer) {
+    checkFinite(observer.azimuthDeg, "view_observer[0]");
+    checkFinite(observer.elevationDeg, "view_observer[1]");
+    if (!(std::abs(observer.elevationDeg) <= kMaxObserverElevationDeg))
+        fail("view_observer[1]", "the observer's elevation must be between -85 and 85 degrees, got " +
+                                     formatNumber(observer.elevationDeg));
+    if (!(observer.zoom >= kMinObserverZoom && observer.zoom <= kMaxObserverZoom))
+        fail("view_observer[2]",
+             "the observer's zoom must be between 0.05 and 20 (1: everything framed), got " +
+                 formatNumber(observer.zoom));
+}
+
 void checkSceneSize(const Scene& scene) {
     shadelab::checkImageSize(scene.width, "image.width");
     shadelab::checkImageSize(scene.height, "image.height");
@@ -364,6 +376,7 @@ void validateSceneValues(const Scene& scene) {
     checkLightCount(scene.lights.size());
     for (std::size_t i = 0; i < scene.lights.size(); ++i) checkLight(scene.lights[i], indexPath("lights", i));
     if (scene.view.at) checkViewAt(*scene.view.at);
+    checkObserver(scene.view.observer);
     (void)sceneView(scene); // the derived matrices must be finite too
     checkObjectCount(scene.objects.size());
 }

@@ -45,8 +45,9 @@ void checkFinite(double value, std::string_view path);
 void checkIntRange(int value, IntRange range, std::string_view path);
 void checkSubdivisions(int level, std::string_view path); // a level, or kAutoSubdivisions
 void checkViewAt(double at);
-void checkSceneSize(const Scene& scene); // image.width, image.height
-void checkImage(const Scene& scene);     // size and background
+void checkObserver(const Observer& observer); // "view_observer"
+void checkSceneSize(const Scene& scene);      // image.width, image.height
+void checkImage(const Scene& scene);          // size and background
 void checkCamera(const Scene& scene);
 void checkProjection(const Projection& p);
 void checkObject(const SceneObject& object, const std::string& path);

@@ -298,10 +298,12 @@ std::vector<Light> readLights(const Json& json) {
 }
 
 Scene readScene(const Json& root) {
-    static constexpr std::array<std::string_view, 17> kKeys = {
-        "image",      "camera",       "projection", "perspective_matrix", "shading",       "lighting", "term",
-        "toon_bands", "tolerance_px", "depth",      "vertex_normals",     "normal_matrix", "overlay",  "view",
-        "view_at",    "objects",      "lights"};
+    static constexpr std::array<std::string_view, 18> kKeys = {
+        "image",        "camera",   "projection",     "perspective_matrix",
+        "shading",      "lighting", "term",           "toon_bands",
+        "tolerance_px", "depth",    "vertex_normals", "normal_matrix",
+        "overlay",      "view",     "view_at",        "view_observer",
+        "objects",      "lights"};
     requireObject(root, "");
     checkKeys(root, "", kKeys);
     Scene scene;
@@ -331,6 +333,11 @@ Scene readScene(const Json& root) {
     if (const Json* at = member(root, "view_at")) {
         scene.view.at = readNumber(*at, "view_at");
         checkViewAt(*scene.view.at);
+    }
+    if (const Json* observer = member(root, "view_observer")) {
+        const glm::dvec3 values = readVec3(*observer, "view_observer");
+        scene.view.observer = {values.x, values.y, values.z};
+        checkObserver(scene.view.observer);
     }
     if (const Json* objects = member(root, "objects")) scene.objects = readObjects(*objects);
     if (const Json* lights = member(root, "lights")) scene.lights = readLights(*lights);

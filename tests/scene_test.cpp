@@ -336,7 +336,17 @@ const std::vector<ErrorCase> kErrorCases = {
      R"({"shadding": "phong"})",
      {"scene.json: shadding: unknown key; expected one of image, camera, projection, perspective_matrix, "
       "shading, lighting, term, toon_bands, tolerance_px, depth, vertex_normals, normal_matrix, overlay, "
-      "view, view_at, objects, lights"}},
+      "view, view_at, view_observer, objects, lights"}},
+    {"ObserverElevationPastThePole",
+     R"({"view": "outside", "view_observer": [10, 90, 1]})",
+     {"scene.json: view_observer[1]: the observer's elevation must be between -85 and 85 degrees, got 90"}},
+    {"ObserverZoomZero",
+     R"({"view_observer": [10, 20, 0]})",
+     {"scene.json: view_observer[2]: the observer's zoom must be between 0.05 and 20 (1: everything "
+      "framed), got 0"}},
+    {"ObserverNotThreeNumbers",
+     R"({"view_observer": [10, 20]})",
+     {"scene.json: view_observer: must be an array of 3 numbers"}},
     {"OverlayUnknown",
      R"({"overlay": "wires"})",
      {"scene.json: overlay: unknown value \"wires\"; expected one of none, wireframe, normals"}},
@@ -860,6 +870,8 @@ TEST(SceneJson, RoundTripsEveryFieldExactly) {
     scene.vertexNormals = VertexNormals::Exact;
     scene.normalMatrix = NormalMatrixRule::Model;
     scene.perspectiveMatrix = PerspectiveMatrix::Unnegated;
+    scene.view.kind = ViewKind::Outside;
+    scene.view.observer = {-123.25, 1.0 / 3, 0.75};
     SceneObject ellipsoid;
     ellipsoid.center = {1e-7, 2, -3};
     ellipsoid.scale = {-1.5, 0.25, 3};

@@ -1,5 +1,6 @@
-// What the picture shows of a scene (issue 11, "see the error"): the scene itself, or one of three teaching
-// views that set the current shading against the exact ray-cast sphere. A scene value ("view", "view_at"),
+// What the picture shows of a scene: the scene itself, one of three teaching views that set the current
+// shading against the exact ray-cast sphere, or the outside view of the camera and its view volume. A scene
+// value ("view", "view_at", "view_observer"),
 // so the demo's S saves it and `shadelab render` draws the same picture; views, legends and plots are
 // drawn into the GL picture itself (src/gl/views.cpp), so a headless render carries them.
 #pragma once
@@ -17,7 +18,19 @@ enum class ViewKind {
     Error,   // "error": |mode − exact| per pixel as a heatmap, with its legend and interior mean and max
     Split,   // "split:A,B": two configurations side by side under one camera, a divider between them
     Profile, // "profile": intensity along one row, the mode's and exact, mesh-edge crossings marked
+    Outside, // "outside": the scene from an observer: the eye, u, v, w, the view volume, the lights
 };
+
+// Where the outside view's observer stands, in the viewing camera's frame (outside_view.h): azimuth about v
+// from w (0: behind the eye, looking where the camera looks; 90: off to the side of u), elevation towards
+// v, and a zoom that scales its distance (1: everything framed). "view_observer": [azimuth_deg,
+// elevation_deg, zoom].
+struct Observer {
+    double azimuthDeg = 55, elevationDeg = 25, zoom = 1;
+    bool operator==(const Observer&) const = default;
+};
+inline constexpr double kMaxObserverElevationDeg = 85; // short of the poles: the observer's up is v
+inline constexpr double kMinObserverZoom = 0.05, kMaxObserverZoom = 20;
 
 // One side of a split view: what it changes of the scene (unset = the scene's own).
 struct SplitSide {
@@ -33,11 +46,12 @@ struct View {
     // "view_at": split — the divider, as a fraction of the width from the left (default 0.5); profile — the
     // row, as a fraction of the height from the top (default: the row through the first object's centre).
     std::optional<double> at;
+    Observer observer; // outside only
     bool operator==(const View&) const = default;
 };
 
-// "scene", "error", "profile", or "split:A,B" with each side written as shading[/lighting][@level] (or the
-// lighting model alone): "split:gouraud,phong", "split:phong@4,phong@6", "split:phong,blinn-phong".
+// "scene", "error", "profile", "outside", or "split:A,B" with each side written as shading[/lighting][@level]
+// (or the lighting model alone): "split:gouraud,phong", "split:phong@4,phong@6", "split:phong,blinn-phong".
 std::string toString(const View& view);
 std::string toString(const SplitSide& side);
 

@@ -80,6 +80,13 @@ void GpuLines::draw() const {
     glBindVertexArray(0);
 }
 
+void GpuLines::drawTriangles() const {
+    if (vertexCount_ == 0) return;
+    glBindVertexArray(vao_.get());
+    glDrawArrays(GL_TRIANGLES, 0, vertexCount_);
+    glBindVertexArray(0);
+}
+
 void drawWith(const Program& program, const GpuMesh& mesh) {
     glUseProgram(program.get());
     mesh.draw();

@@ -297,7 +297,9 @@ const Renderer::LineProgram& Renderer::lineProgram() {
         Program program = buildLineProgram();
         const GLint clipFromSpace = glGetUniformLocation(program.get(), "uClipFromSpace");
         if (clipFromSpace < 0) throw RuntimeError("the line program has no uniform uClipFromSpace");
-        lineProgram_ = std::make_unique<LineProgram>(LineProgram{std::move(program), clipFromSpace});
+        const GLint translucency = glGetUniformLocation(program.get(), "uTranslucency");
+        lineProgram_ =
+            std::make_unique<LineProgram>(LineProgram{std::move(program), clipFromSpace, translucency});
     }
     return *lineProgram_;
 }
@@ -350,6 +352,44 @@ void Renderer::drawLinesOver(const Scene& scene, std::span<const LineVertex> lin
     glUseProgram(0);
     glEnable(GL_DEPTH_TEST);
     checkGlError("drawing lines over the scene");
+}
+
+void Renderer::drawWorld(const Scene& scene, std::span<const LineVertex> linesWorld,
+                         std::span<const LineVertex> trianglesWorld, float faceAlpha, int width, int height,
+                         int x) {
+    if (width <= 0 || height <= 0) return;
+    Scene sized = scene;
+    sized.width = width;
+    sized.height = height;
+    const SceneView view = sceneView(sized);
+    glViewport(x, 0, width, height);
+    setClipDepthZeroToOne(view.depth != DepthMode::Standard, toString(view.depth));
+    glEnable(GL_DEPTH_TEST); // GL_GREATER, as renderScene left it (DESIGN §2)
+    const LineProgram& lines = lineProgram();
+    glUseProgram(lines.program.get());
+    const glm::mat4 clipFromWorld(view.clipFromView * view.viewFromWorld);
+    glUniformMatrix4fv(lines.clipFromSpace, 1, GL_FALSE, glm::value_ptr(clipFromWorld));
+    // The translucent faces first, without writing depth, so that every line is drawn whole over them.
+    if (!trianglesWorld.empty()) {
+        if (!streamedTriangles_) streamedTriangles_ = std::make_unique<GpuLines>();
+        streamedTriangles_->set(trianglesWorld);
+        glUniform1f(lines.translucency, 1.0f - faceAlpha);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glDepthMask(GL_FALSE);
+        const GLboolean culling = glIsEnabled(GL_CULL_FACE); // a face is seen from either side
+        glDisable(GL_CULL_FACE);
+        streamedTriangles_->drawTriangles();
+        if (culling) glEnable(GL_CULL_FACE);
+        glDepthMask(GL_TRUE);
+        glDisable(GL_BLEND);
+    }
+    glUniform1f(lines.translucency, 0.0f);
+    if (!streamedLines_) streamedLines_ = std::make_unique<GpuLines>();
+    streamedLines_->set(linesWorld);
+    streamedLines_->draw();
+    glUseProgram(0);
+    checkGlError("drawing the outside view's lines");
 }
 
 } // namespace shadelab::gl

@@ -16,6 +16,7 @@
 #include "shadelab/gl/renderer.h"
 #include "shadelab/gl/screen_pass.h"
 #include "shadelab/image.h"
+#include "shadelab/outside_view.h"
 #include "shadelab/reference.h"
 #include "shadelab/subdivision.h"
 #include "shadelab/text.h"
@@ -110,6 +111,9 @@ void Views::draw(const Scene& scene, int width, int height, int x) {
         break;
     case ViewKind::Profile:
         drawProfile(scene, width, height, x, unsigned(destination));
+        break;
+    case ViewKind::Outside:
+        drawOutside(scene, width, height, x);
         break;
     }
     glBindFramebuffer(GL_FRAMEBUFFER, GLuint(destination));
@@ -359,6 +363,42 @@ void Views::drawProfile(const Scene& scene, int width, int height, int x, unsign
     for (int i = 0; i < width; ++i)
         fillRect(marker, i, 0, 1, 1, (i / 4) % 2 ? glm::u8vec4(255, 230, 0, 255) : glm::u8vec4(0, 0, 0, 0));
     programs_->images.draw(marker, 0, row, x, width, height);
+    glEnable(GL_DEPTH_TEST);
+}
+
+void Views::drawOutside(const Scene& scene, int width, int height, int x) {
+    figures_ = ViewFigures{};
+    Scene sized = scene;
+    sized.width = width;
+    sized.height = height;
+    const Scene observer = observerScene(sized);
+    renderer_.renderScene(observer, width, height, x);
+    const OutsideDrawing drawing = outsideDrawing(sized);
+    renderer_.drawWorld(observer, {}, drawing.faces, kFaceAlpha, width, height, x);
+
+    // The labels beside the points they name, where those are in the picture; the lines go over them, so
+    // that no label hides a corner of the view volume.
+    glDisable(GL_DEPTH_TEST);
+    glViewport(x, 0, width, height);
+    glBindVertexArray(programs_->images.emptyVertexArray().get());
+    const int scale = textScale(width, height);
+    const SceneView view = sceneView(observer);
+    const glm::dmat4 clipFromWorld = view.clipFromView * view.viewFromWorld;
+    for (const OutsideLabel& label : drawing.labels) {
+        const glm::dvec4 clip = clipFromWorld * glm::dvec4(label.positionWorld, 1);
+        if (!(clip.w > 0)) continue;
+        const double px = (clip.x / clip.w + 1) / 2 * width, py = (1 - clip.y / clip.w) / 2 * height;
+        if (!(px >= 0 && px < width && py >= 0 && py < height)) continue;
+        const Image image = labelImage({label.text}, scale);
+        const int left = label.leftOfPoint ? int(px) - 3 * scale - image.width : int(px) + 3 * scale;
+        programs_->images.draw(image, std::clamp(left, 0, std::max(0, width - image.width)),
+                               std::clamp(int(py) - image.height / 2, 0, std::max(0, height - image.height)),
+                               x, width, height);
+    }
+    const std::string title = leavesOutTheMinusOne(scene) ? "OUTSIDE VIEW, UNNEGATED MATRIX" : "OUTSIDE VIEW";
+    programs_->images.draw(labelImage({title, "DRAG: OBSERVER  WHEEL: ZOOM"}, scale), scale * 4, scale * 4, x,
+                           width, height);
+    renderer_.drawWorld(observer, drawing.lines, {}, kFaceAlpha, width, height, x);
     glEnable(GL_DEPTH_TEST);
 }
 

@@ -251,7 +251,7 @@ TEST(DemoKeys, EveryCommandHasExactlyOneBinding) {
 }
 
 TEST(DemoKeys, UnboundKeysGiveNoCommand) {
-    for (int key : {GLFW_KEY_Q, GLFW_KEY_Z, GLFW_KEY_Y, GLFW_KEY_SPACE, GLFW_KEY_6, GLFW_KEY_F3,
+    for (int key : {GLFW_KEY_Q, GLFW_KEY_Z, GLFW_KEY_D, GLFW_KEY_SPACE, GLFW_KEY_6, GLFW_KEY_F3,
                     GLFW_KEY_ENTER, GLFW_KEY_UNKNOWN, 0})
         EXPECT_FALSE(commandForKey(key).has_value()) << "key " << key;
 }
@@ -1171,6 +1171,34 @@ TEST(DemoState, LevelUpBeyondTheWorkLimitIsRefused) {
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("once per side of the split"), std::string::npos) << e.what();
     }
+}
+
+// ---- Y: the outside view ----
+
+TEST(DemoOutsideView, YShowsItDragOrbitsTheObserverAndTheCameraStays) {
+    DemoState state{Scene{}};
+    ASSERT_EQ(commandForKey('Y'), Command::ToggleOutsideView);
+    ASSERT_TRUE(state.apply(Command::ToggleOutsideView));
+    EXPECT_EQ(state.current().view.kind, ViewKind::Outside);
+    EXPECT_EQ(state.lastChange(), "view: outside");
+    const Scene before = state.current();
+    state.drag(40, -20);
+    state.zoom(2);
+    const Scene after = state.current();
+    EXPECT_EQ(after.eye, before.eye) << "the drag orbits the observer, not the camera";
+    EXPECT_EQ(after.view.observer.azimuthDeg, before.view.observer.azimuthDeg - 20);
+    EXPECT_EQ(after.view.observer.elevationDeg, before.view.observer.elevationDeg - 10);
+    EXPECT_NEAR(after.view.observer.zoom, 0.81, 1e-12);
+    EXPECT_FALSE(state.probeAt(256, 256)) << "the picture is the observer's: no probe";
+    // S saves the observer with the view, and the saved scene reads back the same.
+    EXPECT_EQ(parseScene(sceneToJson(after)).view, after.view);
+    for (int i = 0; i < 400; ++i) state.drag(0, 10);
+    EXPECT_EQ(state.current().view.observer.elevationDeg, kMaxObserverElevationDeg);
+    EXPECT_NO_THROW(validateScene(state.current()));
+    ASSERT_TRUE(state.apply(Command::ToggleOutsideView));
+    EXPECT_EQ(state.current().view.kind, ViewKind::Scene);
+    state.drag(40, 0);
+    EXPECT_NE(state.current().eye, before.eye) << "back in the scene view, the drag orbits the camera";
 }
 
 // ---- the view volume on the panel and the page ----

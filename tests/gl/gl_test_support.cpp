@@ -1,9 +1,15 @@
 #include "gl/gl_test_support.h"
 
+#include <array>
+#include <cmath>
+#include <cstdio>
 #include <memory>
 #include <stdexcept>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "shadelab/errors.h"
+#include "shadelab/outside_view.h"
 
 namespace shadelab::test {
 
@@ -186,6 +192,80 @@ std::vector<Scene> modeScenes(int size, int level) {
             scenes.push_back(scene);
         }
     return scenes;
+}
+
+namespace {
+
+// DESIGN §2's matrices through GLM alone: near → NDC z = +1.
+glm::dmat4 webGlClipFromView(const Scene& scene) {
+    const Projection& p = scene.projection;
+    const glm::dmat4 flipZ = glm::scale(glm::dmat4(1), glm::dvec3(1, 1, -1));
+    if (p.type == ProjectionType::Orthographic)
+        return flipZ * glm::orthoRH_NO(p.left, p.right, p.bottom, p.top, p.near, p.far);
+    if (p.type == ProjectionType::Frustum)
+        return flipZ * glm::frustumRH_NO(p.left, p.right, p.bottom, p.top, p.near, p.far);
+    return flipZ *
+           glm::perspectiveRH_NO(glm::radians(p.fovyDeg), double(scene.width) / scene.height, p.near, p.far);
+}
+
+} // namespace
+
+std::vector<std::string> outsideCornerMisses(const Image& image, const Scene& scene) {
+    const glm::dmat4 worldFromClip =
+        glm::inverse(webGlClipFromView(scene) * glm::lookAt(scene.eye, scene.target, scene.up));
+    const Scene observer = observerScene(scene);
+    const glm::dmat4 observerClipFromWorld =
+        webGlClipFromView(observer) * glm::lookAt(observer.eye, observer.target, observer.up);
+    std::array<glm::dvec2, 8> pixel; // continuous pixel coordinates from the top left
+    for (int i = 0; i < 8; ++i) {
+        glm::dvec4 world = worldFromClip * glm::dvec4(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1, 1);
+        const glm::dvec4 clip = observerClipFromWorld * glm::dvec4(glm::dvec3(world) / world.w, 1);
+        pixel[std::size_t(i)] = {(clip.x / clip.w + 1) / 2 * image.width,
+                                 (1 - clip.y / clip.w) / 2 * image.height};
+    }
+    const glm::vec3 colour = leavesOutTheMinusOne(scene) ? kClippedVolumeColor : kVolumeEdgeColor;
+    const glm::ivec3 expected(glm::round(colour * 255.0f));
+    auto isEdge = [&](int x, int y) {
+        if (x < 0 || y < 0 || x >= image.width || y >= image.height) return false;
+        const std::size_t k = (std::size_t(y) * std::size_t(image.width) + std::size_t(x)) * 4;
+        for (int c = 0; c < 3; ++c)
+            if (std::abs(int(image.rgba[k + std::size_t(c)]) - expected[c]) > 2) return false;
+        return true;
+    };
+    auto edgeNear = [&](glm::dvec2 p) {
+        const int x = int(std::floor(p.x)), y = int(std::floor(p.y));
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx)
+                if (isEdge(x + dx, y + dy)) return true;
+        return false;
+    };
+    std::vector<std::string> misses;
+    auto miss = [&](int corner, const std::string& what, glm::dvec2 p) {
+        char text[160];
+        std::snprintf(text, sizeof text, "corner %d at (%.1f, %.1f): %s (checked at (%.1f, %.1f))", corner,
+                      pixel[std::size_t(corner)].x, pixel[std::size_t(corner)].y, what.c_str(), p.x, p.y);
+        misses.emplace_back(text);
+    };
+    for (int i = 0; i < 8; ++i) {
+        const glm::dvec2 at = pixel[std::size_t(i)];
+        if (!edgeNear(at)) miss(i, "no edge pixel within 1 px of the corner", at);
+        std::vector<glm::dvec2> directions;
+        for (int bit : {1, 2, 4}) {
+            const glm::dvec2 along = pixel[std::size_t(i ^ bit)] - at;
+            if (glm::length(along) >= 12) directions.push_back(glm::normalize(along));
+        }
+        for (const glm::dvec2& d : directions) {
+            if (!edgeNear(at + 4.0 * d)) miss(i, "no edge pixel 4 px along an edge", at + 4.0 * d);
+            // Past the corner nothing of the volume's colour, where the other edges leave at 30° or more.
+            bool clear = true;
+            for (const glm::dvec2& other : directions)
+                if (&other != &d && glm::dot(-d, other) > std::cos(glm::radians(30.0))) clear = false;
+            const glm::dvec2 past = at - 3.0 * d;
+            if (clear && isEdge(int(std::floor(past.x)), int(std::floor(past.y))))
+                miss(i, "an edge pixel 3 px past the corner: the drawn corner lies beyond it", past);
+        }
+    }
+    return misses;
 }
 
 } // namespace shadelab::test

@@ -69,6 +69,14 @@ inline void PrintTo(const AnalyticCase& c, std::ostream* os) {
 const std::vector<AnalyticCase>& analyticCases();
 const AnalyticCase& analyticCase(std::string_view name); // one of them by name; throws std::logic_error
 
+// The outside view of `scene` (view "outside", at the picture's size): checks that each corner of the view
+// volume, computed independently as inverse(M_proj·M_cam) of the NDC cube's corners (glm::lookAt and GLM's
+// frustum, perspective or ortho matrix times diag(1, 1, −1, 1), DESIGN §2) and projected by the observer's
+// camera (observerScene's eye, target, up and projection, through the same GLM functions), is drawn
+// within 1 px: the volume's edge colour at the corner and 4 px along each incident edge, and not 3 px past
+// the corner along an edge's extension. Returns what failed, one line each; empty when all is well.
+std::vector<std::string> outsideCornerMisses(const Image& image, const Scene& scene);
+
 } // namespace shadelab::test
 
 // Without a GL context a test skips with the reason, except in CI (CI set), where it fails.

@@ -1,12 +1,15 @@
 // The teaching views of issue 11 (gl/views.h) against their parts: the error view's figures against
 // `shadelab report`'s measure of the same configuration, the split view's halves against plain renders of
 // its sides, the profile's samples against the rendered rows.
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
 #include "app/report/report.h"
 #include "gl/gl_test_support.h"
 #include "shadelab/gl/views.h"
+#include "shadelab/image_file.h"
+#include "shadelab/outside_view.h"
 
 namespace shadelab::test {
 namespace {
@@ -182,6 +185,91 @@ TEST(ProfileView, RowIsTheFirstObjectsCentreOrViewAt) {
     EXPECT_LT(gl::profileRow(scene, 200), 90);
     scene.view.at = 0.25;
     EXPECT_EQ(gl::profileRow(scene, 200), 50);
+}
+
+// The outside view: the view volume's corners, computed independently, are drawn where the observer's
+// camera puts them, for each projection, the unnegated matrix and an orbited observer.
+Scene volumeOnlyScene() {
+    Scene scene;
+    scene.width = scene.height = 256;
+    scene.eye = {0, 0, 5};
+    scene.projection = {ProjectionType::Perspective, 50, -1, 1, -1, 1, 2.5, 7};
+    scene.objects.clear(); // the lines alone: nothing hides a corner
+    scene.lights.clear();
+    scene.view.kind = ViewKind::Outside;
+    return scene;
+}
+
+std::string joined(const std::vector<std::string>& lines) {
+    std::string text;
+    for (const std::string& line : lines) text += line + "\n";
+    return text;
+}
+
+TEST(OutsideView, ViewVolumeCornersLandOnTheDrawnCorners) {
+    SHADELAB_REQUIRE_GL(renderer);
+    std::vector<std::pair<std::string, Scene>> cases;
+    cases.emplace_back("perspective", volumeOnlyScene());
+    Scene frustum = volumeOnlyScene();
+    frustum.projection = {ProjectionType::Frustum, 40, -1.4, 0.6, -0.8, 1.2, 2, 6};
+    cases.emplace_back("off-centre frustum", frustum);
+    Scene box = volumeOnlyScene();
+    box.projection = {ProjectionType::Orthographic, 40, -1.5, 1.5, -1, 1.2, 1, 6};
+    cases.emplace_back("orthographic", box);
+    Scene orbited = volumeOnlyScene();
+    orbited.view.observer = {-40, -15, 1.2};
+    orbited.eye = {2, 1, 4};
+    cases.emplace_back("orbited observer, off-axis eye", orbited);
+    Scene unnegated = volumeOnlyScene();
+    unnegated.perspectiveMatrix = PerspectiveMatrix::Unnegated;
+    cases.emplace_back("unnegated", unnegated);
+    for (const auto& [name, scene] : cases) {
+        SCOPED_TRACE(name);
+        const Image image = renderer->render(scene);
+        const std::vector<std::string> misses = outsideCornerMisses(image, scene);
+        EXPECT_TRUE(misses.empty()) << joined(misses);
+        if (!misses.empty()) writePng(image, "outside_view_failed.png"); // to look at
+    }
+    // The check can fail: a picture of a volume whose near plane is 0.3 farther has its near corners
+    // elsewhere.
+    Scene moved = volumeOnlyScene();
+    moved.projection.near = 2.8;
+    EXPECT_FALSE(outsideCornerMisses(renderer->render(moved), volumeOnlyScene()).empty());
+}
+
+TEST(OutsideView, ObjectsAreDrawnAsTheObserverSeesThemUnderTheTranslucentFaces) {
+    SHADELAB_REQUIRE_GL(renderer);
+    Scene scene = volumeOnlyScene();
+    scene.objects = {SceneObject{}};
+    scene.lights = {Scene::defaultLight()};
+    const Image outside = renderer->render(scene);
+    // The observer's own render of the objects: wherever it covers a pixel, the outside view shows that
+    // pixel, or it under the near or far face (blended with alpha kFaceAlpha, either or both), or a line.
+    const Image plain = renderer->render(observerScene(scene));
+    auto blend = [](glm::vec3 under, glm::vec3 face) { return (1 - kFaceAlpha) * under + kFaceAlpha * face; };
+    std::size_t covered = 0, explained = 0;
+    for (std::size_t k = 0; k < plain.rgba.size(); k += 4) {
+        if (plain.rgba[k + 3] == 0) continue;
+        ++covered;
+        const glm::vec3 p = glm::vec3(plain.rgba[k], plain.rgba[k + 1], plain.rgba[k + 2]) / 255.0f;
+        const glm::vec3 o = glm::vec3(outside.rgba[k], outside.rgba[k + 1], outside.rgba[k + 2]) / 255.0f;
+        bool found = false;
+        for (const glm::vec3& under :
+             {p, blend(p, kNearFaceColor), blend(p, kFarFaceColor),
+              blend(blend(p, kFarFaceColor), kNearFaceColor), blend(blend(p, kNearFaceColor), kFarFaceColor),
+              kVolumeEdgeColor, 0.5f * kVolumeEdgeColor})
+            // ...as it is, or under a label's box (black at alpha 170/255; labels sit beside their points).
+            for (const glm::vec3& candidate : {under, under * (85.0f / 255)})
+                found |= glm::all(glm::lessThanEqual(glm::abs(o - candidate), glm::vec3(2.5f / 255)));
+        explained += found;
+    }
+    EXPECT_GT(covered, 500u) << "the observer sees the sphere";
+    EXPECT_GT(double(explained), 0.97 * double(covered))
+        << explained << " of " << covered << " sphere pixels";
+    // And the sphere does hide what is behind it: the view without the sphere differs there.
+    Scene empty = scene;
+    empty.objects.clear();
+    EXPECT_NE(renderer->render(empty).rgba, outside.rgba);
 }
 
 } // namespace

@@ -598,12 +598,24 @@ TEST_F(Browser, ViewsAsInTheWindow) {
         {"divider drag", [&] { return session.drag(-40, 0, false); }},
         {"I", [&] { return session.key('I'); }},
         {"pointer move", [&] { return session.move(0, -50); }},
+        {"Y", [&] { return session.key('Y'); }},
+        {"observer drag", [&] { return session.drag(30, 10, false); }},
     };
     for (Step& step : steps) {
         if (step.act) step.done = step.act();
         step.ui = session.ui();
         step.capture = session.capture();
     }
+    // The outside view's corners on the page, as on GL, GLES and OSMesa (views_test.cpp): a volume alone.
+    Scene volume;
+    volume.width = volume.height = 256;
+    volume.eye = {0, 0, 5};
+    volume.projection = {ProjectionType::Perspective, 50, -1, 1, -1, 1, 2.5, 7};
+    volume.objects.clear();
+    volume.lights.clear();
+    volume.view.kind = ViewKind::Outside;
+    session.load(volume);
+    const std::size_t volumeCapture = session.capture();
     const std::size_t console = session.console();
     if (!session.run(dir_)) return;
     std::vector<json> states;
@@ -629,7 +641,18 @@ TEST_F(Browser, ViewsAsInTheWindow) {
     ASSERT_TRUE(states[6].contains("view_at"));
     EXPECT_LT(states[6].at("view_at").get<double>(), 0.49) << "the pointer above the centre: a row above it";
     const json last = session.answer(steps.back().ui).at("ui");
-    EXPECT_NE(last.at("title").get<std::string>().find("| profile: row "), std::string::npos);
+    EXPECT_NE(session.answer(steps[6].ui).at("ui").at("title").get<std::string>().find("| profile: row "),
+              std::string::npos);
+    EXPECT_EQ(states[7].at("view"), "outside");
+    EXPECT_EQ(states[8].at("camera"), states[7].at("camera"))
+        << "the drag orbited the camera, not the observer";
+    EXPECT_NE(states[8].at("view_observer"), states[7].at("view_observer")) << "the drag left the observer";
+    EXPECT_NE(last.at("title").get<std::string>().find("| outside: observer at azimuth "), std::string::npos);
+    const Image& volumeImage = session.image(volumeCapture);
+    ASSERT_EQ(volumeImage.width, 256);
+    std::string misses;
+    for (const std::string& miss : outsideCornerMisses(volumeImage, volume)) misses += miss + "\n";
+    EXPECT_EQ(misses, "") << "the view volume's corners on the page";
     expectCleanConsole(session.answer(console).at("console"));
 }
 

@@ -481,10 +481,10 @@ TEST_F(DemoWindow, OverlayLightDragAndProbeShowWhatRenderGives) {
     expectCleanQuit(demo);
 }
 
-// Issue 11: 5 (exact), E (error), V (split, and a drag of its divider) and I (profile, and a pointer move
-// choosing its row) each change the picture, say so in the title, and the window shows what `render` draws
-// for the JSON that S saves, the view included.
-TEST_F(DemoWindow, ExactErrorSplitAndProfileShowWhatRenderGives) {
+// 5 (exact), E (error), V (split, and a drag of its divider), I (profile, and a pointer move choosing its
+// row) and Y (outside, and a drag orbiting its observer) each change the picture, say so in the title, and
+// the window shows what `render` draws for the JSON that S saves, the view included.
+TEST_F(DemoWindow, ExactErrorSplitProfileAndOutsideShowWhatRenderGives) {
     const fs::path scene = writeScene("scene.json", sceneJson(kWidth, kHeight, 3, "gouraud", "phong"));
     DemoProcess& demo = startDemo("demo", {scene.string(), "--size", kSize, "--hide-panel", "--gl-debug"});
     demo.window().waitForTitle("shadelab — gouraud shading");
@@ -542,6 +542,14 @@ TEST_F(DemoWindow, ExactErrorSplitAndProfileShowWhatRenderGives) {
     EXPECT_NEAR(profile.view.at.value_or(-1), 0.25, 1.0 / kHeight);
     demo.window().key("i");
     EXPECT_EQ(step("scene", has("| view: scene")).view.kind, ViewKind::Scene);
+    // Y: the outside view, and a drag orbits its observer, not the camera.
+    demo.window().key("y");
+    const Scene outside = step("outside", has("| outside: observer at azimuth 55 deg"));
+    EXPECT_EQ(outside.view.kind, ViewKind::Outside);
+    demo.window().drag(1, kWidth / 2, kHeight / 2, 40, 0);
+    const Scene orbited = step("outside-orbited", has("| outside: observer at azimuth 35 deg"));
+    EXPECT_EQ(orbited.eye, outside.eye) << "the drag orbited the camera";
+    EXPECT_EQ(orbited.view.observer.azimuthDeg, 35);
     expectCleanQuit(demo);
 }
 

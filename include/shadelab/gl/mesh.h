@@ -39,6 +39,7 @@ public:
     explicit GpuLines(std::span<const LineVertex> vertices) : GpuLines() { set(vertices); }
     void set(std::span<const LineVertex> vertices);
     void draw() const;
+    void drawTriangles() const; // the same vertices as GL_TRIANGLES (the outside view's faces)
 
 private:
     int vertexCount_ = 0;

@@ -42,6 +42,12 @@ public:
     void drawImageOver(const Image& image, int left, int top, int width, int height, int x = 0);
     void drawLinesOver(const Scene& scene, std::span<const LineVertex> linesView, int width, int height,
                        int x = 0);
+    // World-space triangles and lines (GL_LINES pairs), depth-tested against what scene's render left in
+    // the depth buffer (the outside view: lines behind an object are hidden): the triangles first, blended
+    // with `faceAlpha` and without writing depth, then the lines opaque over them.
+    void drawWorld(const Scene& scene, std::span<const LineVertex> linesWorld,
+                   std::span<const LineVertex> trianglesWorld, float faceAlpha, int width, int height,
+                   int x = 0);
 
     // How far programs are specialized (gl/program.h): to each object's values (the default, as `render`
     // draws), to the scene's lights (the window: a colour change recompiles nothing), or not at all (the
@@ -60,6 +66,7 @@ private:
     struct LineProgram {
         Program program;
         int clipFromSpace = -1; // uClipFromSpace, looked up once
+        int translucency = -1;  // uTranslucency
     };
     const LineProgram& lineProgram();
     void drawOverlay(const Scene& sized, const SceneView& view);
@@ -78,7 +85,7 @@ private:
     std::map<std::tuple<int, VertexNormals, MeshLayout>, std::unique_ptr<GpuMesh>> meshes_;
     std::unique_ptr<LineProgram> lineProgram_;
     std::map<std::tuple<int, VertexNormals, Overlay>, std::unique_ptr<GpuLines>> overlays_;
-    std::unique_ptr<GpuLines> streamedLines_;
+    std::unique_ptr<GpuLines> streamedLines_, streamedTriangles_;
     std::unique_ptr<ImagePass> imagePass_; // drawImageOver's, made at its first use
     VertexArray emptyVertexArray_;         // exact shading's proxies have no attributes
     bool exactObjectIds_ = false, exactToon_ = false;

@@ -47,6 +47,7 @@ private:
     void drawError(const Scene& scene, int width, int height, int x, unsigned destination);
     void drawSplit(const Scene& scene, int width, int height, int x);
     void drawProfile(const Scene& scene, int width, int height, int x, unsigned destination);
+    void drawOutside(const Scene& scene, int width, int height, int x);
     void renderModeAndExact(const Scene& scene, int width, int height);
 
     Renderer& renderer_;

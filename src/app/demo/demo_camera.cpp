@@ -51,12 +51,24 @@ void OrbitCamera::zoom(double wheelSteps) {
 }
 
 void DemoState::drag(double dxPixels, double dyPixels) {
-    if (holdingDivider_) return; // the drag moves the split's divider (pointer())
+    if (holdingDivider_) return;                 // the drag moves the split's divider (pointer())
+    if (scene_.view.kind == ViewKind::Outside) { // the observer orbits; the camera keeps its own keys
+        Observer& o = scene_.view.observer;
+        o.azimuthDeg = std::remainder(o.azimuthDeg - 0.5 * dxPixels, 360.0);
+        o.elevationDeg =
+            std::clamp(o.elevationDeg + 0.5 * dyPixels, -kMaxObserverElevationDeg, kMaxObserverElevationDeg);
+        return;
+    }
     camera_.drag(dxPixels, dyPixels);
     cameraMoved_ = true;
 }
 
 void DemoState::zoom(double wheelSteps) {
+    if (scene_.view.kind == ViewKind::Outside) {
+        Observer& o = scene_.view.observer;
+        o.zoom = std::clamp(o.zoom * std::pow(0.9, wheelSteps), kMinObserverZoom, kMaxObserverZoom);
+        return;
+    }
     camera_.zoom(wheelSteps);
     // Clamp the stored distance itself, so the wheel never has to unwind steps it had no effect with.
     // Outside the objects comes first; inside the far plane where both fit.

@@ -21,6 +21,11 @@ std::string viewReport(const Scene& scene, const gl::ViewFigures& figures) {
     case ViewKind::Profile:
         return "profile: row " + std::to_string(figures.row) + ", " +
                std::to_string(figures.edgeColumns.size()) + " edge crossings";
+    case ViewKind::Outside:
+        std::snprintf(
+            text, sizeof text, "outside: observer at azimuth %.0f deg, elevation %.0f deg, zoom %.2f",
+            scene.view.observer.azimuthDeg, scene.view.observer.elevationDeg, scene.view.observer.zoom);
+        return text;
     }
     return "";
 }
@@ -30,7 +35,9 @@ void drawDemo(gl::Renderer& renderer, DemoState& state, int width, int height, i
     renderer.render(scene, width, height, x);
     state.viewReport = viewReport(scene, renderer.viewFigures());
     const auto probe = state.probe();
-    if (probe && !probeFacesAway(*probe)) { // behind the object, the probe's table says so instead
+    // The probe's vectors are in the camera's view; the outside view draws the observer's.
+    if (probe && !probeFacesAway(*probe) &&
+        scene.view.kind != ViewKind::Outside) { // behind the object, the probe's table says so instead
         // The vectors are as long as 0.6 of the object's largest semi-axis: visible, and inside the picture.
         const SceneObject& object = scene.objects[probe->point.object];
         const double length =

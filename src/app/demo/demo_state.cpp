@@ -129,11 +129,16 @@ bool DemoState::apply(Command command) {
         setShading(ShadingMode::Exact);
         break;
     case Command::ToggleErrorView:
-    case Command::ToggleProfileView: {
-        const ViewKind kind = command == Command::ToggleErrorView ? ViewKind::Error : ViewKind::Profile;
+    case Command::ToggleProfileView:
+    case Command::ToggleOutsideView: {
+        const ViewKind kind = command == Command::ToggleErrorView     ? ViewKind::Error
+                              : command == Command::ToggleProfileView ? ViewKind::Profile
+                                                                      : ViewKind::Outside;
         const bool on = scene_.view.kind != kind;
+        const Observer observer = scene_.view.observer; // where it was left
         scene_.view = View{};
         scene_.view.kind = on ? kind : ViewKind::Scene;
+        scene_.view.observer = observer;
         break;
     }
     case Command::ToggleSplitView:
@@ -252,6 +257,7 @@ std::string DemoState::describeChange(Command command) const {
     case Command::ToggleErrorView:
     case Command::ToggleSplitView:
     case Command::ToggleProfileView:
+    case Command::ToggleOutsideView:
         return scene.view.kind == ViewKind::Scene ? "view: scene" : "view: " + toString(scene.view);
     case Command::ToggleLighting:
         return std::string(toString(scene.lighting)) + " lighting";
@@ -329,6 +335,7 @@ void DemoState::dragLight(double dxPixels, double dyPixels) {
 
 bool DemoState::probeAt(double x, double y) {
     const Scene shown = drawn();
+    if (shown.view.kind == ViewKind::Outside) return false; // the picture is the observer's, not the camera's
     probePoint_ = pickSurfacePoint(shown, x, y);
     if (!probePoint_) {
         lastChange_ = "probe off";

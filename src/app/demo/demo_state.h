@@ -36,6 +36,7 @@ enum class Command {
     ToggleErrorView,
     ToggleSplitView,
     ToggleProfileView,
+    ToggleOutsideView,
     ToggleLighting,
     NextTerm,
     ToggleNormalMatrix,
