@@ -6,6 +6,8 @@
 //   NEEDS_NORMAL     (set in lighting.glsl) 0 when only ambient light reaches the scene: no normal attribute
 //   FLAT_GEOMETRY_SHADER  with SHADING_FLAT: shared vertices; surface.geom.glsl derives each triangle's
 //                    centroid and face normal and lights it once (no centroid or normal attribute)
+//   NDC_VIEW         uClipFromObject is the observer's view of the camera's NDC space; the camera's own clip
+//                    coordinates go to the fragment stage, which discards what the clipper would remove
 #if defined(FLAT_GEOMETRY_SHADER) && NEEDS_NORMAL
 #undef NEEDS_NORMAL
 #define NEEDS_NORMAL 0
@@ -24,6 +26,10 @@ layout(location = 2) in vec3 aCentroidObject;
 uniform mat4 uClipFromObject;       // composed in double on the CPU
 uniform mat4 uViewFromObject;       // camera-relative: no large world coordinates reach float
 uniform mat3 uNormalViewFromObject; // cofactor of the upper 3×3: normals need renormalizing
+#ifdef NDC_VIEW
+uniform mat4 uCameraClipFromObject; // M_proj·M_cam·M of the camera (uClipFromObject is the observer's)
+out vec4 vCameraClip;
+#endif
 
 #if defined(FLAT_GEOMETRY_SHADER)
 out vec3 vPositionView;
@@ -44,6 +50,9 @@ vec3 lightAt(vec3 pointObject) {
 
 void main() {
     gl_Position = uClipFromObject * vec4(aPositionObject, 1.0);
+#ifdef NDC_VIEW
+    vCameraClip = uCameraClipFromObject * vec4(aPositionObject, 1.0);
+#endif
 #if defined(FLAT_GEOMETRY_SHADER)
     vPositionView = (uViewFromObject * vec4(aPositionObject, 1.0)).xyz;
 #elif defined(SHADING_FLAT)

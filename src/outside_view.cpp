@@ -206,6 +206,52 @@ Scene observerScene(const Scene& scene) {
     return observer;
 }
 
+Scene ndcObserverScene(const Scene& scene) {
+    const Observer& o = scene.view.observer;
+    const double azimuth = o.azimuthDeg * kDegree, elevation = o.elevationDeg * kDegree;
+    const glm::dvec3 direction(std::cos(elevation) * std::sin(azimuth), std::sin(elevation),
+                               std::cos(elevation) * std::cos(azimuth));
+    const double radius = std::sqrt(3.0); // the cube's circumscribed sphere
+    const double halfY = 0.5 * kObserverFovyDeg * kDegree;
+    const double halfX = std::atan(std::tan(halfY) * scene.width / scene.height);
+    const double distance = o.zoom * 1.05 * radius / std::sin(std::min(halfX, halfY));
+    Scene observer = scene;
+    observer.eye = distance * direction;
+    observer.target = {0, 0, 0};
+    observer.up = {0, 1, 0};
+    observer.view = View{};
+    observer.perspectiveMatrix = PerspectiveMatrix::WebGl;
+    observer.depth = DepthMode::Standard;
+    observer.projection = {ProjectionType::Perspective,
+                           kObserverFovyDeg,
+                           -1,
+                           1,
+                           -1,
+                           1,
+                           std::max(distance - 1.1 * radius, distance * 1e-3),
+                           distance + 1.1 * radius};
+    return observer;
+}
+
+OutsideDrawing ndcCubeDrawing() {
+    OutsideDrawing drawing;
+    std::array<glm::dvec3, 8> corners;
+    for (int i = 0; i < 8; ++i) corners[std::size_t(i)] = {i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1};
+    for (int i = 0; i < 8; ++i)
+        for (int bit : {1, 2, 4})
+            addLine(drawing.lines, corners[std::size_t(i)], corners[std::size_t(i ^ bit)], kCubeEdgeColor);
+    for (const auto& [indices, color] : {std::pair{std::array{4, 5, 7, 6}, kNearFaceColor},
+                                         std::pair{std::array{0, 1, 3, 2}, kFarFaceColor}})
+        for (int k : {0, 1, 2, 0, 2, 3})
+            drawing.faces.push_back({glm::vec3(corners[std::size_t(indices[std::size_t(k)])]), color});
+    // At corners, clear of the objects in the middle.
+    drawing.labels.push_back({corners[4], "near: z = +1", true});
+    drawing.labels.push_back({corners[1], "far: z = -1"});
+    drawing.labels.push_back({corners[6], "(-1, 1, 1)", true});
+    drawing.labels.push_back({corners[3], "(1, 1, -1)"});
+    return drawing;
+}
+
 OutsideDrawing outsideDrawing(const Scene& scene) {
     OutsideDrawing drawing;
     const CameraFrame frame = cameraFrame(scene.eye, scene.target, scene.up);

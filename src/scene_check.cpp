@@ -377,6 +377,10 @@ void validateSceneValues(const Scene& scene) {
     for (std::size_t i = 0; i < scene.lights.size(); ++i) checkLight(scene.lights[i], indexPath("lights", i));
     if (scene.view.at) checkViewAt(*scene.view.at);
     checkObserver(scene.view.observer);
+    if (scene.view.kind == ViewKind::Ndc && scene.shading == ShadingMode::Exact)
+        fail("view",
+             "ndc draws the mesh through M_proj·M_cam, and exact shading ray-casts the sphere without "
+             "one; choose flat, gouraud, phong or toon shading for the NDC view");
     (void)sceneView(scene); // the derived matrices must be finite too
     checkObjectCount(scene.objects.size());
 }

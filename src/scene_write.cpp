@@ -90,7 +90,7 @@ std::string sceneToJson(const Scene& scene) {
         {"objects", objects},
         {"lights", lights}};
     if (scene.view.at) root["view_at"] = *scene.view.at;
-    if (scene.view.kind == ViewKind::Outside || scene.view.observer != Observer{})
+    if (observed(scene.view.kind) || scene.view.observer != Observer{})
         root["view_observer"] = {scene.view.observer.azimuthDeg, scene.view.observer.elevationDeg,
                                  scene.view.observer.zoom};
     return root.dump(2) + "\n";

@@ -61,6 +61,8 @@ std::string toString(const View& view) {
         return "profile";
     case ViewKind::Outside:
         return "outside";
+    case ViewKind::Ndc:
+        return "ndc";
     case ViewKind::Split:
         return "split:" + toString(view.left) + "," + toString(view.right);
     }
@@ -74,12 +76,14 @@ static View viewOf(ViewKind kind) {
 }
 
 ViewParse parseView(std::string_view text) {
-    constexpr const char* kExpected = "expected scene, error, profile, outside or split:A,B (A and B each "
-                                      "shading[/lighting][@level], e.g. split:gouraud,phong)";
+    constexpr const char* kExpected =
+        "expected scene, error, profile, outside, ndc or split:A,B (A and B each "
+        "shading[/lighting][@level], e.g. split:gouraud,phong)";
     if (text == "scene") return {View{}, ""};
     if (text == "error") return {viewOf(ViewKind::Error), ""};
     if (text == "profile") return {viewOf(ViewKind::Profile), ""};
     if (text == "outside") return {viewOf(ViewKind::Outside), ""};
+    if (text == "ndc") return {viewOf(ViewKind::Ndc), ""};
     if (!text.starts_with("split:")) return {std::nullopt, kExpected};
     const std::string_view sides = text.substr(6);
     const std::size_t comma = sides.find(',');

@@ -60,7 +60,7 @@ TEST(ViewSpelling, RefusalsSayWhatIsWrongAndWhatIsExpected) {
         const char* says;
     };
     for (const Case& c :
-         {Case{"errors", "expected scene, error, profile, outside or split:A,B"},
+         {Case{"errors", "expected scene, error, profile, outside, ndc or split:A,B"},
           Case{"split:phong", "two sides separated by one comma"},
           Case{"split:a,b,c", "two sides separated by one comma"},
           Case{"split:phong,phongg", "unknown shading \"phongg\""},

@@ -466,9 +466,9 @@ function wireControls() {
     pressUntil(ui.level < target ? 61 : 45, (u) => u.level === target);
   });
   $('auto').addEventListener('change', (e) => pressUntil(65, (u) => u.autoLevel === e.target.checked, 1));
-  // E, V, I and Y each switch their view on (from any other) and off again, as in the window.
+  // E, V, I, Y and Q each switch their view on (from any other) and off again, as in the window.
   $('view-kind').addEventListener('change', (e) => {
-    const keyOf = {error: 69, split: 86, profile: 73, outside: 89};
+    const keyOf = {error: 69, split: 86, profile: 73, outside: 89, ndc: 81};
     const shown = viewName(ui.view);
     if (e.target.value !== shown) press(keyOf[e.target.value === 'scene' ? shown : e.target.value]);
     refresh();

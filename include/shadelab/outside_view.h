@@ -44,6 +44,16 @@ struct OutsideDrawing {
 };
 OutsideDrawing outsideDrawing(const Scene& scene);
 
+// The NDC view: the camera's normalized device coordinates, the cube [−1, 1]³ (near at z = +1, DESIGN
+// §2), taken as a space of its own and seen from an observer placed by scene.view.observer in its axes
+// (azimuth about y from +z, elevation towards +y), framing the cube. Its matrices (sceneView) map NDC to
+// the observer's clip space; objects are drawn there through M_proj·M_cam (gl/renderer.h), so a sphere
+// shows as the egg it becomes under a perspective projection.
+Scene ndcObserverScene(const Scene& scene);
+// The cube's edges, its near face (z = +1) and far face (z = −1) translucent, and their labels, in NDC.
+OutsideDrawing ndcCubeDrawing();
+inline constexpr glm::vec3 kCubeEdgeColor{0.8f, 0.8f, 0.8f};
+
 // Colours of the drawing, linear RGB.
 inline constexpr glm::vec3 kVolumeEdgeColor{1.0f, 0.85f, 0.2f};
 inline constexpr glm::vec3 kClippedVolumeColor{1.0f, 0.25f, 0.2f}; // unnegated: w < 0 in the volume

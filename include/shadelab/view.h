@@ -19,7 +19,12 @@ enum class ViewKind {
     Split,   // "split:A,B": two configurations side by side under one camera, a divider between them
     Profile, // "profile": intensity along one row, the mode's and exact, mesh-edge crossings marked
     Outside, // "outside": the scene from an observer: the eye, u, v, w, the view volume, the lights
+    Ndc, // "ndc": the objects after M_proj·M_cam and the divide, in the cube [−1, 1]³, from an observer
 };
+// The views that show the scene from an observer (view_observer), not from the camera.
+inline bool observed(ViewKind kind) {
+    return kind == ViewKind::Outside || kind == ViewKind::Ndc;
+}
 
 // Where the outside view's observer stands, in the viewing camera's frame (outside_view.h): azimuth about v
 // from w (0: behind the eye, looking where the camera looks; 90: off to the side of u), elevation towards
@@ -46,12 +51,13 @@ struct View {
     // "view_at": split — the divider, as a fraction of the width from the left (default 0.5); profile — the
     // row, as a fraction of the height from the top (default: the row through the first object's centre).
     std::optional<double> at;
-    Observer observer; // outside only
+    Observer observer; // outside and ndc only
     bool operator==(const View&) const = default;
 };
 
-// "scene", "error", "profile", "outside", or "split:A,B" with each side written as shading[/lighting][@level]
-// (or the lighting model alone): "split:gouraud,phong", "split:phong@4,phong@6", "split:phong,blinn-phong".
+// "scene", "error", "profile", "outside", "ndc", or "split:A,B" with each side written as
+// shading[/lighting][@level] (or the lighting model alone): "split:gouraud,phong", "split:phong@4,phong@6",
+// "split:phong,blinn-phong".
 std::string toString(const View& view);
 std::string toString(const SplitSide& side);
 

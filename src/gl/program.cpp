@@ -188,14 +188,15 @@ bool ProgramVariant::operator<(const ProgramVariant& other) const {
     auto key = [](const ProgramVariant& v) {
         return std::tie(v.shading, v.lighting, v.specialized, v.flatGeometryShader, v.directional, v.point,
                         v.spot, v.ambient, v.attenuation, v.specular, v.viewerAtInfinity, v.exactToon,
-                        v.values);
+                        v.ndcView, v.values);
     };
     return key(*this) < key(other);
 }
 
 std::string ProgramVariant::name() const {
     std::string text = std::string(toString(shading)) + (flatGeometryShader ? "(gs)" : "") +
-                       (exactToon ? "(toon)" : "") + "/" + std::string(toString(lighting));
+                       (exactToon ? "(toon)" : "") + (ndcView ? "(ndc)" : "") + "/" +
+                       std::string(toString(lighting));
     if (!specialized) return text;
     text += "+d" + std::to_string(directional) + "p" + std::to_string(point) + "s" + std::to_string(spot);
     if (!ambient) text += "-ambient";
@@ -218,6 +219,7 @@ std::string ProgramVariant::defines() const {
     if (exactToon) text += "#define SHADING_TOON\n";
     if (lighting == LightingModel::BlinnPhong) text += "#define LIGHTING_BLINN_PHONG\n";
     if (flatGeometryShader) text += "#define FLAT_GEOMETRY_SHADER\n";
+    if (ndcView) text += "#define NDC_VIEW\n";
     if (!specialized) return text;
     text += "#define SPECIALIZED\n";
     text += "#define NUM_DIRECTIONAL " + std::to_string(directional) + "\n";
@@ -266,6 +268,7 @@ SurfaceProgram::SurfaceProgram(Program linked, const ProgramVariant& variant) : 
         throw RuntimeError("program " + variant.name() + " has no uniform " + required +
                            ": the shaders and src/gl/program.cpp disagree on its name");
     at.clipFromObject = find("uClipFromObject");
+    at.cameraClipFromObject = find("uCameraClipFromObject");
     at.ndcRect = find("uNdcRect");
     at.viewport = find("uViewport");
     at.nearRect = find("uNearRect");

@@ -183,6 +183,7 @@ void Renderer::renderScene(const Scene& scene, int width, int height, int x) {
     // (lighting.glsl) draws that term alone, as its shading mode evaluates it.
     if (scene.term != LightingTerm::All)
         for (SceneObject& object : sized.objects) object.material = onlyTerm(object.material, scene.term);
+    if (ndcObserver_) sized.depth = DepthMode::Standard; // NDC is the cube [−1, 1]³ (setNdcObserver)
     const SceneView view = sceneView(sized);
 
     glViewport(x, 0, width, height);
@@ -201,6 +202,8 @@ void Renderer::renderScene(const Scene& scene, int width, int height, int x) {
     variant.flatGeometryShader = flatGeometryShader_ && scene.shading == ShadingMode::Flat &&
                                  scene.normalMatrix == NormalMatrixRule::InverseTranspose;
     variant.exactToon = exactToon_ && scene.shading == ShadingMode::Exact;
+    variant.ndcView = ndcObserver_.has_value();
+    if (variant.ndcView) variant.flatGeometryShader = false; // its gl_Position is the camera's
     std::vector<Light> lightsView;
     lightsView.reserve(scene.lights.size());
     for (const Light& light : scene.lights) lightsView.push_back(transformLight(light, view.viewFromWorld));
@@ -244,8 +247,16 @@ void Renderer::drawMeshes(const Scene& sized, const SceneView& view, const Progr
     for (const SceneObject& object : sized.objects) {
         const SurfaceLocations& at = objectProgram(object);
         const glm::dmat4 viewFromObject = view.viewFromWorld * worldFromObject(object);
-        setTransforms(at, view.clipFromView, viewFromObject, sized.normalMatrix);
-        cullBackFaces(object, viewFromObject, view.volume.near);
+        if (ndcObserver_) {
+            // Both faces: the observer may look at the inside of an object the near plane cuts open.
+            setTransforms(at, *ndcObserver_ * view.clipFromView, viewFromObject, sized.normalMatrix);
+            const glm::mat4 cameraClipFromObject(view.clipFromView * viewFromObject);
+            glUniformMatrix4fv(at.cameraClipFromObject, 1, GL_FALSE, glm::value_ptr(cameraClipFromObject));
+            glDisable(GL_CULL_FACE);
+        } else {
+            setTransforms(at, view.clipFromView, viewFromObject, sized.normalMatrix);
+            cullBackFaces(object, viewFromObject, view.volume.near);
+        }
         if (variant.flatGeometryShader)
             glUniform1f(at.handedness, glm::determinant(glm::dmat3(viewFromObject)) < 0 ? -1.0f : 1.0f);
         mesh(subdivisionLevel(sized, object), sized.vertexNormals, layout).draw();
@@ -313,7 +324,8 @@ void Renderer::drawOverlay(const Scene& sized, const SceneView& view) {
         if (!edges)
             edges = std::make_unique<GpuLines>(
                 overlayLines(buildSphere(level, sized.vertexNormals), sized.overlay));
-        const glm::mat4 clipFromObject(view.clipFromView * view.viewFromWorld * worldFromObject(object));
+        const glm::mat4 clipFromObject(ndcObserver_.value_or(glm::dmat4(1)) * view.clipFromView *
+                                       view.viewFromWorld * worldFromObject(object));
         glUniformMatrix4fv(lines.clipFromSpace, 1, GL_FALSE, glm::value_ptr(clipFromObject));
         edges->draw();
     }

@@ -115,6 +115,9 @@ void Views::draw(const Scene& scene, int width, int height, int x) {
     case ViewKind::Outside:
         drawOutside(scene, width, height, x);
         break;
+    case ViewKind::Ndc:
+        drawNdc(scene, width, height, x);
+        break;
     }
     glBindFramebuffer(GL_FRAMEBUFFER, GLuint(destination));
     glEnable(GL_DEPTH_TEST); // as renderScene leaves it
@@ -376,15 +379,28 @@ void Views::drawOutside(const Scene& scene, int width, int height, int x) {
     const OutsideDrawing drawing = outsideDrawing(sized);
     renderer_.drawWorld(observer, {}, drawing.faces, kFaceAlpha, width, height, x);
 
-    // The labels beside the points they name, where those are in the picture; the lines go over them, so
-    // that no label hides a corner of the view volume.
+    // The labels, then the lines over them, so that no label hides a corner of the view volume.
+    drawLabels(drawing.labels, observer, width, height, x);
+    const int scale = textScale(width, height);
+    const std::string title = leavesOutTheMinusOne(scene) ? "OUTSIDE VIEW, UNNEGATED MATRIX" : "OUTSIDE VIEW";
+    programs_->images.draw(labelImage({title, "DRAG: OBSERVER  WHEEL: ZOOM"}, scale), scale * 4, scale * 4, x,
+                           width, height);
+    renderer_.drawWorld(observer, drawing.lines, {}, kFaceAlpha, width, height, x);
+    glEnable(GL_DEPTH_TEST);
+}
+
+void Views::drawLabels(const std::vector<OutsideLabel>& labels, const Scene& observer, int width, int height,
+                       int x) {
     glDisable(GL_DEPTH_TEST);
     glViewport(x, 0, width, height);
     glBindVertexArray(programs_->images.emptyVertexArray().get());
     const int scale = textScale(width, height);
-    const SceneView view = sceneView(observer);
+    Scene sized = observer;
+    sized.width = width;
+    sized.height = height;
+    const SceneView view = sceneView(sized);
     const glm::dmat4 clipFromWorld = view.clipFromView * view.viewFromWorld;
-    for (const OutsideLabel& label : drawing.labels) {
+    for (const OutsideLabel& label : labels) {
         const glm::dvec4 clip = clipFromWorld * glm::dvec4(label.positionWorld, 1);
         if (!(clip.w > 0)) continue;
         const double px = (clip.x / clip.w + 1) / 2 * width, py = (1 - clip.y / clip.w) / 2 * height;
@@ -395,10 +411,36 @@ void Views::drawOutside(const Scene& scene, int width, int height, int x) {
                                std::clamp(int(py) - image.height / 2, 0, std::max(0, height - image.height)),
                                x, width, height);
     }
-    const std::string title = leavesOutTheMinusOne(scene) ? "OUTSIDE VIEW, UNNEGATED MATRIX" : "OUTSIDE VIEW";
-    programs_->images.draw(labelImage({title, "DRAG: OBSERVER  WHEEL: ZOOM"}, scale), scale * 4, scale * 4, x,
-                           width, height);
-    renderer_.drawWorld(observer, drawing.lines, {}, kFaceAlpha, width, height, x);
+}
+
+void Views::drawNdc(const Scene& scene, int width, int height, int x) {
+    figures_ = ViewFigures{};
+    Scene sized = scene;
+    sized.width = width;
+    sized.height = height;
+    const Scene observer = ndcObserverScene(sized);
+    const SceneView observerView = sceneView(observer);
+    Scene objects = sized;
+    objects.view = View{};
+    renderer_.setNdcObserver(observerView.clipFromView * observerView.viewFromWorld);
+    try {
+        renderer_.renderScene(objects, width, height, x);
+    } catch (...) {
+        renderer_.setNdcObserver(std::nullopt);
+        throw;
+    }
+    renderer_.setNdcObserver(std::nullopt);
+    const OutsideDrawing cube = ndcCubeDrawing();
+    renderer_.drawWorld(observer, {}, cube.faces, kFaceAlpha, width, height, x);
+    drawLabels(cube.labels, observer, width, height, x);
+    const int scale = textScale(width, height);
+    const std::string projection =
+        scene.projection.type == ProjectionType::Orthographic ? "M_ORTH" : "M_PROJ";
+    programs_->images.draw(
+        labelImage({"NDC VIEW: AFTER " + projection + " M_CAM AND THE DIVIDE", "DRAG: OBSERVER  WHEEL: ZOOM"},
+                   scale),
+        scale * 4, scale * 4, x, width, height);
+    renderer_.drawWorld(observer, cube.lines, {}, kFaceAlpha, width, height, x);
     glEnable(GL_DEPTH_TEST);
 }
 

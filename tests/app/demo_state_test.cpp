@@ -251,8 +251,8 @@ TEST(DemoKeys, EveryCommandHasExactlyOneBinding) {
 }
 
 TEST(DemoKeys, UnboundKeysGiveNoCommand) {
-    for (int key : {GLFW_KEY_Q, GLFW_KEY_Z, GLFW_KEY_D, GLFW_KEY_SPACE, GLFW_KEY_6, GLFW_KEY_F3,
-                    GLFW_KEY_ENTER, GLFW_KEY_UNKNOWN, 0})
+    for (int key : {GLFW_KEY_Z, GLFW_KEY_D, GLFW_KEY_SPACE, GLFW_KEY_6, GLFW_KEY_F3, GLFW_KEY_ENTER,
+                    GLFW_KEY_UNKNOWN, 0})
         EXPECT_FALSE(commandForKey(key).has_value()) << "key " << key;
 }
 
@@ -1199,6 +1199,30 @@ TEST(DemoOutsideView, YShowsItDragOrbitsTheObserverAndTheCameraStays) {
     EXPECT_EQ(state.current().view.kind, ViewKind::Scene);
     state.drag(40, 0);
     EXPECT_NE(state.current().eye, before.eye) << "back in the scene view, the drag orbits the camera";
+}
+
+// ---- Q: the NDC view ----
+
+TEST(DemoNdcView, QShowsItUnlessTheShadingIsExactWhichHasNoMesh) {
+    DemoState state{Scene{}};
+    ASSERT_EQ(commandForKey('Q'), Command::ToggleNdcView);
+    ASSERT_TRUE(state.apply(Command::ToggleNdcView));
+    EXPECT_EQ(state.current().view.kind, ViewKind::Ndc);
+    EXPECT_NO_THROW(validateScene(state.current()));
+    const Scene before = state.current();
+    state.drag(-20, 0);
+    EXPECT_EQ(state.current().eye, before.eye) << "the drag orbits the observer, not the camera";
+    EXPECT_EQ(state.current().view.observer.azimuthDeg, before.view.observer.azimuthDeg + 10);
+    // 5 (exact) leaves the NDC view: the pair would be refused (exact has no mesh to transform).
+    state.apply(Command::Exact);
+    EXPECT_EQ(state.current().view.kind, ViewKind::Scene);
+    EXPECT_NO_THROW(validateScene(state.current()));
+    ASSERT_TRUE(state.apply(Command::ToggleNdcView));
+    EXPECT_EQ(state.current().view.kind, ViewKind::Scene) << "Q under exact shading";
+    EXPECT_NE(state.lastChange().find("exact shading has none"), std::string::npos) << state.lastChange();
+    Scene refused = before;
+    refused.shading = ShadingMode::Exact;
+    EXPECT_THROW(validateScene(refused), InputError);
 }
 
 // ---- the view volume on the panel and the page ----

@@ -194,9 +194,6 @@ std::vector<Scene> modeScenes(int size, int level) {
     return scenes;
 }
 
-namespace {
-
-// DESIGN §2's matrices through GLM alone: near → NDC z = +1.
 glm::dmat4 webGlClipFromView(const Scene& scene) {
     const Projection& p = scene.projection;
     const glm::dmat4 flipZ = glm::scale(glm::dmat4(1), glm::dvec3(1, 1, -1));
@@ -207,8 +204,6 @@ glm::dmat4 webGlClipFromView(const Scene& scene) {
     return flipZ *
            glm::perspectiveRH_NO(glm::radians(p.fovyDeg), double(scene.width) / scene.height, p.near, p.far);
 }
-
-} // namespace
 
 std::vector<std::string> outsideCornerMisses(const Image& image, const Scene& scene) {
     const glm::dmat4 worldFromClip =

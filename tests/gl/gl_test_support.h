@@ -69,6 +69,11 @@ inline void PrintTo(const AnalyticCase& c, std::ostream* os) {
 const std::vector<AnalyticCase>& analyticCases();
 const AnalyticCase& analyticCase(std::string_view name); // one of them by name; throws std::logic_error
 
+// DESIGN §2's clip-from-view matrix of the scene's projection through GLM alone (frustumRH_NO,
+// perspectiveRH_NO or orthoRH_NO times diag(1, 1, −1, 1): near → NDC z = +1), for checks independent of
+// camera.cpp.
+glm::dmat4 webGlClipFromView(const Scene& scene);
+
 // The outside view of `scene` (view "outside", at the picture's size): checks that each corner of the view
 // volume, computed independently as inverse(M_proj·M_cam) of the NDC cube's corners (glm::lookAt and GLM's
 // frustum, perspective or ortho matrix times diag(1, 1, −1, 1), DESIGN §2) and projected by the observer's

@@ -600,6 +600,7 @@ TEST_F(Browser, ViewsAsInTheWindow) {
         {"pointer move", [&] { return session.move(0, -50); }},
         {"Y", [&] { return session.key('Y'); }},
         {"observer drag", [&] { return session.drag(30, 10, false); }},
+        {"Q", [&] { return session.key('Q'); }},
     };
     for (Step& step : steps) {
         if (step.act) step.done = step.act();
@@ -647,7 +648,12 @@ TEST_F(Browser, ViewsAsInTheWindow) {
     EXPECT_EQ(states[8].at("camera"), states[7].at("camera"))
         << "the drag orbited the camera, not the observer";
     EXPECT_NE(states[8].at("view_observer"), states[7].at("view_observer")) << "the drag left the observer";
-    EXPECT_NE(last.at("title").get<std::string>().find("| outside: observer at azimuth "), std::string::npos);
+    EXPECT_NE(
+        session.answer(steps[8].ui).at("ui").at("title").get<std::string>().find("| outside: observer at "),
+        std::string::npos);
+    EXPECT_EQ(states[9].at("view"), "ndc");
+    EXPECT_EQ(states[9].at("view_observer"), states[8].at("view_observer")) << "Q keeps the observer";
+    EXPECT_NE(last.at("title").get<std::string>().find("| ndc: observer at azimuth "), std::string::npos);
     const Image& volumeImage = session.image(volumeCapture);
     ASSERT_EQ(volumeImage.width, 256);
     std::string misses;

@@ -482,9 +482,9 @@ TEST_F(DemoWindow, OverlayLightDragAndProbeShowWhatRenderGives) {
 }
 
 // 5 (exact), E (error), V (split, and a drag of its divider), I (profile, and a pointer move choosing its
-// row) and Y (outside, and a drag orbiting its observer) each change the picture, say so in the title, and
-// the window shows what `render` draws for the JSON that S saves, the view included.
-TEST_F(DemoWindow, ExactErrorSplitProfileAndOutsideShowWhatRenderGives) {
+// row), Y (outside, and a drag orbiting its observer) and Q (NDC) each change the picture, say so in the
+// title, and the window shows what `render` draws for the JSON that S saves, the view included.
+TEST_F(DemoWindow, ExactErrorSplitProfileOutsideAndNdcShowWhatRenderGives) {
     const fs::path scene = writeScene("scene.json", sceneJson(kWidth, kHeight, 3, "gouraud", "phong"));
     DemoProcess& demo = startDemo("demo", {scene.string(), "--size", kSize, "--hide-panel", "--gl-debug"});
     demo.window().waitForTitle("shadelab — gouraud shading");
@@ -550,6 +550,10 @@ TEST_F(DemoWindow, ExactErrorSplitProfileAndOutsideShowWhatRenderGives) {
     const Scene orbited = step("outside-orbited", has("| outside: observer at azimuth 35 deg"));
     EXPECT_EQ(orbited.eye, outside.eye) << "the drag orbited the camera";
     EXPECT_EQ(orbited.view.observer.azimuthDeg, 35);
+    // Q: the NDC view, from the same observer.
+    demo.window().key("q");
+    const Scene ndc = step("ndc", has("| ndc: observer at azimuth 35 deg"));
+    EXPECT_EQ(ndc.view.kind, ViewKind::Ndc);
     expectCleanQuit(demo);
 }
 

@@ -44,6 +44,9 @@ struct ProgramVariant {
     bool viewerAtInfinity = false;            // an orthographic projection: v is the constant +z
     // Exact shading only: toon's quantized lighting on the exact sphere (the error view's answer for toon).
     bool exactToon = false;
+    // The NDC view (mesh shading modes): gl_Position is the observer's, and each fragment outside the
+    // camera's clip volume (|x|, |y|, |z| > w, or w <= 0) is discarded, as the clipper would remove it.
+    bool ndcView = false;
     // Specialization::Values only: the #define lines that compile one object's values in (withValues);
     // empty otherwise. Every float is written so that it reads back as the same float.
     std::string values;
@@ -93,6 +96,7 @@ struct LightLocations {
 };
 struct SurfaceLocations {
     int clipFromObject = -1, viewFromObject = -1, normalViewFromObject = -1, handedness = -1;
+    int cameraClipFromObject = -1; // the NDC view: the camera's M_proj·M_cam·M, for the clip-volume test
     // Exact shading only (shaders/exact.*.glsl): the proxy rectangle and what casting a pixel's ray needs.
     int ndcRect = -1, viewport = -1, nearRect = -1, nearFar = -1, objectFromView = -1, centerView = -1,
         clipFromView = -1, depthZeroToOne = -1, alpha = -1;

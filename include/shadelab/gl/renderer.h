@@ -5,6 +5,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <span>
 #include <tuple>
 
@@ -34,6 +35,11 @@ public:
     void setExactObjectIds(bool enabled) { exactObjectIds_ = enabled; }
     // Exact shading quantizes the lighting as toon shading does (the error view's exact answer for toon).
     void setExactToon(bool enabled) { exactToon_ = enabled; }
+    // The NDC view (gl/views.cpp): while set, renderScene draws the meshes (and their overlay) through the
+    // camera's M_proj·M_cam into its NDC space and on through `observerClipFromNdc`, every fragment outside
+    // the camera's clip volume discarded; the camera's standard-depth matrices are used whatever its depth
+    // mode, so NDC is the cube [−1, 1]³. Exact shading has no mesh to transform (the scene check refuses it).
+    void setNdcObserver(std::optional<glm::dmat4> observerClipFromNdc) { ndcObserver_ = observerClipFromNdc; }
 
     // Lines given in view space drawn over what render() drew into the same viewport, never hidden (the
     // demo's probe vectors).
@@ -89,6 +95,7 @@ private:
     std::unique_ptr<ImagePass> imagePass_; // drawImageOver's, made at its first use
     VertexArray emptyVertexArray_;         // exact shading's proxies have no attributes
     bool exactObjectIds_ = false, exactToon_ = false;
+    std::optional<glm::dmat4> ndcObserver_;
     std::unique_ptr<Views> views_;
 };
 

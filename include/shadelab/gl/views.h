@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "shadelab/gl/handles.h"
+#include "shadelab/outside_view.h"
 #include "shadelab/scene.h"
 
 namespace shadelab::gl {
@@ -48,6 +49,10 @@ private:
     void drawSplit(const Scene& scene, int width, int height, int x);
     void drawProfile(const Scene& scene, int width, int height, int x, unsigned destination);
     void drawOutside(const Scene& scene, int width, int height, int x);
+    void drawNdc(const Scene& scene, int width, int height, int x);
+    // Each label beside the point it names, where the observer's camera puts that point in the picture.
+    void drawLabels(const std::vector<OutsideLabel>& labels, const Scene& observer, int width, int height,
+                    int x);
     void renderModeAndExact(const Scene& scene, int width, int height);
 
     Renderer& renderer_;

@@ -51,8 +51,8 @@ void OrbitCamera::zoom(double wheelSteps) {
 }
 
 void DemoState::drag(double dxPixels, double dyPixels) {
-    if (holdingDivider_) return;                 // the drag moves the split's divider (pointer())
-    if (scene_.view.kind == ViewKind::Outside) { // the observer orbits; the camera keeps its own keys
+    if (holdingDivider_) return;      // the drag moves the split's divider (pointer())
+    if (observed(scene_.view.kind)) { // the observer orbits; the camera keeps its own keys
         Observer& o = scene_.view.observer;
         o.azimuthDeg = std::remainder(o.azimuthDeg - 0.5 * dxPixels, 360.0);
         o.elevationDeg =
@@ -64,7 +64,7 @@ void DemoState::drag(double dxPixels, double dyPixels) {
 }
 
 void DemoState::zoom(double wheelSteps) {
-    if (scene_.view.kind == ViewKind::Outside) {
+    if (observed(scene_.view.kind)) {
         Observer& o = scene_.view.observer;
         o.zoom = std::clamp(o.zoom * std::pow(0.9, wheelSteps), kMinObserverZoom, kMaxObserverZoom);
         return;

@@ -22,9 +22,10 @@ std::string viewReport(const Scene& scene, const gl::ViewFigures& figures) {
         return "profile: row " + std::to_string(figures.row) + ", " +
                std::to_string(figures.edgeColumns.size()) + " edge crossings";
     case ViewKind::Outside:
-        std::snprintf(
-            text, sizeof text, "outside: observer at azimuth %.0f deg, elevation %.0f deg, zoom %.2f",
-            scene.view.observer.azimuthDeg, scene.view.observer.elevationDeg, scene.view.observer.zoom);
+    case ViewKind::Ndc:
+        std::snprintf(text, sizeof text, "%s: observer at azimuth %.0f deg, elevation %.0f deg, zoom %.2f",
+                      toString(scene.view).c_str(), scene.view.observer.azimuthDeg,
+                      scene.view.observer.elevationDeg, scene.view.observer.zoom);
         return text;
     }
     return "";
@@ -35,9 +36,9 @@ void drawDemo(gl::Renderer& renderer, DemoState& state, int width, int height, i
     renderer.render(scene, width, height, x);
     state.viewReport = viewReport(scene, renderer.viewFigures());
     const auto probe = state.probe();
-    // The probe's vectors are in the camera's view; the outside view draws the observer's.
-    if (probe && !probeFacesAway(*probe) &&
-        scene.view.kind != ViewKind::Outside) { // behind the object, the probe's table says so instead
+    // Behind the object the probe's table says so instead; and the vectors are in the camera's view, which
+    // the outside and NDC views do not draw.
+    if (probe && !probeFacesAway(*probe) && !observed(scene.view.kind)) {
         // The vectors are as long as 0.6 of the object's largest semi-axis: visible, and inside the picture.
         const SceneObject& object = scene.objects[probe->point.object];
         const double length =

@@ -93,6 +93,8 @@ void DemoState::setShading(ShadingMode mode) {
         if (view.left == view.right) view.right.shading = previous;
     }
     scene_.shading = mode;
+    // The NDC view transforms the mesh; exact shading has none (the scene check refuses the pair).
+    if (mode == ShadingMode::Exact && view.kind == ViewKind::Ndc) view.kind = ViewKind::Scene;
 }
 
 void DemoState::pointer(double x, double y, bool leftHeld) {
@@ -130,10 +132,16 @@ bool DemoState::apply(Command command) {
         break;
     case Command::ToggleErrorView:
     case Command::ToggleProfileView:
-    case Command::ToggleOutsideView: {
+    case Command::ToggleOutsideView:
+    case Command::ToggleNdcView: {
         const ViewKind kind = command == Command::ToggleErrorView     ? ViewKind::Error
                               : command == Command::ToggleProfileView ? ViewKind::Profile
-                                                                      : ViewKind::Outside;
+                              : command == Command::ToggleOutsideView ? ViewKind::Outside
+                                                                      : ViewKind::Ndc;
+        if (kind == ViewKind::Ndc && scene_.view.kind != kind && scene_.shading == ShadingMode::Exact) {
+            lastChange_ = "the NDC view transforms the mesh; exact shading has none: press 1-4 first";
+            return true;
+        }
         const bool on = scene_.view.kind != kind;
         const Observer observer = scene_.view.observer; // where it was left
         scene_.view = View{};
@@ -258,6 +266,7 @@ std::string DemoState::describeChange(Command command) const {
     case Command::ToggleSplitView:
     case Command::ToggleProfileView:
     case Command::ToggleOutsideView:
+    case Command::ToggleNdcView:
         return scene.view.kind == ViewKind::Scene ? "view: scene" : "view: " + toString(scene.view);
     case Command::ToggleLighting:
         return std::string(toString(scene.lighting)) + " lighting";
@@ -335,7 +344,7 @@ void DemoState::dragLight(double dxPixels, double dyPixels) {
 
 bool DemoState::probeAt(double x, double y) {
     const Scene shown = drawn();
-    if (shown.view.kind == ViewKind::Outside) return false; // the picture is the observer's, not the camera's
+    if (observed(shown.view.kind)) return false; // the picture is the observer's, not the camera's
     probePoint_ = pickSurfacePoint(shown, x, y);
     if (!probePoint_) {
         lastChange_ = "probe off";

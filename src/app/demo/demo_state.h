@@ -37,6 +37,7 @@ enum class Command {
     ToggleSplitView,
     ToggleProfileView,
     ToggleOutsideView,
+    ToggleNdcView,
     ToggleLighting,
     NextTerm,
     ToggleNormalMatrix,
