@@ -43,8 +43,8 @@ std::vector<glm::dvec3> framedPoints(const Scene& scene) {
     const double depth = std::max(objectsReach(scene, frame), glm::length(scene.eye - scene.target));
     const double shown = far <= 2 * depth ? far : std::clamp(1.2 * depth, near, far);
     std::vector<glm::dvec3> points{scene.eye};
-    for (int i = 0; i < 4; ++i) {
-        const glm::dvec3 nearCorner = corners[std::size_t(i + 4)], farCorner = corners[std::size_t(i)];
+    for (std::size_t i = 0; i < 4; ++i) {
+        const glm::dvec3 nearCorner = corners[i + 4], farCorner = corners[i];
         // Along the edge from near to far, linear in view depth for both projections.
         const glm::dvec3 deep = nearCorner + (farCorner - nearCorner) * ((shown - near) / (far - near));
         points.insert(points.end(), {nearCorner, deep});
