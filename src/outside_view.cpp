@@ -252,6 +252,13 @@ OutsideDrawing ndcCubeDrawing() {
     return drawing;
 }
 
+std::vector<LineVertex> lightMarkers(const Scene& scene) {
+    OutsideDrawing drawing;
+    for (const Light& light : scene.lights)
+        addLightMarker(drawing, light, scene, 0.08 * glm::length(scene.eye - scene.target));
+    return drawing.lines;
+}
+
 OutsideDrawing outsideDrawing(const Scene& scene) {
     OutsideDrawing drawing;
     const CameraFrame frame = cameraFrame(scene.eye, scene.target, scene.up);

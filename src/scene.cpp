@@ -40,6 +40,8 @@ std::string_view toString(Overlay overlay) {
         return "wireframe";
     case Overlay::Normals:
         return "normals";
+    case Overlay::Lights:
+        return "lights";
     }
     return "unknown";
 }

@@ -377,7 +377,13 @@ void validateSceneValues(const Scene& scene) {
     for (std::size_t i = 0; i < scene.lights.size(); ++i) checkLight(scene.lights[i], indexPath("lights", i));
     if (scene.view.at) checkViewAt(*scene.view.at);
     checkObserver(scene.view.observer);
-    if (scene.view.kind == ViewKind::Ndc && scene.shading == ShadingMode::Exact)
+    // The NDC view transforms the mesh; exact shading has none (also as a split's side).
+    auto exactNdc = [&](const SplitSide& side) {
+        return side.view == ViewKind::Ndc && side.shading.value_or(scene.shading) == ShadingMode::Exact;
+    };
+    const View& view = scene.view;
+    if ((view.kind == ViewKind::Ndc && scene.shading == ShadingMode::Exact) ||
+        (view.kind == ViewKind::Split && (exactNdc(view.left) || exactNdc(view.right))))
         fail("view",
              "ndc draws the mesh through M_proj·M_cam, and exact shading ray-casts the sphere without "
              "one; choose flat, gouraud, phong or toon shading for the NDC view");

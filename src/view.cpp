@@ -44,6 +44,8 @@ std::optional<Token> splitToken(std::string_view text, std::string& error) {
 } // namespace
 
 std::string toString(const SplitSide& side) {
+    if (side.view) return *side.view == ViewKind::Ndc ? "ndc" : "outside";
+    if (!side.shading && !side.lighting && !side.level) return "scene";
     std::string text;
     if (side.shading) text += toString(*side.shading);
     if (side.lighting) text += (side.shading ? "/" : "") + std::string(toString(*side.lighting));
@@ -101,6 +103,13 @@ ViewParse parseView(std::string_view text) {
     const bool lightingSplit = onlyLighting(*a) || onlyLighting(*b);
     View view = viewOf(ViewKind::Split);
     for (auto [token, side] : {std::pair{&*a, &view.left}, std::pair{&*b, &view.right}}) {
+        // A whole view for a side: the scene as it is, or the outside or NDC view of it.
+        if (token->second.empty() && !token->level &&
+            (token->first == "scene" || token->first == "outside" || token->first == "ndc")) {
+            if (token->first != "scene")
+                side->view = token->first == "outside" ? ViewKind::Outside : ViewKind::Ndc;
+            continue;
+        }
         side->level = token->level;
         if (token->first.empty() && token->second.empty()) {
             if (!token->level) return {std::nullopt, "a split side is empty; " + std::string(kExpected)};
@@ -111,7 +120,8 @@ ViewParse parseView(std::string_view text) {
             side->shading = parseShadingMode(token->first);
             if (!side->shading)
                 return {std::nullopt, "unknown shading \"" + std::string(token->first) +
-                                          "\" in a split side; expected flat, gouraud, phong, toon or exact"};
+                                          "\" in a split side; expected flat, gouraud, phong, toon or exact "
+                                          "(or scene, outside or ndc alone)"};
         }
         if (loneLighting || !token->second.empty()) {
             const std::string_view lighting = loneLighting ? token->first : token->second;

@@ -349,7 +349,7 @@ const std::vector<ErrorCase> kErrorCases = {
      {"scene.json: view_observer: must be an array of 3 numbers"}},
     {"OverlayUnknown",
      R"({"overlay": "wires"})",
-     {"scene.json: overlay: unknown value \"wires\"; expected one of none, wireframe, normals"}},
+     {"scene.json: overlay: unknown value \"wires\"; expected one of none, wireframe, normals, lights"}},
     {"UnknownImageKey",
      R"({"image": {"depth": 8}})",
      {"image.depth: unknown key; expected one of width, height"}},

@@ -42,12 +42,21 @@ TEST(ViewSpelling, TheIssuesExamplesReadAsMeant) {
     EXPECT_EQ(both.left, (SplitSide{ShadingMode::Phong, LightingModel::Phong, 5}));
     EXPECT_EQ(both.right, (SplitSide{ShadingMode::Exact, LightingModel::BlinnPhong, std::nullopt}));
     EXPECT_EQ(parsed("split:@3,@7").left.level, 3);
+
+    // The camera's picture beside the outside or NDC view of the scene.
+    const View outside = parsed("split:scene,outside");
+    EXPECT_EQ(outside.left, SplitSide{});
+    EXPECT_EQ(outside.right.view, ViewKind::Outside);
+    EXPECT_EQ(parsed("split:gouraud,ndc").right.view, ViewKind::Ndc);
+    EXPECT_EQ(parsed("outside").kind, ViewKind::Outside);
+    EXPECT_EQ(parsed("ndc").kind, ViewKind::Ndc);
 }
 
 TEST(ViewSpelling, EveryParsedViewWritesBackToItself) {
     for (const char* text : {"scene", "error", "profile", "split:gouraud,phong", "split:phong@4,phong@6",
                              "split:phong,blinn-phong", "split:gouraud,blinn-phong",
-                             "split:flat/phong@2,exact", "split:@3,@7", "split:toon,exact"}) {
+                             "split:flat/phong@2,exact", "split:@3,@7", "split:toon,exact", "outside", "ndc",
+                             "split:scene,outside", "split:phong,ndc", "split:outside,ndc"}) {
         const View view = parsed(text);
         EXPECT_EQ(toString(view), text);
         EXPECT_EQ(parsed(toString(view)), view) << text;
@@ -67,7 +76,9 @@ TEST(ViewSpelling, RefusalsSayWhatIsWrongAndWhatIsExpected) {
           Case{"split:phong/blin,phong", "unknown lighting \"blin\""}, Case{"split:phong@11,phong", "0..10"},
           Case{"split:phong@x,phong", "0..10"}, Case{"split:phong@-1,phong", "0..10"},
           Case{"split:,phong", "a split side is empty"},
-          Case{"split:phong,phong", "both sides of the split are the same"}}) {
+          Case{"split:phong,phong", "both sides of the split are the same"},
+          Case{"split:outside,outside", "both sides of the split are the same"},
+          Case{"split:outside@3,phong", "unknown shading \"outside\""}}) {
         const ViewParse p = parseView(c.text);
         EXPECT_FALSE(p.view) << c.text;
         EXPECT_NE(p.error.find(c.says), std::string::npos) << c.text << ": " << p.error;
@@ -97,7 +108,7 @@ TEST(ViewScene, BadValuesNameTheKey) {
     EXPECT_EQ(
         message(R"({"view": "split:x,phong"})"),
         "s.json: view: \"split:x,phong\": unknown shading \"x\" in a split side; expected flat, gouraud, "
-        "phong, toon or exact");
+        "phong, toon or exact (or scene, outside or ndc alone)");
     EXPECT_EQ(message(R"({"view": 3})").find("s.json: view: "), 0u);
     EXPECT_EQ(message(R"({"view_at": 1.5})"),
               "s.json: view_at: must be between 0 and 1 (a fraction of the picture), got 1.5");

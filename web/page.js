@@ -473,7 +473,7 @@ function wireControls() {
     if (e.target.value !== shown) press(keyOf[e.target.value === 'scene' ? shown : e.target.value]);
     refresh();
   });
-  $('overlay').addEventListener('change', (e) => pressUntil(87, (u) => u.overlay === e.target.value, 2));
+  $('overlay').addEventListener('change', (e) => pressUntil(87, (u) => u.overlay === e.target.value, 3));
   $('projection').addEventListener('change',
       (e) => pressUntil(79, (u) => u.orthographic === (e.target.value === 'orthographic'), 1));
   $('normals').addEventListener('change',

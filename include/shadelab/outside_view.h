@@ -54,6 +54,9 @@ Scene ndcObserverScene(const Scene& scene);
 OutsideDrawing ndcCubeDrawing();
 inline constexpr glm::vec3 kCubeEdgeColor{0.8f, 0.8f, 0.8f};
 
+// The lights' markers alone, as the outside view draws them (the overlay "lights" in the camera's picture).
+std::vector<LineVertex> lightMarkers(const Scene& scene);
+
 // Colours of the drawing, linear RGB.
 inline constexpr glm::vec3 kVolumeEdgeColor{1.0f, 0.85f, 0.2f};
 inline constexpr glm::vec3 kClippedVolumeColor{1.0f, 0.25f, 0.2f}; // unnegated: w < 0 in the volume

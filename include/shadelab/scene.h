@@ -31,8 +31,10 @@ std::string_view toString(ProjectionType type); // "perspective" | "frustum" | "
 // "overlay": lines drawn over the shaded surface for teaching (the demo's W key): none; wireframe (the mesh's
 // edges); normals (the edges, each face normal from its centroid and each vertex normal of the scene's
 // kind). The analytic reference ignores it: it shows the mesh, not the sphere.
-enum class Overlay { None, Wireframe, Normals };
-std::string_view toString(Overlay overlay); // "none" | "wireframe" | "normals"
+// lights: each light where it is (outside_view.h's markers: a point light a small wire sphere, a
+// directional light arrows along its direction, a spot light its cone), in the camera's picture.
+enum class Overlay { None, Wireframe, Normals, Lights };
+std::string_view toString(Overlay overlay); // "none" | "wireframe" | "normals" | "lights"
 std::optional<Overlay> parseOverlay(std::string_view text);
 
 // The vocabularies of this header (vocabulary.h): every spelling each accepts, in order.
@@ -41,7 +43,8 @@ inline constexpr std::array kProjectionTypes = {ProjectionType::Perspective, Pro
 inline constexpr std::array kVertexNormals = {VertexNormals::Averaged, VertexNormals::Exact};
 inline constexpr std::array kDepthModes = {DepthMode::Standard, DepthMode::Reversed,
                                            DepthMode::ReversedInfinite};
-inline constexpr std::array kOverlays = {Overlay::None, Overlay::Wireframe, Overlay::Normals};
+inline constexpr std::array kOverlays = {Overlay::None, Overlay::Wireframe, Overlay::Normals,
+                                         Overlay::Lights};
 
 struct Projection {
     ProjectionType type = ProjectionType::Perspective;

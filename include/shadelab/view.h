@@ -42,6 +42,9 @@ struct SplitSide {
     std::optional<ShadingMode> shading;
     std::optional<LightingModel> lighting;
     std::optional<int> level; // subdivisions of every object, 0..kMaxSubdivisions
+    // "outside" or "ndc": that view of the scene (from the scene's view_observer) instead of its picture,
+    // so the camera's picture can stand beside it ("split:scene,outside").
+    std::optional<ViewKind> view;
     bool operator==(const SplitSide&) const = default;
 };
 

@@ -54,8 +54,8 @@ struct Window::State {
     // Where the pointer was at the last event handled, in window coordinates: from the cursor callback,
     // in event order. glfwGetCursorPos asks the X server where the pointer is now, which under load is
     // already further along a fast drag than the press being handled (a press on the split's divider then
-    // missed it: window.DemoWindow.ExactErrorSplitProfileOutsideAndNdcShowWhatRenderGives failed once in CI). It
-    // is asked only when no motion has been seen since the pointer entered.
+    // missed it: window.DemoWindow.ExactErrorSplitProfileOutsideAndNdcShowWhatRenderGives failed once in CI).
+    // It is asked only when no motion has been seen since the pointer entered.
     double lastX = 0, lastY = 0;
     bool cursorKnown = false;
     double pressX = 0, pressY = 0, travelled = 0; // the left button's press, and how far it moved since

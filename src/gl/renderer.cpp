@@ -11,6 +11,7 @@
 
 #include "shadelab/errors.h"
 #include "shadelab/gl/loader.h"
+#include "shadelab/outside_view.h"
 #include "shadelab/ray_cast.h"
 #include "shadelab/subdivision.h"
 
@@ -235,7 +236,9 @@ void Renderer::renderScene(const Scene& scene, int width, int height, int x) {
     }
     glUseProgram(0);
     glDisable(GL_CULL_FACE);
-    if (scene.overlay != Overlay::None) drawOverlay(sized, view);
+    if (scene.overlay == Overlay::Wireframe || scene.overlay == Overlay::Normals) drawOverlay(sized, view);
+    if (scene.overlay == Overlay::Lights && !ndcObserver_)
+        drawWorld(sized, lightMarkers(sized), {}, 1, width, height, x);
     checkGlError("rendering the scene");
 }
 

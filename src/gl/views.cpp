@@ -248,12 +248,17 @@ Scene splitSideScene(const Scene& scene, const SplitSide& side) {
     if (side.lighting) out.lighting = *side.lighting;
     if (side.level)
         for (SceneObject& o : out.objects) o.subdivisions = *side.level;
+    if (side.view) {
+        out.view.kind = *side.view;
+        out.view.observer = scene.view.observer;
+    }
     // The exact side is the truth, as the error view's exact: beside a picture with normals by M it shows
     // what the right matrix draws.
     return side.shading == ShadingMode::Exact ? withTrueNormals(out) : out;
 }
 
 std::string sideLabel(const Scene& scene, const SplitSide& side) {
+    if (side.view) return upperAscii(toString(side));
     const Scene s = splitSideScene(scene, side);
     std::string label = upperAscii(toString(s.shading));
     if (s.shading != ShadingMode::Exact && !s.objects.empty())
@@ -268,10 +273,10 @@ void Views::drawSplit(const Scene& scene, int width, int height, int x) {
     // Each side clears and draws only its own pixels: the left side is a plain render of A there.
     glEnable(GL_SCISSOR_TEST);
     glScissor(x, 0, divider, height);
-    renderer_.renderScene(splitSideScene(scene, scene.view.left), width, height, x);
+    renderer_.render(splitSideScene(scene, scene.view.left), width, height, x); // a side may be a view
     glEnable(GL_SCISSOR_TEST);
     glScissor(x + divider, 0, width - divider, height);
-    renderer_.renderScene(splitSideScene(scene, scene.view.right), width, height, x);
+    renderer_.render(splitSideScene(scene, scene.view.right), width, height, x);
     // The divider: two pixels of white straddling it.
     glEnable(GL_SCISSOR_TEST);
     glScissor(x + divider - 1, 0, 2, height);

@@ -1045,11 +1045,11 @@ namespace shadelab::app {
 namespace {
 
 // Issue 15, teaching instruments: W cycles the overlay through the scene (so S saves it and `render`
-// draws it): none, wireframe, wireframe with face and vertex normals, none.
+// draws it): none, wireframe, wireframe with face and vertex normals, the lights' markers, none.
 TEST(DemoOverlay, WCyclesWireframeNormalsNoneAndTheSceneCarriesIt) {
     DemoState state{Scene{}};
     EXPECT_EQ(commandForKey('W'), Command::ToggleOverlay);
-    const Overlay expected[] = {Overlay::Wireframe, Overlay::Normals, Overlay::None};
+    const Overlay expected[] = {Overlay::Wireframe, Overlay::Normals, Overlay::Lights, Overlay::None};
     for (Overlay overlay : expected) {
         EXPECT_TRUE(state.apply(Command::ToggleOverlay));
         EXPECT_EQ(state.drawn().overlay, overlay);

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <vector>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "gl/gl_test_support.h"
 #include "gl/projected_mesh.h"
 #include "shadelab/probe.h"
@@ -68,6 +70,41 @@ TEST(Overlay, WireframeDrawsTheFrontEdgesOnTheObjectOnly) {
     for (std::size_t i = 0; i < plain.rgba.size(); i += 4)
         edgeColoured += wire.rgba[i] == 217 && wire.rgba[i + 1] == 217 && wire.rgba[i + 2] == 217;
     EXPECT_GT(edgeColoured, c.inside / 2);
+}
+
+// The lights' markers in the camera's picture: a point light in view is drawn as its wire sphere in its
+// colour around where the camera projects it, and nothing else of the picture changes.
+TEST(Overlay, LightsDrawAPointLightWhereTheCameraSeesIt) {
+    SHADELAB_REQUIRE_GL(renderer);
+    Scene scene;
+    scene.width = scene.height = 200;
+    Light light = Scene::defaultLight();
+    light.position = {0.5, 0.45, 2.0}; // in view, in front of the sphere
+    light.diffuse = {1, 1, 0.5};
+    scene.lights = {light};
+    const Image plain = renderer->render(scene);
+    scene.overlay = Overlay::Lights;
+    const Image marked = renderer->render(scene);
+    // The marker's radius is 0.08 of the eye's distance to the target (outside_view.cpp): 0.32.
+    const glm::dvec4 clip = webGlClipFromView(scene) * glm::lookAt(scene.eye, scene.target, scene.up) *
+                            glm::dvec4(light.position, 1);
+    const glm::dvec2 centre((clip.x / clip.w + 1) / 2 * scene.width,
+                            (1 - clip.y / clip.w) / 2 * scene.height);
+    const double radiusPx =
+        0.32 / (-(glm::lookAt(scene.eye, scene.target, scene.up) * glm::dvec4(light.position, 1)).z) /
+        std::tan(glm::radians(20.0)) * scene.height / 2;
+    std::size_t marker = 0, changedFar = 0;
+    for (int y = 0; y < scene.height; ++y)
+        for (int x = 0; x < scene.width; ++x) {
+            const std::uint8_t* m = marked.pixel(x, y);
+            const bool changed = !std::equal(m, m + 4, plain.pixel(x, y));
+            const double distance = glm::length(glm::dvec2(x + 0.5, y + 0.5) - centre);
+            if (changed && distance > radiusPx * 1.2 + 1.5) ++changedFar;
+            marker += m[0] == 255 && m[1] == 255 && m[2] == 128 && distance <= radiusPx * 1.2 + 1.5;
+        }
+    EXPECT_GT(marker, 40u) << "the wire sphere around (" << centre.x << ", " << centre.y << "), radius "
+                           << radiusPx << " px";
+    EXPECT_EQ(changedFar, 0u) << "pixels changed away from the marker";
 }
 
 TEST(Overlay, NormalsStickOutOfTheSilhouette) {

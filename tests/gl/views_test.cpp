@@ -101,8 +101,8 @@ TEST(ErrorView, HeatmapKeepsTheBackgroundAndColoursTheObject) {
 // and the labels' row).
 TEST(SplitView, EachHalfIsAPlainRenderOfItsSide) {
     SHADELAB_REQUIRE_GL(renderer);
-    for (const char* text :
-         {"split:gouraud,phong", "split:phong@2,phong@6", "split:phong,blinn-phong", "split:flat,exact"}) {
+    for (const char* text : {"split:gouraud,phong", "split:phong@2,phong@6", "split:phong,blinn-phong",
+                             "split:flat,exact", "split:scene,outside", "split:gouraud,ndc"}) {
         for (double at : {0.5, 0.3}) {
             Scene scene = sphereAt(ShadingMode::Phong, 4);
             scene.view = viewOf(text);

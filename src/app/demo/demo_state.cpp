@@ -205,6 +205,7 @@ bool DemoState::apply(Command command) {
     case Command::ToggleOverlay:
         scene_.overlay = scene_.overlay == Overlay::None        ? Overlay::Wireframe
                          : scene_.overlay == Overlay::Wireframe ? Overlay::Normals
+                         : scene_.overlay == Overlay::Normals   ? Overlay::Lights
                                                                 : Overlay::None;
         break;
     case Command::NextMaterial:
@@ -295,10 +296,11 @@ std::string DemoState::describeChange(Command command) const {
         return scene.vertexNormals == VertexNormals::Exact ? "exact vertex normals"
                                                            : "averaged vertex normals";
     case Command::ToggleOverlay:
-        return scene.overlay == Overlay::None ? "overlay off"
-               : scene.overlay == Overlay::Wireframe
-                   ? "overlay: wireframe"
-                   : "overlay: wireframe, face normals (amber), vertex normals (cyan)";
+        return scene.overlay == Overlay::None        ? "overlay off"
+               : scene.overlay == Overlay::Wireframe ? "overlay: wireframe"
+               : scene.overlay == Overlay::Normals
+                   ? "overlay: wireframe, face normals (amber), vertex normals (cyan)"
+                   : "overlay: the lights (point: sphere, directional: arrows, spot: cone)";
     case Command::NextMaterial:
         return "material: " + materialName();
     case Command::NextLights:

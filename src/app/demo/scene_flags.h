@@ -19,7 +19,7 @@ struct SceneOverrides {
     std::optional<std::string> subdivisions;      // a level or "auto"
     std::optional<std::string> tolerancePx;       // a decimal number, parsed by composeScene
     std::optional<std::string> depth;             // standard | reversed | reversed-infinite
-    std::optional<std::string> overlay;           // none | wireframe | normals
+    std::optional<std::string> overlay;           // none | wireframe | normals | lights
     std::optional<std::string> view;              // scene | error | profile | split:A,B (view.h)
 };
 

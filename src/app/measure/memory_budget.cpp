@@ -37,7 +37,8 @@ double renderBytes(const Scene& scene) {
         // The overlay's lines (overlay.h: two 24-byte vertices a segment), on the CPU and in their buffer:
         // every edge (1.5 per triangle), and with normals one segment per face and per vertex.
         double segments = 0;
-        if (scene.overlay != Overlay::None) segments += 1.5 * triangles;
+        if (scene.overlay == Overlay::Wireframe || scene.overlay == Overlay::Normals)
+            segments += 1.5 * triangles;
         if (scene.overlay == Overlay::Normals) segments += triangles + vertices;
         bytes += segments * 2 * 24 * 2;
     }
