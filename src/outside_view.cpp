@@ -189,20 +189,15 @@ Scene observerScene(const Scene& scene) {
     observer.view = View{};
     observer.perspectiveMatrix = PerspectiveMatrix::WebGl;
     observer.depth = DepthMode::Standard;
-    // Depth from just short of the framed sphere, or of the eye when zoomed into it, to past the real far
-    // plane's corners (drawn even when not framed).
+    // Depth from just short of the framed sphere (or a thousandth of the distance, zoomed into it) to the
+    // real far plane's corners, which are drawn even when not framed, but at most a million near distances:
+    // a far plane at 1e6 must not push the near plane past the objects.
     double deepest = distance + radius;
     for (const glm::dvec3& corner : viewVolumeCornersWorld(scene))
         deepest = std::max(deepest, glm::dot(centre - corner, direction) + distance);
-    const double far = 1.05 * deepest;
-    observer.projection = {ProjectionType::Perspective,
-                           kObserverFovyDeg,
-                           -1,
-                           1,
-                           -1,
-                           1,
-                           std::max(distance - 1.05 * radius, far * 1e-4),
-                           far};
+    const double near = std::max(distance - 1.05 * radius, distance * 1e-3);
+    observer.projection = {ProjectionType::Perspective,         kObserverFovyDeg, -1, 1, -1, 1, near,
+                           std::min(1.05 * deepest, 1e6 * near)};
     return observer;
 }
 

@@ -1,8 +1,12 @@
 // The "view" scene value (view.h): its spellings, how a split side reads, round trips through the scene
 // JSON, and the messages for what it refuses.
+#include <cmath>
+#include <vector>
+
 #include <gtest/gtest.h>
 
 #include "shadelab/errors.h"
+#include "shadelab/outside_view.h"
 #include "shadelab/scene.h"
 #include "shadelab/view.h"
 
@@ -115,6 +119,49 @@ TEST(ViewScene, BadValuesNameTheKey) {
     Scene scene;
     scene.view.at = -0.1;
     EXPECT_THROW(validateScene(scene), InputError);
+}
+
+// The outside view's observer (outside_view.h) sees the eye and every object inside its clip volume,
+// whatever the far plane and wherever it is orbited, and the NDC view's observer sees the whole cube.
+TEST(ObserverFraming, TheEyeAndTheObjectsAreInsideTheObserversVolume) {
+    for (double far : {7.0, 20.0, 1e6}) {
+        for (const Observer& observer : {Observer{}, Observer{-150, -80, 1}, Observer{90, 0, 0.5}}) {
+            Scene scene;
+            scene.width = 320;
+            scene.height = 200;
+            scene.projection.far = far;
+            scene.objects = {SceneObject{}, SceneObject{}};
+            scene.objects[1].center = {2, -1, -3};
+            scene.view.kind = ViewKind::Outside;
+            scene.view.observer = observer;
+            const Scene seen = observerScene(scene);
+            EXPECT_NO_THROW(validateScene(seen));
+            const SceneView view = sceneView(seen);
+            std::vector<glm::dvec3> points{scene.eye};
+            for (const SceneObject& o : scene.objects) points.push_back(o.center);
+            for (const glm::dvec3& p : points) {
+                const glm::dvec4 clip = view.clipFromView * view.viewFromWorld * glm::dvec4(p, 1);
+                const bool inside = clip.w > 0 && std::abs(clip.x) <= clip.w && std::abs(clip.y) <= clip.w &&
+                                    std::abs(clip.z) <= clip.w;
+                // Zoomed in to half, the observer may stand among the points; at zoom 1 it sees them all.
+                if (observer.zoom >= 1)
+                    EXPECT_TRUE(inside)
+                        << "far " << far << ", azimuth " << observer.azimuthDeg << ": (" << p.x << ", " << p.y
+                        << ", " << p.z << ") outside the observer's view";
+            }
+        }
+    }
+    Scene scene;
+    scene.view.kind = ViewKind::Ndc;
+    const Scene cube = ndcObserverScene(scene);
+    const SceneView view = sceneView(cube);
+    for (int i = 0; i < 8; ++i) {
+        const glm::dvec4 clip = view.clipFromView * view.viewFromWorld *
+                                glm::dvec4(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1, 1);
+        EXPECT_TRUE(clip.w > 0 && std::abs(clip.x) < clip.w && std::abs(clip.y) < clip.w &&
+                    std::abs(clip.z) < clip.w)
+            << "cube corner " << i;
+    }
 }
 
 } // namespace
