@@ -26,25 +26,27 @@ TEST(ViewSpelling, TheIssuesExamplesReadAsMeant) {
 
     const View modes = parsed("split:gouraud,phong");
     EXPECT_EQ(modes.kind, ViewKind::Split);
-    EXPECT_EQ(modes.left, (SplitSide{ShadingMode::Gouraud, std::nullopt, std::nullopt}));
-    EXPECT_EQ(modes.right, (SplitSide{ShadingMode::Phong, std::nullopt, std::nullopt}));
+    EXPECT_EQ(modes.left, (SplitSide{ShadingMode::Gouraud, std::nullopt, std::nullopt, std::nullopt}));
+    EXPECT_EQ(modes.right, (SplitSide{ShadingMode::Phong, std::nullopt, std::nullopt, std::nullopt}));
 
     const View levels = parsed("split:phong@4,phong@6");
-    EXPECT_EQ(levels.left, (SplitSide{ShadingMode::Phong, std::nullopt, 4}));
-    EXPECT_EQ(levels.right, (SplitSide{ShadingMode::Phong, std::nullopt, 6}));
+    EXPECT_EQ(levels.left, (SplitSide{ShadingMode::Phong, std::nullopt, 4, std::nullopt}));
+    EXPECT_EQ(levels.right, (SplitSide{ShadingMode::Phong, std::nullopt, 6, std::nullopt}));
 
     // "phong" beside "blinn-phong" is the lighting model: the split compares the two lighting models.
     const View lighting = parsed("split:phong,blinn-phong");
-    EXPECT_EQ(lighting.left, (SplitSide{std::nullopt, LightingModel::Phong, std::nullopt}));
-    EXPECT_EQ(lighting.right, (SplitSide{std::nullopt, LightingModel::BlinnPhong, std::nullopt}));
+    EXPECT_EQ(lighting.left, (SplitSide{std::nullopt, LightingModel::Phong, std::nullopt, std::nullopt}));
+    EXPECT_EQ(lighting.right,
+              (SplitSide{std::nullopt, LightingModel::BlinnPhong, std::nullopt, std::nullopt}));
 
     // ... but a name that is only a shading mode stays one, and shading/lighting names both.
     const View mixed = parsed("split:gouraud,blinn-phong");
-    EXPECT_EQ(mixed.left, (SplitSide{ShadingMode::Gouraud, std::nullopt, std::nullopt}));
-    EXPECT_EQ(mixed.right, (SplitSide{std::nullopt, LightingModel::BlinnPhong, std::nullopt}));
+    EXPECT_EQ(mixed.left, (SplitSide{ShadingMode::Gouraud, std::nullopt, std::nullopt, std::nullopt}));
+    EXPECT_EQ(mixed.right, (SplitSide{std::nullopt, LightingModel::BlinnPhong, std::nullopt, std::nullopt}));
     const View both = parsed("split:phong/phong@5,exact/blinn-phong");
-    EXPECT_EQ(both.left, (SplitSide{ShadingMode::Phong, LightingModel::Phong, 5}));
-    EXPECT_EQ(both.right, (SplitSide{ShadingMode::Exact, LightingModel::BlinnPhong, std::nullopt}));
+    EXPECT_EQ(both.left, (SplitSide{ShadingMode::Phong, LightingModel::Phong, 5, std::nullopt}));
+    EXPECT_EQ(both.right,
+              (SplitSide{ShadingMode::Exact, LightingModel::BlinnPhong, std::nullopt, std::nullopt}));
     EXPECT_EQ(parsed("split:@3,@7").left.level, 3);
 
     // The camera's picture beside the outside or NDC view of the scene.
@@ -144,10 +146,11 @@ TEST(ObserverFraming, TheEyeAndTheObjectsAreInsideTheObserversVolume) {
                 const bool inside = clip.w > 0 && std::abs(clip.x) <= clip.w && std::abs(clip.y) <= clip.w &&
                                     std::abs(clip.z) <= clip.w;
                 // Zoomed in to half, the observer may stand among the points; at zoom 1 it sees them all.
-                if (observer.zoom >= 1)
+                if (observer.zoom >= 1) {
                     EXPECT_TRUE(inside)
                         << "far " << far << ", azimuth " << observer.azimuthDeg << ": (" << p.x << ", " << p.y
                         << ", " << p.z << ") outside the observer's view";
+                }
             }
         }
     }
