@@ -155,6 +155,12 @@ struct SceneView {
     }
 };
 SceneView sceneView(const Scene& scene); // throws InputError for a degenerate camera or bad planes
+// The scene drawn at width × height (a viewport's size, which the perspective aspect follows).
+inline Scene atSize(Scene scene, int width, int height) {
+    scene.width = width;
+    scene.height = height;
+    return scene;
+}
 // Whether sceneView leaves out the perspective matrix's −1 ("perspective_matrix": "unnegated" on a
 // perspective or frustum projection; an orthographic one has no −1), so that everything is clipped.
 bool leavesOutTheMinusOne(const Scene& scene);

@@ -177,9 +177,7 @@ const ViewFigures& Renderer::viewFigures() const {
 
 void Renderer::renderScene(const Scene& scene, int width, int height, int x) {
     if (width <= 0 || height <= 0) return; // a minimized window: nothing to draw, no NaN aspect
-    Scene sized = scene;
-    sized.width = width;
-    sized.height = height;
+    Scene sized = atSize(scene, width, height);
     // One term of the lighting sum: the other terms' coefficients are 0, and every shader's one equation
     // (lighting.glsl) draws that term alone, as its shading mode evaluates it.
     if (scene.term != LightingTerm::All)
@@ -347,15 +345,19 @@ void Renderer::drawImageOver(const Image& image, int left, int top, int width, i
     checkGlError("drawing an image over the scene");
 }
 
+// The matrices of the scene at the viewport's size, with the viewport and the clip range of its depth mode
+// set, for lines drawn over what renderScene drew there.
+static SceneView viewportOver(const Scene& scene, int width, int height, int x) {
+    const SceneView view = sceneView(atSize(scene, width, height));
+    glViewport(x, 0, width, height);
+    setClipDepthZeroToOne(view.depth != DepthMode::Standard, toString(view.depth));
+    return view;
+}
+
 void Renderer::drawLinesOver(const Scene& scene, std::span<const LineVertex> linesView, int width, int height,
                              int x) {
     if (width <= 0 || height <= 0 || linesView.empty()) return;
-    Scene sized = scene;
-    sized.width = width;
-    sized.height = height;
-    const SceneView view = sceneView(sized);
-    glViewport(x, 0, width, height);
-    setClipDepthZeroToOne(view.depth != DepthMode::Standard, toString(view.depth));
+    const SceneView view = viewportOver(scene, width, height, x);
     glDisable(GL_DEPTH_TEST);
     if (!streamedLines_) streamedLines_ = std::make_unique<GpuLines>();
     streamedLines_->set(linesView);
@@ -373,12 +375,7 @@ void Renderer::drawWorld(const Scene& scene, std::span<const LineVertex> linesWo
                          std::span<const LineVertex> trianglesWorld, float faceAlpha, int width, int height,
                          int x) {
     if (width <= 0 || height <= 0) return;
-    Scene sized = scene;
-    sized.width = width;
-    sized.height = height;
-    const SceneView view = sceneView(sized);
-    glViewport(x, 0, width, height);
-    setClipDepthZeroToOne(view.depth != DepthMode::Standard, toString(view.depth));
+    const SceneView view = viewportOver(scene, width, height, x);
     glEnable(GL_DEPTH_TEST); // GL_GREATER, as renderScene left it (DESIGN §2)
     const LineProgram& lines = lineProgram();
     glUseProgram(lines.program.get());

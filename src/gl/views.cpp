@@ -376,9 +376,7 @@ void Views::drawProfile(const Scene& scene, int width, int height, int x, unsign
 
 void Views::drawOutside(const Scene& scene, int width, int height, int x) {
     figures_ = ViewFigures{};
-    Scene sized = scene;
-    sized.width = width;
-    sized.height = height;
+    const Scene sized = atSize(scene, width, height);
     const Scene observer = observerScene(sized);
     renderer_.renderScene(observer, width, height, x);
     const OutsideDrawing drawing = outsideDrawing(sized);
@@ -400,9 +398,7 @@ void Views::drawLabels(const std::vector<OutsideLabel>& labels, const Scene& obs
     glViewport(x, 0, width, height);
     glBindVertexArray(programs_->images.emptyVertexArray().get());
     const int scale = textScale(width, height);
-    Scene sized = observer;
-    sized.width = width;
-    sized.height = height;
+    const Scene sized = atSize(observer, width, height);
     const SceneView view = sceneView(sized);
     const glm::dmat4 clipFromWorld = view.clipFromView * view.viewFromWorld;
     for (const OutsideLabel& label : labels) {
@@ -420,9 +416,7 @@ void Views::drawLabels(const std::vector<OutsideLabel>& labels, const Scene& obs
 
 void Views::drawNdc(const Scene& scene, int width, int height, int x) {
     figures_ = ViewFigures{};
-    Scene sized = scene;
-    sized.width = width;
-    sized.height = height;
+    const Scene sized = atSize(scene, width, height);
     const Scene observer = ndcObserverScene(sized);
     const SceneView observerView = sceneView(observer);
     Scene objects = sized;
