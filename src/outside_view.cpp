@@ -160,6 +160,34 @@ std::array<glm::dvec3, 8> viewVolumeCornersWorld(const Scene& scene) {
     return corners;
 }
 
+// Where an observer stands: `zoom` times the distance at which a sphere of `framedRadius` fits the
+// narrower of its two fields of view, away from `centre` in the direction view_observer gives in the axes
+// (right, up, back); the plain view, the WebGL matrix and standard depth. The caller sets its depth range.
+struct Standpoint {
+    Scene observer;
+    glm::dvec3 direction;
+    double distance;
+};
+Standpoint standpoint(const Scene& scene, const glm::dvec3& centre, double framedRadius,
+                      const glm::dvec3& right, const glm::dvec3& up, const glm::dvec3& back) {
+    const Observer& o = scene.view.observer;
+    const double azimuth = o.azimuthDeg * kDegree, elevation = o.elevationDeg * kDegree;
+    const glm::dvec3 direction =
+        std::cos(elevation) * (std::sin(azimuth) * right + std::cos(azimuth) * back) +
+        std::sin(elevation) * up;
+    const double halfY = 0.5 * kObserverFovyDeg * kDegree;
+    const double halfX = std::atan(std::tan(halfY) * scene.width / scene.height);
+    const double distance = o.zoom * framedRadius / std::sin(std::min(halfX, halfY));
+    Scene observer = scene;
+    observer.eye = centre + distance * direction;
+    observer.target = centre;
+    observer.up = up;
+    observer.view = View{};
+    observer.perspectiveMatrix = PerspectiveMatrix::WebGl;
+    observer.depth = DepthMode::Standard;
+    return {observer, direction, distance};
+}
+
 Scene observerScene(const Scene& scene) {
     const CameraFrame frame = cameraFrame(scene.eye, scene.target, scene.up);
     const std::vector<glm::dvec3> points = framedPoints(scene);
@@ -172,23 +200,7 @@ Scene observerScene(const Scene& scene) {
     double radius = 0;
     for (const glm::dvec3& p : points) radius = std::max(radius, glm::length(p - centre));
 
-    const Observer& o = scene.view.observer;
-    const double azimuth = o.azimuthDeg * kDegree, elevation = o.elevationDeg * kDegree;
-    const glm::dvec3 direction =
-        std::cos(elevation) * (std::sin(azimuth) * frame.u + std::cos(azimuth) * frame.w) +
-        std::sin(elevation) * frame.v;
-    // The framed sphere fits the narrower of the two fields of view.
-    const double halfY = 0.5 * kObserverFovyDeg * kDegree;
-    const double halfX = std::atan(std::tan(halfY) * scene.width / scene.height);
-    const double distance = o.zoom * radius / std::sin(std::min(halfX, halfY));
-
-    Scene observer = scene;
-    observer.eye = centre + distance * direction;
-    observer.target = centre;
-    observer.up = frame.v;
-    observer.view = View{};
-    observer.perspectiveMatrix = PerspectiveMatrix::WebGl;
-    observer.depth = DepthMode::Standard;
+    auto [observer, direction, distance] = standpoint(scene, centre, radius, frame.u, frame.v, frame.w);
     // Depth from just short of the framed sphere (or a thousandth of the distance, zoomed into it) to the
     // real far plane's corners, which are drawn even when not framed, but at most a million near distances:
     // a far plane at 1e6 must not push the near plane past the objects.
@@ -202,21 +214,9 @@ Scene observerScene(const Scene& scene) {
 }
 
 Scene ndcObserverScene(const Scene& scene) {
-    const Observer& o = scene.view.observer;
-    const double azimuth = o.azimuthDeg * kDegree, elevation = o.elevationDeg * kDegree;
-    const glm::dvec3 direction(std::cos(elevation) * std::sin(azimuth), std::sin(elevation),
-                               std::cos(elevation) * std::cos(azimuth));
     const double radius = std::sqrt(3.0); // the cube's circumscribed sphere
-    const double halfY = 0.5 * kObserverFovyDeg * kDegree;
-    const double halfX = std::atan(std::tan(halfY) * scene.width / scene.height);
-    const double distance = o.zoom * 1.05 * radius / std::sin(std::min(halfX, halfY));
-    Scene observer = scene;
-    observer.eye = distance * direction;
-    observer.target = {0, 0, 0};
-    observer.up = {0, 1, 0};
-    observer.view = View{};
-    observer.perspectiveMatrix = PerspectiveMatrix::WebGl;
-    observer.depth = DepthMode::Standard;
+    auto [observer, direction, distance] =
+        standpoint(scene, {0, 0, 0}, 1.05 * radius, {1, 0, 0}, {0, 1, 0}, {0, 0, 1});
     observer.projection = {ProjectionType::Perspective,
                            kObserverFovyDeg,
                            -1,

@@ -153,18 +153,6 @@ nlohmann::json materialJson(const Scene& scene, std::size_t index) {
     return nlohmann::json::parse(sceneToJson(one)).at("objects").at(0).at("material");
 }
 
-// The lecture's matrices for the picture as drawn, and the shown object's; a refused scene's message.
-std::string matricesText(const DemoState& state, const app::PictureRect& picture) {
-    try {
-        const Scene drawn = state.current(picture.width, picture.height);
-        std::string text = app::cameraMatricesText(drawn);
-        if (const auto shown = state.shownObject()) text += app::objectMatricesText(drawn, *shown);
-        return text;
-    } catch (const InputError& e) {
-        return e.what();
-    }
-}
-
 // Everything the page shows besides the canvas, but the scenes' objects: title, status, the scene's values
 // (as given and as drawn), the shown object's material, the help text, the renderer string, the last
 // draw's error, the picture's place in the canvas and the object the material controls edit.
@@ -193,7 +181,7 @@ nlohmann::json panelJson() {
         {"view", toString(s.drawn().view)},
         {"viewReport", s.viewReport},
         {"probe", app::probeText(s)},
-        {"matrices", matricesText(s, picture)},
+        {"matrices", app::matricesPanelText(s.current(picture.width, picture.height), shown)},
         {"settings", settingsJson(scene)}, // the scene less its objects
         {"currentSettings", settingsJson(s.current(picture.width, picture.height))}, // as drawn, likewise
         {"objectCount", scene.objects.size()},

@@ -379,13 +379,17 @@ void Views::drawOutside(const Scene& scene, int width, int height, int x) {
     const Scene sized = atSize(scene, width, height);
     const Scene observer = observerScene(sized);
     renderer_.renderScene(observer, width, height, x);
-    const OutsideDrawing drawing = outsideDrawing(sized);
-    renderer_.drawWorld(observer, {}, drawing.faces, kFaceAlpha, width, height, x);
+    drawObserved(outsideDrawing(sized), observer,
+                 leavesOutTheMinusOne(scene) ? "OUTSIDE VIEW, UNNEGATED MATRIX" : "OUTSIDE VIEW", width,
+                 height, x);
+}
 
+void Views::drawObserved(const OutsideDrawing& drawing, const Scene& observer, const std::string& title,
+                         int width, int height, int x) {
+    renderer_.drawWorld(observer, {}, drawing.faces, kFaceAlpha, width, height, x);
     // The labels, then the lines over them, so that no label hides a corner of the view volume.
     drawLabels(drawing.labels, observer, width, height, x);
     const int scale = textScale(width, height);
-    const std::string title = leavesOutTheMinusOne(scene) ? "OUTSIDE VIEW, UNNEGATED MATRIX" : "OUTSIDE VIEW";
     programs_->images.draw(labelImage({title, "DRAG: OBSERVER  WHEEL: ZOOM"}, scale), scale * 4, scale * 4, x,
                            width, height);
     renderer_.drawWorld(observer, drawing.lines, {}, kFaceAlpha, width, height, x);
@@ -429,18 +433,10 @@ void Views::drawNdc(const Scene& scene, int width, int height, int x) {
         throw;
     }
     renderer_.setNdcObserver(std::nullopt);
-    const OutsideDrawing cube = ndcCubeDrawing();
-    renderer_.drawWorld(observer, {}, cube.faces, kFaceAlpha, width, height, x);
-    drawLabels(cube.labels, observer, width, height, x);
-    const int scale = textScale(width, height);
     const std::string projection =
         scene.projection.type == ProjectionType::Orthographic ? "M_ORTH" : "M_PROJ";
-    programs_->images.draw(
-        labelImage({"NDC VIEW: AFTER " + projection + " M_CAM AND THE DIVIDE", "DRAG: OBSERVER  WHEEL: ZOOM"},
-                   scale),
-        scale * 4, scale * 4, x, width, height);
-    renderer_.drawWorld(observer, cube.lines, {}, kFaceAlpha, width, height, x);
-    glEnable(GL_DEPTH_TEST);
+    drawObserved(ndcCubeDrawing(), observer, "NDC VIEW: AFTER " + projection + " M_CAM AND THE DIVIDE", width,
+                 height, x);
 }
 
 } // namespace shadelab::gl

@@ -50,6 +50,10 @@ private:
     void drawProfile(const Scene& scene, int width, int height, int x, unsigned destination);
     void drawOutside(const Scene& scene, int width, int height, int x);
     void drawNdc(const Scene& scene, int width, int height, int x);
+    // What the outside and NDC views draw over the observer's render of the objects: the translucent faces,
+    // the labels and the title (`title` and the drag hint), then the lines over them.
+    void drawObserved(const OutsideDrawing& drawing, const Scene& observer, const std::string& title,
+                      int width, int height, int x);
     // Each label beside the point it names, where the observer's camera puts that point in the picture.
     void drawLabels(const std::vector<OutsideLabel>& labels, const Scene& observer, int width, int height,
                     int x);

@@ -5,6 +5,7 @@
 #include <initializer_list>
 
 #include "shadelab/camera.h"
+#include "shadelab/errors.h"
 
 namespace shadelab::app {
 namespace {
@@ -94,6 +95,14 @@ std::string objectMatricesText(const Scene& scene, std::size_t object) {
     else
         text += "normal matrix M_cam M, 3x3: normals by M,\n  wrong on purpose\n" + matrix(viewFromObject3);
     return text;
+}
+
+std::string matricesPanelText(const Scene& scene, std::optional<std::size_t> object) {
+    try {
+        return cameraMatricesText(scene) + (object ? objectMatricesText(scene, *object) : "");
+    } catch (const InputError& e) {
+        return e.what();
+    }
 }
 
 } // namespace shadelab::app

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 
 #include "shadelab/scene.h"
@@ -17,5 +18,8 @@ namespace shadelab::app {
 std::string cameraMatricesText(const Scene& scene);
 // One object's (objects[object], which must exist): M and the normal matrix of the scene's rule.
 std::string objectMatricesText(const Scene& scene, std::size_t object);
+// What the window's panel and the page show: the camera's, then the shown object's (none: the camera's
+// alone); a scene sceneView refuses gives its message instead.
+std::string matricesPanelText(const Scene& scene, std::optional<std::size_t> object);
 
 } // namespace shadelab::app

@@ -116,14 +116,7 @@ void viewVolumeControls(DemoState& state, std::string& refusal) {
 
 // e, u, v, w, M_cam, the projection matrix, and the shown object's M and normal matrix, live.
 void matricesControls(const DemoState& state) {
-    const Scene drawn = state.drawn();
-    try {
-        std::string text = cameraMatricesText(drawn);
-        if (const auto shown = state.shownObject()) text += objectMatricesText(drawn, *shown);
-        ImGui::TextUnformatted(text.c_str());
-    } catch (const InputError& e) {
-        ImGui::TextUnformatted(e.what());
-    }
+    ImGui::TextUnformatted(matricesPanelText(state.drawn(), state.shownObject()).c_str());
 }
 
 } // namespace
