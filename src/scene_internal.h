@@ -4,8 +4,10 @@
 // messages, scene_write.cpp the way back to JSON, and scene.cpp the vocabularies, defaults and matrices.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <filesystem>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -58,6 +60,26 @@ void checkLight(const Light& light, const std::string& path);
 
 bool hasPosition(LightType type);
 bool hasDirection(LightType type);
+
+// ---- reading a JSON tree (scene_parse.cpp; lesson.cpp reads lessons with them too) ----
+
+// The scene's top-level keys, in the order DESIGN §4 lists them.
+inline constexpr std::array<std::string_view, 18> kSceneKeys = {
+    "image",        "camera",   "projection",     "perspective_matrix",
+    "shading",      "lighting", "term",           "toon_bands",
+    "tolerance_px", "depth",    "vertex_normals", "normal_matrix",
+    "overlay",      "view",     "view_at",        "view_observer",
+    "objects",      "lights"};
+// A value as a message names it: "null", "string \"x\"", "number 2", "array of 3 elements", "object".
+std::string describe(const Json& value);
+std::string joinKeys(std::span<const std::string_view> keys); // "a, b, c"
+void requireObject(const Json& value, std::string_view path);
+// "<path>.<key>: unknown key; expected one of ..." for the first key not in `allowed`.
+void checkKeys(const Json& object, std::string_view path, std::span<const std::string_view> allowed);
+const Json* member(const Json& object, std::string_view key); // nullptr when absent
+const std::string& readString(const Json& value, std::string_view path);
+// A whole scene from its tree: parseScene without the text's parsing and without the source's name.
+Scene sceneFromJson(const Json& root);
 
 // ---- scene text (scene_json.cpp) ----
 

@@ -20,7 +20,7 @@ namespace shadelab {
 
 using namespace detail;
 
-namespace {
+namespace detail {
 
 std::string describe(const Json& value) {
     switch (value.type()) {
@@ -49,6 +49,31 @@ std::string joinKeys(std::span<const std::string_view> keys) {
     return out;
 }
 
+void requireObject(const Json& value, std::string_view path) {
+    if (!value.is_object())
+        fail(path.empty() ? "the top level" : path, "must be an object, got " + describe(value));
+}
+
+void checkKeys(const Json& object, std::string_view path, std::span<const std::string_view> allowed) {
+    for (auto it = object.begin(); it != object.end(); ++it)
+        if (std::find(allowed.begin(), allowed.end(), it.key()) == allowed.end())
+            fail(keyPath(path, it.key()), "unknown key; expected one of " + joinKeys(allowed));
+}
+
+const Json* member(const Json& object, std::string_view key) {
+    auto it = object.find(key);
+    return it == object.end() ? nullptr : &*it;
+}
+
+const std::string& readString(const Json& value, std::string_view path) {
+    if (!value.is_string()) fail(path, "must be a string, got " + describe(value));
+    return value.get_ref<const std::string&>();
+}
+
+} // namespace detail
+
+namespace {
+
 // "an ambient light", "a point light".
 std::string withArticle(std::string_view noun) {
     bool vowel = !noun.empty() && std::string_view("aeiou").find(noun.front()) != std::string_view::npos;
@@ -60,17 +85,6 @@ std::string lightName(LightType type) {
 }
 
 // ---- tree → values (types and structure; ranges are the check* functions above) ----
-
-void requireObject(const Json& value, std::string_view path) {
-    if (!value.is_object())
-        fail(path.empty() ? "the top level" : path, "must be an object, got " + describe(value));
-}
-
-void checkKeys(const Json& object, std::string_view path, std::span<const std::string_view> allowed) {
-    for (auto it = object.begin(); it != object.end(); ++it)
-        if (std::find(allowed.begin(), allowed.end(), it.key()) == allowed.end())
-            fail(keyPath(path, it.key()), "unknown key; expected one of " + joinKeys(allowed));
-}
 
 // For objects whose keys depend on their type (projections, lights): a key that another type takes is not a
 // typo but a misunderstanding, so say that it does not apply rather than that it is unknown.
@@ -85,11 +99,6 @@ void checkKeysOfType(const Json& object, std::string_view path, std::span<const 
             contains(anyType, it.key()) ? "does not apply to " + std::string(typeName) : "unknown key";
         fail(keyPath(path, it.key()), problem + "; expected one of " + joinKeys(allowed));
     }
-}
-
-const Json* member(const Json& object, std::string_view key) {
-    auto it = object.find(key);
-    return it == object.end() ? nullptr : &*it;
 }
 
 double readNumber(const Json& value, std::string_view path) {
@@ -114,11 +123,6 @@ glm::dvec3 readVec3(const Json& value, std::string_view path) {
     glm::dvec3 v;
     for (int i = 0; i < 3; ++i) v[i] = readNumber(value[i], indexPath(path, i));
     return v;
-}
-
-const std::string& readString(const Json& value, std::string_view path) {
-    if (!value.is_string()) fail(path, "must be a string, got " + describe(value));
-    return value.get_ref<const std::string&>();
 }
 
 template <class Enum, std::size_t N>
@@ -297,15 +301,11 @@ std::vector<Light> readLights(const Json& json) {
     return lights;
 }
 
-Scene readScene(const Json& root) {
-    static constexpr std::array<std::string_view, 18> kKeys = {
-        "image",        "camera",   "projection",     "perspective_matrix",
-        "shading",      "lighting", "term",           "toon_bands",
-        "tolerance_px", "depth",    "vertex_normals", "normal_matrix",
-        "overlay",      "view",     "view_at",        "view_observer",
-        "objects",      "lights"};
+} // namespace
+
+Scene detail::sceneFromJson(const Json& root) {
     requireObject(root, "");
-    checkKeys(root, "", kKeys);
+    checkKeys(root, "", kSceneKeys);
     Scene scene;
     if (const Json* image = member(root, "image")) readImage(*image, scene);
     if (const Json* camera = member(root, "camera")) readCamera(*camera, scene);
@@ -344,11 +344,9 @@ Scene readScene(const Json& root) {
     return scene;
 }
 
-} // namespace
-
 Scene parseScene(std::string_view jsonText, std::string_view source) {
     try {
-        return readScene(parseJson(jsonText));
+        return sceneFromJson(parseJson(jsonText));
     } catch (const InputError& e) {
         throw InputError(std::string(source) + ": " + e.what());
     }

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 
+#include "shadelab/lesson.h"
 #include "shadelab/scene.h"
 
 namespace shadelab {
@@ -12,5 +13,8 @@ namespace shadelab {
 Scene loadScene(const std::filesystem::path& path);
 // sceneToJson written atomically to `path`; throws RuntimeError naming the path.
 void saveScene(const Scene& scene, const std::filesystem::path& path);
+// Reads and parses a lesson file; the scene files its steps name are read beside it, with loadScene's
+// rules (a regular file of at most 16 MiB). A path that is not a lesson, or unreadable, is an InputError.
+Lesson loadLesson(const std::filesystem::path& path);
 
 } // namespace shadelab
