@@ -40,9 +40,10 @@ std::string readText(const Json& value, const std::string& path, std::size_t max
     if (printable(text, multiline) != text || (multiline && text.find('\t') != std::string::npos))
         fail(path, std::string("must be printable text") + (multiline ? " (lines broken by \\n)" : "") +
                        ", got " + quotedValue(text));
-    if (multiline && std::count(text.begin(), text.end(), '\n') >= kMaxCaptionLines)
-        fail(path, "must be at most " + std::to_string(kMaxCaptionLines) + " lines, got " +
-                       std::to_string(std::count(text.begin(), text.end(), '\n') + 1));
+    const auto lines = std::count(text.begin(), text.end(), '\n') + 1;
+    if (multiline && lines > kMaxCaptionLines)
+        fail(path,
+             "must be at most " + std::to_string(kMaxCaptionLines) + " lines, got " + std::to_string(lines));
     return text;
 }
 
@@ -121,8 +122,12 @@ LessonStep readStep(const Json& step, const std::string& path, const SceneTextRe
 } // namespace
 
 bool isLessonText(std::string_view jsonText) {
-    const Json tree = Json::parse(jsonText, nullptr, false);
-    return tree.is_object() && tree.contains("steps");
+    try {
+        const Json tree = parseJson(jsonText); // the scene's limits: nesting, duplicate keys
+        return tree.is_object() && tree.contains("steps");
+    } catch (const InputError&) {
+        return false;
+    }
 }
 
 Lesson parseLesson(std::string_view jsonText, std::string_view source, const SceneTextReader& readScene) {
