@@ -250,6 +250,45 @@ bool isSameFile(const fs::path& a, const fs::path& b) {
     return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
 }
 
+void prepareOutputFolder(const fs::path& dir, std::string_view field, const std::vector<std::string>& names,
+                         const std::vector<fs::path>& inputs) {
+    const std::string name(field);
+    if (dir.empty()) throw InputError(name + ": the folder name is empty; give a folder such as slides");
+    const std::string shown = "\"" + printable(dir.string()) + "\"";
+    std::error_code error;
+    if (fs::exists(dir, error) && !fs::is_directory(dir, error))
+        throw InputError(name + ": " + shown + " exists and is not a folder; give a folder for the files");
+    fs::create_directories(dir, error);
+    if (error)
+        throw InputError(name + ": cannot create the folder " + shown + ": " + error.message() +
+                         "; choose a folder you can write");
+    for (const std::string& file : names) {
+        (void)resolveOutput(dir / file, field);
+        for (const fs::path& input : inputs) refuseOverwritingInput(dir / file, field, input);
+    }
+    // The probe file lives only between mkstemp and unlink: SIGINT/TERM/HUP are held back meanwhile, so an
+    // interrupt cannot leave it behind (it is delivered at once after the unlink).
+    sigset_t held, previous;
+    sigemptyset(&held);
+    for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&held, sig);
+    ::sigprocmask(SIG_BLOCK, &held, &previous);
+    std::string probe = (dir / ".shadelab-XXXXXX").string();
+    const int fd = ::mkstemp(probe.data());
+    const int code = errno;
+    if (fd >= 0) {
+        ::close(fd);
+        ::unlink(probe.c_str());
+    }
+    ::sigprocmask(SIG_SETMASK, &previous, nullptr);
+    if (fd < 0) {
+        const std::string reason = std::strerror(code);
+        if (code == EACCES || code == EPERM || code == EROFS)
+            throw InputError(name + ": cannot write in the folder " + shown + ": " + reason +
+                             "; choose a folder you can write");
+        throw RuntimeError("cannot write in the folder " + shown + ": " + reason);
+    }
+}
+
 void refuseOverwritingInput(const fs::path& output, std::string_view field, const fs::path& input) {
     if (output.empty() || output == "-" || input.empty() || input == "-") return;
     if (isSameFile(output, input))

@@ -162,6 +162,14 @@ Lesson loadLesson(const std::filesystem::path& path) {
                        [&folder](const std::string& file) { return readSceneFile(folder / file); });
 }
 
+bool isLessonFile(const std::filesystem::path& path) {
+    try {
+        return isLessonText(readSceneFile(path));
+    } catch (const InputError&) {
+        return false;
+    }
+}
+
 std::string slideFileName(std::size_t index, std::size_t count, std::string_view title) {
     const std::size_t digits = std::max<std::size_t>(2, std::to_string(count).size());
     std::string number = std::to_string(index + 1);

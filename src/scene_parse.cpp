@@ -365,7 +365,14 @@ Material parseMaterial(std::string_view jsonText, std::size_t object, std::strin
 }
 
 Scene loadScene(const std::filesystem::path& path) {
-    return parseScene(readSceneFile(path), path.string());
+    const std::string text = readSceneFile(path);
+    if (isLessonText(text))
+        throw InputError(
+            printable(path.string()) +
+            ": a lesson (it has \"steps\"), not a scene: `shadelab LESSON` steps through it in the "
+            "window, `shadelab slides LESSON --out-dir DIR` exports it, `shadelab check LESSON` "
+            "reads it");
+    return parseScene(text, path.string());
 }
 
 } // namespace shadelab

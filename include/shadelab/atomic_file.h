@@ -47,6 +47,14 @@ struct OutputTarget {
 // is not open for writing, or a file or folder the caller may not write.
 OutputTarget resolveOutput(const std::filesystem::path& userPath, std::string_view field);
 
+// A folder that several outputs are written into (report --out, slides --out-dir), checked before any work:
+// created if missing (with its parents); refused with an InputError naming `field` when it is not a folder,
+// cannot be created or cannot take a new file, or when any of `names` in it could not be an output
+// (resolveOutput's rules) or is one of `inputs`.
+void prepareOutputFolder(const std::filesystem::path& dir, std::string_view field,
+                         const std::vector<std::string>& names,
+                         const std::vector<std::filesystem::path>& inputs);
+
 // True when both paths name the same existing file (device and inode, after following links).
 bool isSameFile(const std::filesystem::path& a, const std::filesystem::path& b);
 

@@ -1,6 +1,7 @@
 // Headless rendering: a context, the shared renderer and an offscreen target, returning pixels.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -24,7 +25,9 @@ public:
     HeadlessRenderer(const HeadlessRenderer&) = delete;
     HeadlessRenderer& operator=(const HeadlessRenderer&) = delete;
 
-    Image render(const Scene& scene);       // scene.width × scene.height, rows top first
+    Image render(const Scene& scene); // scene.width × scene.height, rows top first
+    // The scene, then `over` drawing on it through the same renderer and target (slides' lesson band).
+    Image render(const Scene& scene, const std::function<void(gl::Renderer&)>& over);
     ImageF renderFloat(const Scene& scene); // through an RGBA32F target: NaN and Inf stay visible
     Backend backend() const { return context_->backend(); }
     Api api() const { return context_->api(); }

@@ -16,5 +16,8 @@ void saveScene(const Scene& scene, const std::filesystem::path& path);
 // Reads and parses a lesson file; the scene files its steps name are read beside it, with loadScene's
 // rules (a regular file of at most 16 MiB). A path that is not a lesson, or unreadable, is an InputError.
 Lesson loadLesson(const std::filesystem::path& path);
+// Whether the file reads as a lesson (isLessonText); false for a file that cannot be read or is not JSON,
+// whose loader then says why.
+bool isLessonFile(const std::filesystem::path& path);
 
 } // namespace shadelab

@@ -73,12 +73,17 @@ int HeadlessRenderer::programsBuilt() const {
 // Validated first, so a bad value is reported with its JSON path (objects[1].subdivisions, image.width)
 // rather than by whichever GL step would trip over it.
 Image HeadlessRenderer::render(const Scene& scene) {
+    return render(scene, {});
+}
+
+Image HeadlessRenderer::render(const Scene& scene, const std::function<void(gl::Renderer&)>& over) {
     validateScene(scene);
     context_->makeCurrent();
     const gl::RenderTarget target(scene.width, scene.height, gl::ColorFormat::Rgba8,
                                   gl::depthFormatFor(scene.depth));
     target.bind();
     renderer_->render(scene, scene.width, scene.height);
+    if (over) over(*renderer_);
     return target.readRgba8();
 }
 

@@ -164,4 +164,89 @@ PresentationLabelImage presentationLabelImage(const std::string& label, int widt
     return {std::move(image), margin};
 }
 
+namespace {
+
+// Where the UTF-8 character that starts at `at` ends.
+std::size_t nextCharacter(const std::string& text, std::size_t at) {
+    ++at;
+    while (at < text.size() && (static_cast<unsigned char>(text[at]) & 0xC0) == 0x80) ++at;
+    return at;
+}
+
+// The lines `text` takes at `scale` in `width` pixels: its own lines, each wrapped at spaces; a word wider
+// than a line is cut before the first character that would not fit (never inside a UTF-8 sequence).
+std::vector<std::string> wrappedLines(const std::string& text, int scale, int width) {
+    std::vector<std::string> lines;
+    const auto fits = [&](const std::string& line) { return textWidth(line, scale) <= width; };
+    for (std::size_t start = 0; start <= text.size();) {
+        const std::size_t end = std::min(text.find('\n', start), text.size());
+        const std::string paragraph = text.substr(start, end - start);
+        start = end + 1;
+        std::string line;
+        std::size_t at = 0;
+        while (at < paragraph.size()) {
+            const std::size_t space = std::min(paragraph.find(' ', at), paragraph.size());
+            std::string word = paragraph.substr(at, space - at);
+            at = space + 1;
+            const std::string joined = line.empty() ? word : line + " " + word;
+            if (fits(joined)) {
+                line = joined;
+                continue;
+            }
+            if (!line.empty()) lines.push_back(line);
+            line.clear();
+            while (!fits(word)) { // wider than a line on its own: cut after the last character that fits
+                std::size_t cut = nextCharacter(word, 0);
+                for (std::size_t next = nextCharacter(word, cut);
+                     next <= word.size() && fits(word.substr(0, next)); next = nextCharacter(word, next))
+                    cut = next;
+                lines.push_back(word.substr(0, cut));
+                word.erase(0, cut);
+            }
+            line = word;
+        }
+        lines.push_back(line);
+    }
+    return lines;
+}
+
+} // namespace
+
+Image lessonBandImage(const std::string& title, const std::string& caption, int width, int height) {
+    if (width < 1 || height < 1) return Image(0, 0);
+    int titleScale = std::clamp(height / 18 / textLineHeight(1), 1, kMaxTextScale);
+    int captionScale = std::clamp(height / 27 / textLineHeight(1), 1, kMaxTextScale);
+    const auto pad = [](int s) { return textLineHeight(s) / 2; };
+    std::vector<std::string> titleLines, captionLines;
+    int bandHeight = 0;
+    for (;;) {
+        const int inner = std::max(1, width - 2 * pad(titleScale));
+        titleLines = wrappedLines(title, titleScale, inner);
+        captionLines =
+            caption.empty() ? std::vector<std::string>{} : wrappedLines(caption, captionScale, inner);
+        bandHeight = 2 * pad(titleScale) + int(titleLines.size()) * textLineHeight(titleScale) +
+                     int(captionLines.size()) * textLineHeight(captionScale);
+        if (bandHeight <= height * 2 / 5 || (titleScale == 1 && captionScale == 1)) break;
+        // The caption gives way first, down to two thirds of the title's size.
+        if (captionScale > 1 && captionScale * 3 >= titleScale * 2)
+            --captionScale;
+        else if (titleScale > 1)
+            --titleScale;
+        else
+            --captionScale;
+    }
+    Image image(width, std::min(bandHeight, height));
+    fillRect(image, 0, 0, image.width, image.height, {0, 0, 0, 166}); // 65 % black
+    int y = pad(titleScale);
+    for (const std::string& line : titleLines) {
+        drawText(image, pad(titleScale), y, line, titleScale, {255, 255, 255, 255});
+        y += textLineHeight(titleScale);
+    }
+    for (const std::string& line : captionLines) {
+        drawText(image, pad(titleScale), y, line, captionScale, {225, 225, 225, 255});
+        y += textLineHeight(captionScale);
+    }
+    return image;
+}
+
 } // namespace shadelab::app

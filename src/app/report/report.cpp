@@ -102,46 +102,6 @@ void printTable(const std::vector<ReportRow>& rows) {
 
 constexpr std::array<const char*, 4> kReportFiles{"report.csv", "report.json", "report.gp", "report.png"};
 
-// Before any measuring: the folder exists (created if need be) and takes a new file, no report file in it is
-// something that cannot be replaced (a folder, a socket) or the scene itself.
-void prepareOutDir(const fs::path& dir, const std::optional<fs::path>& scene) {
-    if (dir.empty()) throw InputError("--out: the folder name is empty; give a folder such as report");
-    const std::string shown = "\"" + printable(dir.string()) + "\"";
-    std::error_code error;
-    if (fs::exists(dir, error) && !fs::is_directory(dir, error))
-        throw InputError("--out: " + shown +
-                         " exists and is not a folder; give a folder for the report files");
-    fs::create_directories(dir, error);
-    if (error)
-        throw InputError("--out: cannot create the folder " + shown + ": " + error.message() +
-                         "; choose a folder you can write");
-    for (const char* name : kReportFiles) {
-        (void)resolveOutput(dir / name, "--out");
-        if (scene) refuseOverwritingInput(dir / name, "--out", *scene);
-    }
-    // The probe file lives only between mkstemp and unlink: SIGINT/TERM/HUP are held back meanwhile, so an
-    // interrupt cannot leave it behind (it is delivered at once after the unlink).
-    sigset_t held, previous;
-    sigemptyset(&held);
-    for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&held, sig);
-    ::sigprocmask(SIG_BLOCK, &held, &previous);
-    std::string probe = (dir / ".shadelab-XXXXXX").string();
-    const int fd = ::mkstemp(probe.data());
-    const int code = errno;
-    if (fd >= 0) {
-        ::close(fd);
-        ::unlink(probe.c_str());
-    }
-    ::sigprocmask(SIG_SETMASK, &previous, nullptr);
-    if (fd < 0) {
-        const std::string reason = std::strerror(code);
-        if (code == EACCES || code == EPERM || code == EROFS)
-            throw InputError("--out: cannot write in the folder " + shown + ": " + reason +
-                             "; choose a folder you can write");
-        throw RuntimeError("report: cannot write in the folder " + shown + ": " + reason);
-    }
-}
-
 } // namespace
 
 int runReport(const ReportOptions& options) {
@@ -157,7 +117,9 @@ int runReport(const ReportOptions& options) {
                       kGlBaselineBytes + 220.0 * scene.width * scene.height + renderBytes(largest),
                       "the scene's image size");
     if (options.plot) requireGnuplot(); // before minutes of measuring, not after
-    prepareOutDir(options.outDir, options.scene);
+    std::vector<std::filesystem::path> inputs;
+    if (options.scene) inputs.push_back(*options.scene);
+    prepareOutputFolder(options.outDir, "--out", {kReportFiles.begin(), kReportFiles.end()}, inputs);
 
     const std::unique_ptr<HeadlessContext> context = makeHeadlessContext(options.context);
     info.renderer = gl::rendererString();

@@ -263,6 +263,30 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
         ->capture_default_str()
         ->check(CLI::Range(1, 1000));
 
+    std::string checkFile;
+    CLI::App* checkCommand = cli.add_subcommand(
+        "check",
+        "Read a lesson or a scene file as the other commands would and say what is wrong, drawing nothing");
+    checkCommand->add_option("file", checkFile, "Lesson or scene file (JSON)")->required();
+
+    std::string slidesLesson;
+    ContextArgs slidesContext;
+    CLI::App* slidesCommand = cli.add_subcommand(
+        "slides",
+        "Export a lesson as slides: one PNG per step, its title and caption in a band at the bottom");
+    slidesCommand->add_option("lesson", slidesLesson, "Lesson file (JSON)")->required();
+    slidesCommand
+        ->add_option("--out-dir", command.slidesOutDir,
+                     "Folder for 01-title.png, 02-... (created if missing; not the lesson's own folder)")
+        ->required();
+    slidesCommand->add_option(
+        "--size", command.slidesSize,
+        "Slide size WxH for every step, e.g. 1920x1080 (default: each step's image size)");
+    slidesCommand->add_flag(
+        "--no-captions", [&command](std::int64_t) { command.slidesCaptions = false; },
+        "No band: each slide is exactly what render makes of the step's scene");
+    addHeadlessFlags(*slidesCommand, slidesContext);
+
     // Set last: subcommands made before it would inherit it, and their --help is not about the demo's keys.
     cli.footer("Demo keys:\n" + keyHelpText());
     try {
@@ -281,7 +305,8 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
         if (hints.empty() && !demoScene.empty() && !std::filesystem::exists(demoScene, ec))
             throw InputError(
                 "\"" + demoScene +
-                "\" is neither a subcommand (render, reference, report, bench, compare) nor a scene file");
+                "\" is neither a subcommand (render, reference, report, bench, compare, check, slides) nor a "
+                "scene or lesson file");
         std::ostringstream out, err;
         cli.exit(e, out, err); // CLI11's message naming the argument, and its "Run with --help" hint
         throw InputError(withoutTrailingNewlines(err.str()) + hints);
@@ -308,6 +333,13 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
         setContext(command, reportContext);
     } else if (*compareCommand) {
         command.kind = ParsedCommand::Kind::Compare;
+    } else if (*checkCommand) {
+        command.kind = ParsedCommand::Kind::Check;
+        command.scene = checkFile;
+    } else if (*slidesCommand) {
+        command.kind = ParsedCommand::Kind::Slides;
+        command.scene = slidesLesson;
+        setContext(command, slidesContext);
     } else if (*reference) {
         command.kind = ParsedCommand::Kind::Reference;
         setContext(command, {referenceBackend, referenceApi, ""});

@@ -3,6 +3,7 @@
 // and writes nothing; the values it returns are checked by the entry points of commands.h.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "app/bench/bench.h"
@@ -12,14 +13,15 @@
 namespace shadelab::app {
 
 struct ParsedCommand {
-    enum class Kind { Exit, Demo, Render, Reference, Bench, Report, EglDevices, Compare };
+    enum class Kind { Exit, Demo, Render, Reference, Bench, Report, EglDevices, Compare, Check, Slides };
     Kind kind = Kind::Demo;
 
     // Kind::Exit (--help, --help-all): print `text` to stdout and exit with `exitCode`.
     std::string text;
     int exitCode = kExitOk;
 
-    std::string scene;           // Demo, Render, Reference, Report: the scene file; empty for the defaults
+    std::string scene; // Demo, Render, Reference, Report: the scene file (Demo: or a lesson); empty for the
+                       // defaults Check: the lesson or scene file; Slides: the lesson file
     SceneOverrides overrides;    // Demo, Render, Reference
     std::string out;             // Render, Reference: --out
     std::string backend = "egl"; // Render, Bench, Report: --backend, checked by contextFromArguments
@@ -37,6 +39,10 @@ struct ParsedCommand {
     bool reportNoPlot = false;
     int reportFrames = 20, reportWarmup = 3;
     CompareOptions compare; // Compare
+    // Slides: --out-dir, --no-captions, --size (the scene's other flags do not apply to a lesson)
+    std::string slidesOutDir;
+    bool slidesCaptions = true;
+    std::optional<std::string> slidesSize;
 };
 
 // Throws InputError for anything CLI11 rejects, with CLI11's message (naming the argument) and its

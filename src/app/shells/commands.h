@@ -50,6 +50,23 @@ struct DemoOptions {
     int windowWidth = 0, windowHeight = 0; // --size; 0: a size fit for the screen, not the scene's image
 };
 
+// `shadelab check FILE`: reads a lesson or a scene as the other commands would, draws nothing, and says what
+// it is (each step's scene warnings included); bad input throws InputError as the other commands' does.
+int runCheck(const std::filesystem::path& file);
+
+// `shadelab slides LESSON --out-dir DIR`: one PNG per step, NN-title.png (slideFileName), each the step's
+// render with its title and caption band over the bottom (lessonBandImage), or without it (`captions`
+// false) pixel for pixel what `shadelab render` makes of the step's scene. DIR is created if missing and
+// must not be the lesson's own folder; every name in it is checked with --out's rules before anything is
+// drawn, and each file is written atomically as its step is done, with a line of progress.
+struct SlidesOptions {
+    std::filesystem::path lesson, outDir;
+    std::optional<std::string> size; // --size WxH for every step; each step's own size without it
+    bool captions = true;            // false: --no-captions
+    ContextRequest context;
+};
+int runSlides(const SlidesOptions& options);
+
 // The window; without a display, the showcase rendered headless to options.showcaseOut.
 int runDemo(const Scene& scene, const DemoOptions& options);
 int runShowcase(const Scene& scene, const ContextRequest& context, const std::filesystem::path& out);

@@ -119,6 +119,17 @@ int run(int argc, char** argv) {
         return app::runCompare(command.compare);
     case Kind::EglDevices:
         return app::runListEglDevices(app::apiFromArgument(command.api));
+    case Kind::Check:
+        return app::runCheck(command.scene);
+    case Kind::Slides: {
+        app::SlidesOptions slides;
+        slides.lesson = command.scene;
+        slides.outDir = command.slidesOutDir;
+        slides.size = command.slidesSize;
+        slides.captions = command.slidesCaptions;
+        slides.context = app::contextFromArguments(command.backend, command.api, command.eglDevice);
+        return app::runSlides(slides);
+    }
     case Kind::Demo:
         break;
     }
