@@ -13,7 +13,15 @@
 namespace shadelab {
 
 // Key codes are GLFW's (printable keys are their upper-case ASCII code); the few others used are here.
+inline constexpr int kKeySpace = 32;
 inline constexpr int kKeyEscape = 256;
+inline constexpr int kKeyBackspace = 259;
+inline constexpr int kKeyRight = 262;
+inline constexpr int kKeyLeft = 263;
+inline constexpr int kKeyPageUp = 266;
+inline constexpr int kKeyPageDown = 267;
+inline constexpr int kKeyHome = 268;
+inline constexpr int kKeyEnd = 269;
 inline constexpr int kKeyF1 = 290;
 inline constexpr int kKeyF2 = 291;
 inline constexpr int kKeyF11 = 300;

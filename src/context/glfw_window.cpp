@@ -23,6 +23,9 @@ namespace shadelab {
 
 static_assert(kKeyEscape == GLFW_KEY_ESCAPE && kKeyF1 == GLFW_KEY_F1 &&
               kKeyKeypadSubtract == GLFW_KEY_KP_SUBTRACT && kKeyKeypadAdd == GLFW_KEY_KP_ADD);
+static_assert(kKeySpace == GLFW_KEY_SPACE && kKeyBackspace == GLFW_KEY_BACKSPACE &&
+              kKeyRight == GLFW_KEY_RIGHT && kKeyLeft == GLFW_KEY_LEFT && kKeyPageUp == GLFW_KEY_PAGE_UP &&
+              kKeyPageDown == GLFW_KEY_PAGE_DOWN && kKeyHome == GLFW_KEY_HOME && kKeyEnd == GLFW_KEY_END);
 
 namespace {
 

@@ -57,6 +57,10 @@ constexpr Command kAllCommands[] = {
     Command::Quit,
     Command::TogglePresentation,
     Command::ToggleFullScreen,
+    Command::NextStep,
+    Command::PreviousStep,
+    Command::FirstStep,
+    Command::LastStep,
 };
 
 std::string str(const glm::dvec3& v) {
@@ -199,6 +203,15 @@ const std::vector<std::pair<int, Command>>& issueKeys() {
         {GLFW_KEY_F2, Command::TogglePresentation}, // issue 15: presentation mode
         {GLFW_KEY_W, Command::ToggleOverlay},       // wireframe and normals overlay
         {GLFW_KEY_F11, Command::ToggleFullScreen},
+        // Issue 31: a lesson's steps.
+        {GLFW_KEY_PAGE_DOWN, Command::NextStep},
+        {GLFW_KEY_SPACE, Command::NextStep},
+        {GLFW_KEY_RIGHT, Command::NextStep},
+        {GLFW_KEY_PAGE_UP, Command::PreviousStep},
+        {GLFW_KEY_BACKSPACE, Command::PreviousStep},
+        {GLFW_KEY_LEFT, Command::PreviousStep},
+        {GLFW_KEY_HOME, Command::FirstStep},
+        {GLFW_KEY_END, Command::LastStep},
     };
     return kKeys;
 }
@@ -210,6 +223,58 @@ TEST(DemoKeys, WindowKeyConstantsAreGlfwKeyCodes) {
     EXPECT_EQ(kKeyF11, GLFW_KEY_F11);
     EXPECT_EQ(kKeyKeypadSubtract, GLFW_KEY_KP_SUBTRACT);
     EXPECT_EQ(kKeyKeypadAdd, GLFW_KEY_KP_ADD);
+    EXPECT_EQ(kKeyPageDown, GLFW_KEY_PAGE_DOWN);
+    EXPECT_EQ(kKeyEnd, GLFW_KEY_END);
+}
+
+// Issue 31: a lesson's step keys move through it, each step as written with the window's own settings kept;
+// a key works inside a step, and R returns to the step as written (not only its camera).
+TEST(DemoLesson, StepKeysMoveThroughTheStepsAndRReturnsToTheStep) {
+    auto lesson = std::make_shared<Lesson>();
+    lesson->title = "Two steps";
+    Scene first, second;
+    first.shading = ShadingMode::Flat;
+    second.shading = ShadingMode::Toon;
+    second.lighting = LightingModel::Phong;
+    second.objects[0].subdivisions = 2;
+    lesson->steps = {{"One", "the first", first}, {"Two", "", second}};
+    DemoState state(Scene{});
+    EXPECT_TRUE(state.apply(Command::NextStep));
+    EXPECT_NE(state.lastChange().find("no lesson open"), std::string::npos) << state.lastChange();
+    state.presenting = true;
+    state.showPanel = false;
+    state.openLesson(lesson);
+    EXPECT_EQ(state.step(), 0u);
+    EXPECT_EQ(state.scene().shading, ShadingMode::Flat);
+    EXPECT_NE(windowTitle(state, 0).find("shadelab — step 1 of 2 | flat shading"), std::string::npos)
+        << windowTitle(state, 0);
+    state.apply(Command::PreviousStep);
+    EXPECT_EQ(state.step(), 0u);
+    EXPECT_EQ(state.lastChange(), "already at the first step");
+    state.apply(Command::NextStep);
+    EXPECT_EQ(state.step(), 1u);
+    EXPECT_EQ(state.lastChange(), "step 2 of 2: Two");
+    EXPECT_EQ(state.scene().shading, ShadingMode::Toon);
+    EXPECT_EQ(state.level(), 2);
+    EXPECT_TRUE(state.presenting) << "the window's settings are kept";
+    EXPECT_FALSE(state.showPanel);
+    // Inside the step: keys and the mouse change it; R gives the step back as written.
+    state.apply(Command::Phong);
+    state.apply(Command::LevelUp);
+    state.apply(Command::NextMaterial);
+    state.drag(40, 10);
+    EXPECT_EQ(state.scene().shading, ShadingMode::Phong);
+    state.apply(Command::ResetView);
+    EXPECT_EQ(state.scene().shading, ShadingMode::Toon);
+    EXPECT_EQ(state.level(), 2);
+    EXPECT_EQ(state.materialName(), DemoState(second).materialName());
+    EXPECT_EQ(state.drawn().eye, DemoState(second).drawn().eye) << "the camera too";
+    state.apply(Command::FirstStep);
+    EXPECT_EQ(state.step(), 0u);
+    state.apply(Command::LastStep);
+    EXPECT_EQ(state.step(), 1u);
+    state.apply(Command::NextStep);
+    EXPECT_EQ(state.lastChange(), "already at the last step");
 }
 
 TEST(DemoKeys, EveryKeyTheIssueListsMapsToItsCommand) {
@@ -251,8 +316,7 @@ TEST(DemoKeys, EveryCommandHasExactlyOneBinding) {
 }
 
 TEST(DemoKeys, UnboundKeysGiveNoCommand) {
-    for (int key : {GLFW_KEY_Z, GLFW_KEY_D, GLFW_KEY_SPACE, GLFW_KEY_6, GLFW_KEY_F3, GLFW_KEY_ENTER,
-                    GLFW_KEY_UNKNOWN, 0})
+    for (int key : {GLFW_KEY_Z, GLFW_KEY_D, GLFW_KEY_6, GLFW_KEY_F3, GLFW_KEY_ENTER, GLFW_KEY_UNKNOWN, 0})
         EXPECT_FALSE(commandForKey(key).has_value()) << "key " << key;
 }
 

@@ -623,6 +623,54 @@ TEST_F(DemoWindow, PresentationLabelCoversOnlyTheBottomAndF2RemovesIt) {
     expectCleanQuit(demo);
 }
 
+// Issue 31: `shadelab LESSON.json` opens at step 1; Page Down / Space / Page Up / Home / End step through
+// it, and the window's picture at each step is what `render` gives of that step's scene; a key changes the
+// step and R returns to it as written. Steps 1 and 2 name scene files; step 3 changes step 2's shading,
+// which s3.json writes out in full for render.
+TEST_F(DemoWindow, LessonStepsThroughAndRReturnsToTheStep) {
+    const std::vector<fs::path> scenes = {
+        writeScene("s1.json", sceneJson(kWidth, kHeight, 3, "phong", "phong")),
+        writeScene("s2.json", sceneJson(kWidth, kHeight, 2, "gouraud", "phong")),
+        writeScene("s3.json", sceneJson(kWidth, kHeight, 2, "flat", "phong"))};
+    const fs::path lesson = writeScene("lesson.json", R"({"title": "Three steps", "steps": [
+      {"title": "One", "caption": "Phong at level 3.", "scene": "s1.json"},
+      {"title": "Two", "scene": "s2.json"},
+      {"title": "Three", "shading": "flat"}]})");
+    std::vector<Image> rendered;
+    for (std::size_t i = 0; i < scenes.size(); ++i)
+        rendered.push_back(
+            renderWithCli(scenes[i], scratch() / ("s" + std::to_string(i + 1) + ".png"), scratch()));
+    DemoProcess& demo = startDemo("demo", {lesson.string(), "--size", kSize, "--hide-panel", "--gl-debug"});
+    const auto expectStep = [&](std::size_t step, const std::string& what) {
+        const std::string title =
+            demo.window().waitForTitle("shadelab — step " + std::to_string(step + 1) + " of 3 | ");
+        EXPECT_TRUE(
+            matches(settledCapture(demo.window(), rendered[step]), rendered[step], kWindowTolerance, what))
+            << title;
+    };
+    expectStep(0, "opened");
+    demo.window().key("Next"); // Page Down
+    expectStep(1, "page_down");
+    demo.window().key("space");
+    expectStep(2, "space");
+    demo.window().key("Next"); // past the last step: stays
+    demo.window().waitForTitle("shadelab — step 3 of 3 | flat shading");
+    demo.window().key("Prior"); // Page Up
+    expectStep(1, "page_up");
+    // A key works inside the step (the step is a starting point); R returns to it as written.
+    demo.window().key("3");
+    demo.window().waitForTitle("shadelab — step 2 of 3 | phong shading");
+    EXPECT_FALSE(compareImages(demo.window().capture(), rendered[1], kWindowTolerance).passed)
+        << "the key changed nothing";
+    demo.window().key("r");
+    expectStep(1, "reset");
+    demo.window().key("End");
+    expectStep(2, "end");
+    demo.window().key("Home");
+    expectStep(0, "home");
+    expectCleanQuit(demo);
+}
+
 // H shows the help overlay over the picture and H again takes it away. The demo runs on its built-in
 // scene (no scene file), whose modes the title must show.
 TEST_F(DemoWindow, HTogglesTheHelpOverlay) {

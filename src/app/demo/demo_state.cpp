@@ -83,6 +83,32 @@ DemoState::DemoState(Scene scene)
     for (const SceneObject& o : scene_.objects) exponents_.push_back(o.material.shininess);
 }
 
+void DemoState::openLesson(std::shared_ptr<const Lesson> lesson, std::size_t index) {
+    if (!lesson || lesson->steps.empty()) throw InputError("a lesson has at least one step");
+    lesson_ = std::move(lesson);
+    goToStep(std::min(index, lesson_->steps.size() - 1));
+    lastChange_ = stepName();
+}
+
+void DemoState::goToStep(std::size_t index) {
+    DemoState step(lesson_->steps[index].scene);
+    step.lesson_ = lesson_;
+    step.step_ = index;
+    step.matchHighlight = matchHighlight;
+    step.showHelp = showHelp;
+    step.showPanel = showPanel;
+    step.presenting = presenting;
+    step.viewportWidth_ = viewportWidth_;
+    step.viewportHeight_ = viewportHeight_;
+    *this = std::move(step);
+}
+
+std::string DemoState::stepName() const {
+    if (!lesson_) return "";
+    return "step " + std::to_string(step_ + 1) + " of " + std::to_string(lesson_->steps.size()) + ": " +
+           lesson_->steps[step_].title;
+}
+
 // In split view the mode keys change the left side (which the split names); a side never equals the other,
 // so a mode the right side shows swaps the two.
 void DemoState::setShading(ShadingMode mode) {
@@ -229,9 +255,35 @@ bool DemoState::apply(Command command) {
         scene_.lights = lights_ == 0 ? initial_.lights : lightPresets()[std::size_t(lights_ - 1)].lights;
         break;
     case Command::ResetView:
+        if (lesson_) {
+            goToStep(step_); // the step as written, not only its camera
+            lastChange_ = stepName() + " (as written)";
+            return true;
+        }
         camera_ = initialCamera_;
         cameraMoved_ = false;
         break;
+    case Command::NextStep:
+    case Command::PreviousStep:
+    case Command::FirstStep:
+    case Command::LastStep: {
+        if (!lesson_) {
+            lastChange_ = "no lesson open (shadelab LESSON.json opens one)";
+            return true;
+        }
+        const std::size_t last = lesson_->steps.size() - 1;
+        const std::size_t to = command == Command::FirstStep  ? 0
+                               : command == Command::LastStep ? last
+                               : command == Command::NextStep ? std::min(step_ + 1, last)
+                                                              : (step_ == 0 ? 0 : step_ - 1);
+        if (to == step_ && (command == Command::NextStep || command == Command::PreviousStep)) {
+            lastChange_ = to == 0 ? "already at the first step" : "already at the last step";
+            return true;
+        }
+        goToStep(to);
+        lastChange_ = stepName();
+        return true;
+    }
     case Command::TogglePanel:
         showPanel = !showPanel;
         break;

@@ -4,6 +4,7 @@
 // current()), demo_keys.cpp (the bindings) and demo_text.cpp (title, status, probe table, label).
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "shadelab/image.h"
+#include "shadelab/lesson.h"
 #include "shadelab/probe.h"
 #include "shadelab/scene.h"
 #include "shadelab/sphere.h"
@@ -56,6 +58,10 @@ enum class Command {
     TogglePanel,
     TogglePresentation,
     ToggleFullScreen,
+    NextStep,
+    PreviousStep,
+    FirstStep,
+    LastStep,
     Quit
 };
 
@@ -153,6 +159,16 @@ public:
     // Applies a command; returns false for the commands the window carries out itself (screenshot, quit).
     bool apply(Command command);
 
+    // A lesson being stepped through (README "Lessons"): the state becomes `index`'s step as written (its
+    // scene, the camera it names, no material or light preset, no probe), keeping what belongs to the
+    // window rather than the step (panel, help, presentation, B's rule, the viewport). The step keys move
+    // through it; R returns to the step as written; every other key works inside the step.
+    void openLesson(std::shared_ptr<const Lesson> lesson, std::size_t index = 0);
+    const Lesson* lesson() const { return lesson_.get(); }
+    std::size_t step() const { return step_; }
+    // "step 3 of 15: The view volume"; "" without a lesson.
+    std::string stepName() const;
+
     // Why the last + or - (the page's level slider presses them) changed nothing, or "".
     std::string levelRefusal;
     bool matchHighlight = true; // B keeps the highlight size: β = 4α going to Blinn-Phong, α = β/4 back
@@ -206,6 +222,10 @@ private:
     double presetExponent(double alpha) const;
     std::string describeChange(Command command) const;
 
+    void goToStep(std::size_t index);
+
+    std::shared_ptr<const Lesson> lesson_; // null: a scene alone
+    std::size_t step_ = 0;
     Scene initial_, scene_;
     OrbitCamera initialCamera_, camera_;
     bool cameraMoved_ = false;

@@ -47,7 +47,11 @@ std::string windowTitle(const DemoState& state, double frameMs) {
     const Scene drawn = state.drawn();
     const std::string triangles =
         drawn.shading == ShadingMode::Exact ? "" : std::to_string(state.triangleCount()) + " triangles | ";
-    return "shadelab — " + modes(drawn) + " | " + geometry(state, drawn) + " | " + triangles + timing +
+    const std::string step = state.lesson() == nullptr
+                                 ? ""
+                                 : "step " + std::to_string(state.step() + 1) + " of " +
+                                       std::to_string(state.lesson()->steps.size()) + " | ";
+    return "shadelab — " + step + modes(drawn) + " | " + geometry(state, drawn) + " | " + triangles + timing +
            (state.viewReport.empty() ? "" : " | " + state.viewReport) + " | H: keys" +
            (state.lastChange().empty() ? "" : " | " + state.lastChange());
 }
@@ -188,7 +192,9 @@ std::vector<std::string> wrappedLines(const std::string& text, int scale, int wi
             const std::size_t space = std::min(paragraph.find(' ', at), paragraph.size());
             std::string word = paragraph.substr(at, space - at);
             at = space + 1;
-            const std::string joined = line.empty() ? word : line + " " + word;
+            std::string joined = line;
+            if (!joined.empty()) joined += ' ';
+            joined += word;
             if (fits(joined)) {
                 line = joined;
                 continue;
@@ -227,13 +233,12 @@ Image lessonBandImage(const std::string& title, const std::string& caption, int 
         bandHeight = 2 * pad(titleScale) + int(titleLines.size()) * textLineHeight(titleScale) +
                      int(captionLines.size()) * textLineHeight(captionScale);
         if (bandHeight <= height * 2 / 5 || (titleScale == 1 && captionScale == 1)) break;
-        // The caption gives way first, down to two thirds of the title's size.
-        if (captionScale > 1 && captionScale * 3 >= titleScale * 2)
+        // The caption gives way first, down to two thirds of the title's size; then the title (to 1).
+        const bool captionFirst = captionScale > 1 && (captionScale * 3 >= titleScale * 2 || titleScale == 1);
+        if (captionFirst)
             --captionScale;
-        else if (titleScale > 1)
-            --titleScale;
         else
-            --captionScale;
+            --titleScale;
     }
     Image image(width, std::min(bandHeight, height));
     fillRect(image, 0, 0, image.width, image.height, {0, 0, 0, 166}); // 65 % black

@@ -3,11 +3,13 @@
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 
 #include "app/demo/scene_flags.h"
 #include "shadelab/context.h"
+#include "shadelab/lesson.h"
 #include "shadelab/scene.h"
 
 namespace shadelab::app {
@@ -48,6 +50,7 @@ struct DemoOptions {
     bool present = false;                  // --present: the presentation label on, and larger text
     double uiScale = 0;                    // --ui-scale; 0: 1, or 1.75 with --present
     int windowWidth = 0, windowHeight = 0; // --size; 0: a size fit for the screen, not the scene's image
+    std::shared_ptr<const Lesson> lesson;  // `shadelab LESSON.json`: stepped through from its first step
 };
 
 // `shadelab check FILE`: reads a lesson or a scene as the other commands would, draws nothing, and says what
@@ -67,7 +70,8 @@ struct SlidesOptions {
 };
 int runSlides(const SlidesOptions& options);
 
-// The window; without a display, the showcase rendered headless to options.showcaseOut.
+// The window; without a display, the showcase rendered headless to options.showcaseOut. With a lesson,
+// `scene` is its first step's.
 int runDemo(const Scene& scene, const DemoOptions& options);
 int runShowcase(const Scene& scene, const ContextRequest& context, const std::filesystem::path& out);
 

@@ -107,6 +107,7 @@ public:
           panel_(window_, uiScale_) {
         state_.showPanel = !options.hidePanel;
         state_.presenting = options.present;
+        if (options.lesson) state_.openLesson(options.lesson);
         // Specialized to the lights only: the panel's colour and shininess sliders then recompile nothing
         // (a program per value would cost ~50 ms on llvmpipe at every step of a slider).
         renderer_.setSpecialization(gl::Specialization::Lights);

@@ -17,6 +17,7 @@
 #include "app/shells/commands.h"
 #include "shadelab/atomic_file.h"
 #include "shadelab/errors.h"
+#include "shadelab/scene_file.h"
 #include "shadelab/text.h"
 
 namespace {
@@ -140,9 +141,22 @@ int run(int argc, char** argv) {
                               ? " is not a folder; name the folder S saves its screenshots in"
                               : " does not exist; create it (mkdir -p) or name an existing folder"));
     refuseOverwritingInput(command.demo.showcaseOut, "--showcase-out", command.scene);
-    const Scene scene = app::composeScene(command.scene, command.overrides);
-    warnAbout(scene, command.scene);
     app::DemoOptions demo = command.demo;
+    Scene scene;
+    if (!command.scene.empty() && isLessonFile(command.scene)) {
+        // A lesson: the scene flags apply to every step, as they would to each step's scene file.
+        Lesson lesson = loadLesson(command.scene);
+        for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
+            LessonStep& step = lesson.steps[i];
+            step.scene = app::applyOverrides(std::move(step.scene), command.overrides, command.scene);
+            warnAbout(step.scene, command.scene + ": steps[" + std::to_string(i) + "]");
+        }
+        scene = lesson.steps.front().scene;
+        demo.lesson = std::make_shared<const Lesson>(std::move(lesson));
+    } else {
+        scene = app::composeScene(command.scene, command.overrides);
+        warnAbout(scene, command.scene);
+    }
     demo.api = app::apiFromArgument(command.api);
     if (command.overrides.size) { // the window takes --size when given, never the scene's image size
         demo.windowWidth = scene.width;

@@ -121,6 +121,22 @@ void matricesControls(const DemoState& state) {
 
 } // namespace
 
+// A lesson (README "Lessons"): where it is, the step's title and caption, and the buttons that do what the
+// step keys do.
+void lessonControls(DemoState& state) {
+    const Lesson& lesson = *state.lesson();
+    ImGui::TextUnformatted(lesson.title.c_str());
+    if (ImGui::ArrowButton("previous step (PgUp)", ImGuiDir_Left)) state.apply(Command::PreviousStep);
+    ImGui::SameLine();
+    ImGui::Text("step %zu of %zu", state.step() + 1, lesson.steps.size());
+    ImGui::SameLine();
+    if (ImGui::ArrowButton("next step (PgDn)", ImGuiDir_Right)) state.apply(Command::NextStep);
+    const LessonStep& step = lesson.steps[state.step()];
+    ImGui::TextUnformatted(step.title.c_str());
+    if (!step.caption.empty()) ImGui::TextUnformatted(step.caption.c_str());
+    ImGui::Separator();
+}
+
 Panel::Panel(Window& window, double uiScale) : api_(window.api()) {
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
@@ -157,6 +173,7 @@ void Panel::draw(DemoState& state, const std::string& status, int columnWidth) {
         ImGui::Begin("shadelab controls (C hides, H helps)", nullptr,
                      ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
         ImGui::PushTextWrapPos(0.0f);
+        if (state.lesson() != nullptr) lessonControls(state);
         ImGui::TextUnformatted(status.c_str());
         ImGui::Checkbox("B keeps the highlight size (beta = 4 alpha)", &state.matchHighlight);
         // Which term of the lighting sum is drawn (K cycles them).
