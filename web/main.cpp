@@ -26,6 +26,7 @@
 #include "shadelab/gl/render_target.h"
 #include "shadelab/gl/renderer.h"
 #include "shadelab/image.h"
+#include "shadelab/lesson.h"
 #include "shadelab/scene.h"
 
 namespace {
@@ -153,6 +154,18 @@ nlohmann::json materialJson(const Scene& scene, std::size_t index) {
     return nlohmann::json::parse(sceneToJson(one)).at("objects").at(0).at("material");
 }
 
+// The lesson being stepped through, as the panel shows it; null for a scene alone.
+nlohmann::json lessonJson(const DemoState& s) {
+    const Lesson* lesson = s.lesson();
+    if (lesson == nullptr) return nullptr;
+    const LessonStep& step = lesson->steps[s.step()];
+    return {{"title", lesson->title},
+            {"step", s.step() + 1},
+            {"steps", lesson->steps.size()},
+            {"stepTitle", step.title},
+            {"caption", step.caption}};
+}
+
 // Everything the page shows besides the canvas, but the scenes' objects: title, status, the scene's values
 // (as given and as drawn), the shown object's material, the help text, the renderer string, the last
 // draw's error, the picture's place in the canvas and the object the material controls edit.
@@ -199,6 +212,7 @@ nlohmann::json panelJson() {
         {"editedObject", s.editedObjectNumber()}, // 0: all objects
         {"editedObjectName", s.editedObjectName()},
         {"shownObject", shown ? nlohmann::json(*shown) : nlohmann::json(nullptr)}, // whose material shows
+        {"lesson", lessonJson(s)},
     };
 }
 
@@ -217,6 +231,37 @@ EMSCRIPTEN_KEEPALIVE const char* shadelab_load_scene(const char* json, const cha
         for (const std::string& warning : sceneWarnings(scene))
             page().warnings.push_back(std::string(name) + ": " + warning);
         page().state = std::make_unique<DemoState>(scene);
+        page().sceneName = name;
+        requestDraw();
+    });
+}
+
+// Opens a lesson at its first step: `json` its text (named `name` in messages), `files` a JSON object of the
+// scene files its steps name, each path as the lesson writes it → the text the page fetched (or was given
+// beside the lesson), or null where it could not get it; the lesson parser then names the step and file.
+EMSCRIPTEN_KEEPALIVE const char* shadelab_load_lesson(const char* json, const char* name, const char* files) {
+    return guarded([&] {
+        checkSceneTextSize(std::strlen(json), name);
+        const nlohmann::json texts = nlohmann::json::parse(files);
+        Lesson lesson = parseLesson(json, name, [&texts](const std::string& path) {
+            const auto found = texts.find(path);
+            if (found == texts.end() || !found->is_string())
+                throw InputError("the page could not fetch it beside the lesson (open the lesson by its URL, "
+                                 "or pick or drop its scene files together with it)");
+            const std::string& text = found->get_ref<const std::string&>();
+            checkSceneTextSize(text.size(), path);
+            return text;
+        });
+        page().warnings.clear();
+        for (std::size_t i = 0; i < lesson.steps.size(); ++i)
+            for (const std::string& warning : sceneWarnings(lesson.steps[i].scene))
+                page().warnings.push_back(std::string(name) + ": steps[" + std::to_string(i) +
+                                          "]: " + warning);
+        auto state = std::make_unique<DemoState>(lesson.steps.front().scene);
+        state->presenting = page().state->presenting; // the page's own setting, as a step keeps it
+        state->showPanel = page().state->showPanel;
+        state->openLesson(std::make_shared<const Lesson>(std::move(lesson)));
+        page().state = std::move(state);
         page().sceneName = name;
         requestDraw();
     });

@@ -82,11 +82,14 @@ function viaHeap(text, call) {
 function bind() {
   const c = (name, ret, args) => Module.cwrap(name, ret, args);
   const load = c('shadelab_load_scene', 'string', ['number', 'string']);
+  const lesson = c('shadelab_load_lesson', 'string', ['number', 'string', 'number']);
   const flags = c('shadelab_apply_flags', 'string', ['number']);
   const edit = c('shadelab_edit_settings', 'string', ['number']);
   const material = c('shadelab_edit_material', 'string', ['number']);
   return {
     loadScene: (text, name) => viaHeap(text, (pointer) => load(pointer, name)),
+    loadLesson: (text, name, files) =>
+      viaHeap(text, (pointer) => viaHeap(JSON.stringify(files), (filesPointer) => lesson(pointer, name, filesPointer))),
     applyFlags: (text) => viaHeap(text, flags),
     editSettings: (text) => viaHeap(text, edit),
     editMaterial: (text) => viaHeap(text, material),
@@ -119,11 +122,19 @@ async function shadelabStarted() {
   new ResizeObserver(fitCanvas).observe($('view'));
   wireControls();
   const names = await fetch('scenes/index.json').then((r) => r.json()).catch(() => []);
+  const lessons = await fetch('lessons/index.json').then((r) => r.json()).catch(() => []);
   $('bundled').add(new Option('(another scene)', ''));
   for (const name of names) $('bundled').add(new Option(name, name));
+  // The bundled lessons after the scenes, each as "lesson: NAME".
+  for (const name of lessons) $('bundled').add(new Option('lesson: ' + name, 'lesson:' + name));
   const url = params.get('scene');
+  const lessonUrl = params.get('lesson');
   let message = '';
-  if (url) {
+  if (lessonUrl) {
+    message = await loadUrl(lessonUrl);
+    const bundled = lessons.find((name) => lessonUrl === 'lessons/' + name || lessonUrl === './lessons/' + name);
+    $('bundled').value = bundled ? 'lesson:' + bundled : '';
+  } else if (url) {
     message = await loadUrl(url);
     // The picker names the scene shown: a bundled one by its name, anything else as another scene.
     const bundled = names.find((name) => url === 'scenes/' + name || url === './scenes/' + name);
@@ -163,7 +174,37 @@ async function loadUrl(url, name) {
   } catch (e) {
     return url + ': cannot fetch the scene (' + e.message + ')';
   }
-  return loadText(text, name || fileNameOf(url));
+  // A lesson's scene files are fetched beside it, as the command line reads them beside the lesson file.
+  const base = new URL(url, location.href);
+  return loadText(text, name || fileNameOf(url), (path) => fetchText(new URL(path, base)));
+}
+
+// The text at `url`, or null when it cannot be fetched (the lesson parser then names the step and file).
+async function fetchText(url) {
+  try {
+    const response = await fetch(url);
+    return response.ok ? await response.text() : null;
+  } catch (e) {
+    return null;
+  }
+}
+
+// A lesson rather than a scene: a JSON object with "steps" (as isLessonText in C++ decides).
+function lessonOf(text) {
+  try {
+    const parsed = JSON.parse(text);
+    return parsed && typeof parsed === 'object' && !Array.isArray(parsed) && 'steps' in parsed ? parsed : null;
+  } catch (e) {
+    return null;
+  }
+}
+
+// The scene files a lesson's steps name, each path as written → its text (or null), through `read`.
+async function lessonFiles(lesson, read) {
+  const files = {};
+  for (const step of Array.isArray(lesson.steps) ? lesson.steps : [])
+    if (step && typeof step.scene === 'string' && !(step.scene in files)) files[step.scene] = await read(step.scene);
+  return files;
 }
 
 // The last part of a URL for messages, its %-escapes decoded; a % that is no escape stays as it is (a
@@ -177,9 +218,11 @@ function fileNameOf(url) {
   }
 }
 
-// "" or the message, which stays on the page; the previous scene stays drawn behind it.
-function loadText(text, name) {
-  const message = api.loadScene(text, name);
+// "" or the message, which stays on the page; the previous scene stays drawn behind it. A lesson's scene
+// files come through `read` (path as the lesson writes it → text or null).
+async function loadText(text, name, read = async () => null) {
+  const lesson = lessonOf(text);
+  const message = lesson ? api.loadLesson(text, name, await lessonFiles(lesson, read)) : api.loadScene(text, name);
   showMessage(message);
   refresh();
   return message;
@@ -206,6 +249,9 @@ function glfwKey(event) {
   if (event.key === 'F1') return 290;
   if (event.key === 'F2') return 291;
   if (event.key === 'F11') return 300;
+  // A lesson's steps, as the window binds them.
+  const steps = {PageDown: 267, PageUp: 266, Home: 268, End: 269, ArrowRight: 262, ArrowLeft: 263, Backspace: 259, ' ': 32};
+  if (event.key in steps) return steps[event.key];
   if (event.key === '+' || event.key === '=') return 61;
   if (event.key === '-' || event.key === '_') return 45;
   if (event.key.length === 1) {
@@ -370,6 +416,17 @@ function refresh(ifChanged = false) {
   setIfIdle('bands', ui.settings.toon_bands);
   $('bands-out').textContent = ui.settings.toon_bands;
   showLights(ui.settings.lights);
+  // The lesson, as the window's panel shows it.
+  const lesson = ui.lesson;
+  $('lesson').hidden = !lesson;
+  if (lesson) {
+    $('lesson-title').textContent = lesson.title;
+    $('step-out').textContent = 'step ' + lesson.step + ' of ' + lesson.steps;
+    $('step-title').textContent = lesson.stepTitle;
+    $('step-caption').textContent = lesson.caption;
+    $('step-previous').disabled = lesson.step === 1;
+    $('step-next').disabled = lesson.step === lesson.steps;
+  }
 }
 
 // "split:gouraud,exact" is the select's "split".
@@ -521,18 +578,33 @@ function wireControls() {
   $('save').addEventListener('click', save);
   $('help-button').addEventListener('click', () => press(72));
   $('bundled').addEventListener('change', (e) => {
-    if (e.target.value) loadUrl('scenes/' + e.target.value, e.target.value);
+    const value = e.target.value;
+    if (value.startsWith('lesson:')) loadUrl('lessons/' + value.slice(7), value.slice(7));
+    else if (value) loadUrl('scenes/' + value, value);
   });
-  // A scene from a file is none of the bundled ones: the picker says so once it has loaded.
-  const loadOther = async (file) => {
-    if (file && !loadText(await file.text(), file.name)) $('bundled').value = '';
+  // A scene or lesson from files is none of the bundled ones: the picker says so once it has loaded. Of
+  // several files, a lesson is opened with the others as the scene files it names (by their names); what
+  // it names and was not given is fetched beside the bundled lessons, so a bundled lesson saved and opened
+  // again still finds ../scenes/.
+  const loadOther = async (files) => {
+    const all = Array.from(files || []);
+    if (!all.length) return;
+    const texts = await Promise.all(all.map((file) => file.text()));
+    const index = Math.max(0, texts.findIndex((text) => lessonOf(text)));
+    const read = async (path) => {
+      const given = all.findIndex((file) => file.name === path.split('/').pop());
+      return given >= 0 ? texts[given] : fetchText(new URL(path, new URL('lessons/', location.href)));
+    };
+    if (!(await loadText(texts[index], all[index].name, read))) $('bundled').value = '';
   };
-  $('file').addEventListener('change', (e) => loadOther(e.target.files[0]));
+  $('file').addEventListener('change', (e) => loadOther(e.target.files));
   document.addEventListener('dragover', (e) => e.preventDefault());
   document.addEventListener('drop', (e) => {
     e.preventDefault();
-    loadOther(e.dataTransfer.files[0]);
+    loadOther(e.dataTransfer.files);
   });
+  $('step-previous').addEventListener('click', () => press(266));
+  $('step-next').addEventListener('click', () => press(267));
 }
 
 // ---- pixels: what the canvas shows, drawn again into the program's own framebuffer ----

@@ -36,6 +36,7 @@
 #include "gl/gl_test_support.h"
 #include "gl/projected_mesh.h"
 #include "shadelab/image_file.h"
+#include "shadelab/lesson.h"
 #include "shadelab/probe.h"
 #include "shadelab/scene_file.h"
 #include "shadelab/window.h"
@@ -117,6 +118,10 @@ public:
     std::size_t message() { return add({{"op", "message"}}); }
     std::size_t capture(const std::string& kind = "rgba8") {
         return add({{"op", "capture"}, {"kind", kind}});
+    }
+    // At width × height rather than the scene's image size (the picture at that size, as drawn()).
+    std::size_t capture(int width, int height) {
+        return add({{"op", "capture"}, {"kind", "rgba8"}, {"width", width}, {"height", height}});
     }
     std::size_t resize(int width, int height) {
         return add({{"op", "resize"}, {"width", width}, {"height", height}});
@@ -859,6 +864,93 @@ TEST_F(Browser, PresentationLabelShowsAndF2HidesIt) {
     EXPECT_EQ(maxY, picture.y + picture.height - layout.margin - 1) << "the box's bottom edge";
     EXPECT_EQ(maxX - minX + 1, layout.image.width) << "the box is as wide as the layout says";
     EXPECT_EQ(maxY - minY + 1, layout.image.height) << "the box is as tall as the layout says";
+    expectCleanConsole(session.answer(console).at("console"));
+}
+
+// Issue 31 in the page: a lesson loaded as a file steps with Page Down, Space, Page Up and the panel's ▶
+// button, each step's picture native OpenGL ES's render of that step's scene, and R returns to a changed
+// step; the panel shows the step. Then the bundled lesson by ?lesson=URL, its scene files fetched beside it
+// (../scenes/): every one of its steps drawn by the page as natively at 320×180.
+TEST_F(Browser, LessonStepsWithKeysAndButtonsAndTheBundledLessonDrawsEveryStep) {
+    const std::string text = R"({"title": "Three steps", "steps": [
+      {"title": "One", "caption": "Flat at level 2.", "scene": {"image": {"width": 160, "height": 120},
+       "shading": "flat", "objects": [{"subdivisions": 2}]}},
+      {"title": "Two", "caption": "Gouraud.", "shading": "gouraud"},
+      {"title": "Three", "caption": "Phong, Blinn-Phong.", "shading": "phong", "lighting": "blinn-phong"}]})";
+    const Lesson lesson = parseLesson(text, "three.json", [](const std::string&) -> std::string {
+        throw std::logic_error("no scene files");
+    });
+    const fs::path bundledPath = fs::path(SHADELAB_WEB_BUILD) / "lessons" / "lighting.json";
+    const Lesson bundled = loadLesson(bundledPath);
+    Session session;
+    session.open();
+    const std::size_t load = session.loadText(text, "three.json");
+    struct Shown {
+        const char* after;
+        std::size_t step;
+        std::size_t ui = 0, capture = 0;
+    };
+    std::vector<Shown> shown = {{"load", 0}, {"Page Down", 1}, {"Space", 2}, {"Page Up", 1}, {"R", 1}};
+    const std::vector<int> keys = {0, kKeyPageDown, kKeySpace, kKeyPageUp, 'R'};
+    std::size_t changed = 0;
+    for (std::size_t i = 0; i < shown.size(); ++i) {
+        if (keys[i] == 'R') {
+            session.key('1'); // a key inside the step: flat shading
+            changed = session.capture();
+        }
+        if (keys[i] != 0) session.key(keys[i]);
+        shown[i].ui = session.ui();
+        shown[i].capture = session.capture();
+    }
+    session.panel("#step-next", "", "click");
+    const std::size_t afterButton = session.ui();
+    const std::size_t caption = session.element("#step-caption");
+    const std::size_t position = session.element("#step-out");
+    session.open("?lesson=lessons/lighting.json");
+    const std::size_t bundledUi = session.ui();
+    const std::size_t bundledMessage = session.message();
+    const std::size_t picker = session.element("#bundled");
+    std::vector<std::size_t> bundledCaptures;
+    for (std::size_t i = 0; i < bundled.steps.size(); ++i) {
+        bundledCaptures.push_back(session.capture(320, 180));
+        session.key(kKeyPageDown);
+    }
+    const std::size_t console = session.console();
+    if (!session.run(dir_)) return;
+
+    EXPECT_EQ(session.answer(load).at("message"), "") << "the lesson loads";
+    for (const Shown& s : shown) {
+        SCOPED_TRACE(std::string("after ") + s.after);
+        const json lessonUi = session.answer(s.ui).at("ui").at("lesson");
+        ASSERT_TRUE(lessonUi.is_object()) << "no lesson in the panel";
+        EXPECT_EQ(lessonUi.at("step"), s.step + 1);
+        EXPECT_EQ(lessonUi.at("steps"), 3);
+        const Image page = session.image(s.capture);
+        const Image native = nativeGles().render(lesson.steps[s.step].scene);
+        const Comparison c = compareImages(page, native, swiftShaderTolerance(page));
+        EXPECT_TRUE(c.passed) << "the page's picture is not native render's of step " << s.step + 1 << ": "
+                              << c.summary();
+    }
+    EXPECT_FALSE(
+        compareImages(session.image(changed), session.image(shown.back().capture), Tolerance{1, 0, 0}).passed)
+        << "the key inside the step changed nothing (R then had nothing to restore)";
+    EXPECT_EQ(session.answer(afterButton).at("ui").at("lesson").at("step"), 3) << "the ▶ button";
+    EXPECT_EQ(session.answer(caption).at("element").at("text"), "Phong, Blinn-Phong.");
+    EXPECT_EQ(session.answer(position).at("element").at("text"), "step 3 of 3");
+
+    EXPECT_EQ(session.answer(bundledMessage).at("message"), "") << "the bundled lesson loads by its URL";
+    EXPECT_EQ(session.answer(bundledUi).at("ui").at("lesson").at("steps"), bundled.steps.size());
+    EXPECT_EQ(session.answer(picker).at("element").at("value"), "lesson:lighting.json")
+        << "the picker names the bundled lesson";
+    for (std::size_t i = 0; i < bundled.steps.size(); ++i) {
+        SCOPED_TRACE("bundled lesson, step " + std::to_string(i + 1) + ": " + bundled.steps[i].title);
+        Scene scene = bundled.steps[i].scene;
+        scene.width = 320;
+        scene.height = 180;
+        const Image page = session.image(bundledCaptures[i]);
+        const Comparison c = compareImages(page, nativeGles().render(scene), swiftShaderTolerance(page));
+        EXPECT_TRUE(c.passed) << c.summary();
+    }
     expectCleanConsole(session.answer(console).at("console"));
 }
 

@@ -271,9 +271,10 @@ struct PresentationLabelImage {
 PresentationLabelImage presentationLabelImage(const std::string& label, int width, int height);
 // A lesson step's title and caption as the window, the page and `shadelab slides` draw them across the bottom
 // of a picture of width × height: a translucent dark band as wide as the picture, the title in lines an
-// eighteenth of the height (55 px at 1080, 33 at 720), the caption under it a little smaller, its lines as
-// written and wrapped at spaces to the width (a word too long for a line is cut between characters). Both
-// sizes step down until the band is at most 40 % of the height; the same text and size give the same image.
+// eighteenth of the height and the caption's a thirtieth, each to the nearest 11 px (55 and 33 px at 1080,
+// 44 and 22 at 720), the caption's lines as written and wrapped at spaces to the width (a word too long for
+// a line is cut between characters). Both sizes step down until the band is at most 40 % of the height; the
+// same text and size give the same image.
 // Drawn at (0, height − image.height); an empty image for a width or height under 1.
 Image lessonBandImage(const std::string& title, const std::string& caption, int width, int height);
 // The probe's table for the panel and the page: the ambient, diffuse and specular terms and the pixel for

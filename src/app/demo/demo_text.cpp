@@ -2,6 +2,7 @@
 #include "app/demo/demo_state.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "app/demo/demo_format.h"
@@ -220,8 +221,12 @@ std::vector<std::string> wrappedLines(const std::string& text, int scale, int wi
 
 Image lessonBandImage(const std::string& title, const std::string& caption, int width, int height) {
     if (width < 1 || height < 1) return Image(0, 0);
-    int titleScale = std::clamp(height / 18 / textLineHeight(1), 1, kMaxTextScale);
-    int captionScale = std::clamp(height / 27 / textLineHeight(1), 1, kMaxTextScale);
+    // The nearest whole scales (a scale is 11 px of line): a floor would leave a 700 px picture's caption
+    // at 11 px.
+    const auto nearestScale = [&](int parts) {
+        return std::clamp(int(std::lround(double(height) / parts / textLineHeight(1))), 1, kMaxTextScale);
+    };
+    int titleScale = nearestScale(18), captionScale = nearestScale(30);
     const auto pad = [](int s) { return textLineHeight(s) / 2; };
     std::vector<std::string> titleLines, captionLines;
     int bandHeight = 0;
