@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <string>
+#include <variant>
 
 #include <nlohmann/json.hpp>
 
@@ -156,18 +157,24 @@ Lesson parseLesson(std::string_view jsonText, std::string_view source, const Sce
     }
 }
 
-Lesson loadLesson(const std::filesystem::path& path) {
+namespace {
+
+Lesson parseLessonBeside(const std::string& text, const std::filesystem::path& path) {
     const std::filesystem::path folder = path.parent_path();
-    return parseLesson(readSceneFile(path), path.string(),
+    return parseLesson(text, path.string(),
                        [&folder](const std::string& file) { return readSceneFile(folder / file); });
 }
 
-bool isLessonFile(const std::filesystem::path& path) {
-    try {
-        return isLessonText(readSceneFile(path));
-    } catch (const InputError&) {
-        return false;
-    }
+} // namespace
+
+Lesson loadLesson(const std::filesystem::path& path) {
+    return parseLessonBeside(readSceneFile(path), path);
+}
+
+std::variant<Scene, Lesson> loadSceneOrLesson(const std::filesystem::path& path) {
+    const std::string text = readSceneFile(path);
+    if (!isLessonText(text)) return parseScene(text, path.string());
+    return parseLessonBeside(text, path);
 }
 
 std::string slideFileName(std::size_t index, std::size_t count, std::string_view title) {

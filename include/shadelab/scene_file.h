@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <variant>
 
 #include "shadelab/lesson.h"
 #include "shadelab/scene.h"
@@ -16,8 +17,8 @@ void saveScene(const Scene& scene, const std::filesystem::path& path);
 // Reads and parses a lesson file; the scene files its steps name are read beside it, with loadScene's
 // rules (a regular file of at most 16 MiB). A path that is not a lesson, or unreadable, is an InputError.
 Lesson loadLesson(const std::filesystem::path& path);
-// Whether the file reads as a lesson (isLessonText); false for a file that cannot be read or is not JSON,
-// whose loader then says why.
-bool isLessonFile(const std::filesystem::path& path);
+// The file read once (so "-", standard input, works too) as a lesson when isLessonText says it is one,
+// otherwise as a scene, each with its loader's rules and messages.
+std::variant<Scene, Lesson> loadSceneOrLesson(const std::filesystem::path& path);
 
 } // namespace shadelab

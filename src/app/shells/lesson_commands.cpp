@@ -1,6 +1,7 @@
 // `shadelab check` and `shadelab slides` (commands.h): a lesson file read, checked and exported.
 #include <cstdio>
 #include <system_error>
+#include <variant>
 
 #include "app/demo/demo_state.h"
 #include "app/measure/memory_budget.h"
@@ -27,15 +28,15 @@ void printWarnings(const Scene& scene, const std::string& where) {
 
 int runCheck(const fs::path& file) {
     const std::string shown = printable(file.string());
-    if (!isLessonFile(file)) {
-        const Scene scene = loadScene(file);
+    const std::variant<Scene, Lesson> read = loadSceneOrLesson(file);
+    if (const Scene* scene = std::get_if<Scene>(&read)) {
         std::printf("%s: a scene, valid: %zu object%s, %zu light%s, %dx%d\n", shown.c_str(),
-                    scene.objects.size(), scene.objects.size() == 1 ? "" : "s", scene.lights.size(),
-                    scene.lights.size() == 1 ? "" : "s", scene.width, scene.height);
-        printWarnings(scene, "");
+                    scene->objects.size(), scene->objects.size() == 1 ? "" : "s", scene->lights.size(),
+                    scene->lights.size() == 1 ? "" : "s", scene->width, scene->height);
+        printWarnings(*scene, "");
         return kExitOk;
     }
-    const Lesson lesson = loadLesson(file);
+    const Lesson& lesson = std::get<Lesson>(read);
     std::printf("%s: a lesson, valid: \"%s\", %zu step%s\n", shown.c_str(), printable(lesson.title).c_str(),
                 lesson.steps.size(), lesson.steps.size() == 1 ? "" : "s");
     for (std::size_t i = 0; i < lesson.steps.size(); ++i) {

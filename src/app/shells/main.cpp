@@ -5,6 +5,7 @@
 #include <cstring>
 #include <exception>
 #include <filesystem>
+#include <variant>
 
 #if defined(__GLIBC__)
 #include <malloc.h>
@@ -143,9 +144,10 @@ int run(int argc, char** argv) {
     refuseOverwritingInput(command.demo.showcaseOut, "--showcase-out", command.scene);
     app::DemoOptions demo = command.demo;
     Scene scene;
-    if (!command.scene.empty() && isLessonFile(command.scene)) {
+    std::variant<Scene, Lesson> read = command.scene.empty() ? Scene{} : loadSceneOrLesson(command.scene);
+    if (Lesson* readLesson = std::get_if<Lesson>(&read)) {
         // A lesson: the scene flags apply to every step, as they would to each step's scene file.
-        Lesson lesson = loadLesson(command.scene);
+        Lesson lesson = std::move(*readLesson);
         for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
             LessonStep& step = lesson.steps[i];
             step.scene = app::applyOverrides(std::move(step.scene), command.overrides, command.scene);
@@ -154,7 +156,7 @@ int run(int argc, char** argv) {
         scene = lesson.steps.front().scene;
         demo.lesson = std::make_shared<const Lesson>(std::move(lesson));
     } else {
-        scene = app::composeScene(command.scene, command.overrides);
+        scene = app::applyOverrides(std::get<Scene>(std::move(read)), command.overrides, command.scene);
         warnAbout(scene, command.scene);
     }
     demo.api = app::apiFromArgument(command.api);
