@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets of fuzz/ with clang and runs each for a fixed budget, all three at once (the
-# two cores shared: 40 s each is the 2 CPU-minutes two fuzzers of 60 s took), printing how many inputs each
+# Builds the libFuzzer targets of fuzz/ with clang and runs each for a fixed budget, all three at once on the
+# two cores (60 s: the 2 CPU-minutes two fuzzers took, now 40 CPU-seconds each), printing how many inputs each
 # executed. Exits non-zero if any found a crash, a leak, a timeout or a sanitizer report, after printing the
 # report and the file that reproduces it.
-#   scripts/fuzz.sh [seconds per fuzzer]      (default 40; SHADELAB_FUZZ_SECONDS also sets it)
+#   scripts/fuzz.sh [seconds per fuzzer]      (default 60; SHADELAB_FUZZ_SECONDS also sets it)
 # Needs the Debian packages clang and libclang-rt-14-dev (scripts/setup.sh installs them).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-seconds=${1:-${SHADELAB_FUZZ_SECONDS:-40}}
+seconds=${1:-${SHADELAB_FUZZ_SECONDS:-60}}
 build=${SHADELAB_FUZZ_BUILD:-build-fuzz}
 work=$build/run # grown corpora, logs and crash artifacts; kept between local runs
 

@@ -97,10 +97,11 @@ TEST_F(LessonCliTest, CaptionBandIsAtTheBottomOverTheRender) {
         ASSERT_EQ(slide.height, 180);
         const char* titles[] = {"Flat shading", "Gouraud: lit at the vertices",
                                 "Phong, Blinn-Phong lighting"};
-        const char* captions[] = {"One normal per face.",
-                                  "Lit at the vertices, then the colours are interpolated across the face.\n"
-                                  "A second line.",
-                                  ""};
+        const std::string captions[] = {
+            "One normal per face.",
+            std::string("Lit at the vertices, then the colours are interpolated across the face.\n") +
+                "A second line.",
+            ""};
         const Image band = app::lessonBandImage(titles[i], captions[i], 320, 180);
         ASSERT_GT(band.height, 0);
         ASSERT_LE(band.height, 180 * 2 / 5) << "at most 40 % of the picture";
