@@ -31,7 +31,8 @@ struct SphereMesh {
 std::size_t sphereVertexCount(int level);
 std::size_t sphereTriangleCount(int level);
 
-// Peak bytes buildSphere and the GPU-ready arrays need for a level (used in the error for too-high levels).
+// Peak bytes buildSphere and the GPU-ready arrays (mesh_layout.h) need for a level (used in the error for
+// too-high levels; sphere_limits.cpp).
 std::size_t sphereMemoryBytes(int level);
 
 // The one check of a level wherever it comes from: buildSphere, a scene file's "subdivisions", the
@@ -41,10 +42,15 @@ void checkSubdivisionLevel(int level, std::string_view field = "subdivisions");
 
 SphereMesh buildSphere(int level, VertexNormals normals = VertexNormals::Averaged);
 
+namespace detail {
+// A build that ran out of memory: RuntimeError naming the level, its triangles, the memory it needs and
+// the ways out (sphere_limits.cpp, which has the estimate).
+[[noreturn]] void failSphereBuild(int level);
+} // namespace detail
+
 // Builds spheres into arrays it keeps: building again (another level, or the same one in a benchmark)
-// writes into memory already mapped instead of asking the kernel for fresh pages, which on some kernels
-// costs more than the generation itself. For levels large enough to share, it also keeps one helper thread,
-// started on first use and joined by the destructor. The same mesh as buildSphere, bit for bit.
+// writes into memory already mapped instead of asking the kernel for fresh pages. The same mesh as
+// buildSphere, bit for bit.
 class SphereBuilder {
 public:
     SphereBuilder();
@@ -61,26 +67,5 @@ private:
     SphereMesh mesh_;
     std::unique_ptr<Scratch> scratch_;
 };
-
-// GPU-ready vertex layouts (float, converted once from the double mesh).
-struct SmoothVertex {
-    glm::vec3 position;
-    glm::vec3 normal;
-};
-// Flat shading: three vertices per triangle, each carrying the triangle's centroid and face normal, so
-// the lighting is evaluated once per triangle at its centroid (DESIGN §3) whichever vertex provokes.
-struct FlatVertex {
-    glm::vec3 position;
-    glm::vec3 centroid;
-    glm::vec3 faceNormal;
-};
-
-std::vector<SmoothVertex> smoothVertices(const SphereMesh& mesh);
-std::vector<std::uint32_t> smoothIndices(const SphereMesh& mesh);
-std::vector<FlatVertex> flatVertices(const SphereMesh& mesh);
-
-// Max radial deviation of the mesh from the unit sphere: 1 − min over triangles of the distance from the
-// origin to the triangle's plane (the deepest point of a face is its foot point or an edge/vertex).
-double maxRadialDeviation(const SphereMesh& mesh);
 
 } // namespace shadelab

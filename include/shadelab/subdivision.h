@@ -19,4 +19,9 @@ int autoSubdivisionLevel(const Scene& scene, const SceneObject& object);
 // The object's level: its own, or the one "auto" chooses.
 int subdivisionLevel(const Scene& scene, const SceneObject& object);
 
+// δₙ, the error a level leaves: the mesh's max radial deviation from the unit sphere, 1 − min over
+// triangles of the distance from the origin to the triangle (the deepest point of a face is its foot point
+// or on an edge). DESIGN §1 bounds it by 4^(1−n).
+double maxRadialDeviation(const SphereMesh& mesh);
+
 } // namespace shadelab

@@ -1,5 +1,7 @@
 #include "shadelab/gl/mesh.h"
 
+#include "shadelab/mesh_layout.h"
+
 #include <cstddef>
 
 #include <glad/gl.h>

@@ -16,6 +16,7 @@
 #include "gl/gl_test_support.h"
 #include "shadelab/errors.h"
 #include "shadelab/image_file.h"
+#include "shadelab/mesh_layout.h"
 #include "shadelab/scene_file.h"
 #include "shadelab/subdivision.h"
 

@@ -27,6 +27,7 @@
 #include "shadelab/gl/program.h"
 #include "shadelab/gl/render_target.h"
 #include "shadelab/gl/renderer.h"
+#include "shadelab/mesh_layout.h"
 #include "shadelab/text.h"
 
 namespace shadelab::app {
@@ -109,11 +110,9 @@ std::vector<RatioSpec> registerSpecializationBenchmarks(Gpu& gpu) {
                     gpu.renderer.setFlatGeometryShader(geometryShader);
                     gpu.timeFrames(state, [&] { gpu.renderer.render(scene, scene.width, scene.height); });
                     gpu.renderer.setFlatGeometryShader(false);
-                    const SphereMesh mesh = buildSphere(scene.objects[0].subdivisions);
                     state.counters["vertex_bytes"] =
-                        geometryShader ? double(smoothVertices(mesh).size() * sizeof(SmoothVertex) +
-                                                smoothIndices(mesh).size() * 4)
-                                       : double(flatVertices(mesh).size() * sizeof(FlatVertex));
+                        meshBytes(scene.objects[0].subdivisions,
+                                  geometryShader ? MeshLayout::Smooth : MeshLayout::Flat);
                 })
                 ->UseManualTime()
                 ->Iterations(gpu.options.frames)

@@ -20,10 +20,9 @@ double wallSeconds() {
     return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
-// Wall time: generation uses both cores for large levels (sphere.cpp), which the calling thread's CPU time
-// would not see; so quote these figures from a quiet machine, as the frame times. One iteration repeats
-// `work` for about 2 ms so that the clock's own cost vanishes at level 0; median_ms is the time of one
-// call.
+// Wall time, as memcpy's below; so quote these figures from a quiet machine, as the frame times. One
+// iteration repeats `work` for about 2 ms so that the clock's own cost vanishes at level 0; median_ms is the
+// time of one call.
 void timeCpu(benchmark::State& state, const std::function<void()>& work) {
     const double first = wallSeconds();
     work(); // also the warm-up

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "shadelab/errors.h"
+#include "shadelab/mesh_layout.h"
 #include "shadelab/sphere.h"
 
 namespace shadelab::app {
@@ -32,8 +33,8 @@ double renderBytes(const Scene& scene) {
     for (int level : levels) {
         const double vertices = double(sphereVertexCount(level)),
                      triangles = double(sphereTriangleCount(level));
-        // Smooth: position + normal floats and 32-bit indices; flat: three such vertices per triangle.
-        bytes += scene.shading == ShadingMode::Flat ? triangles * 3 * 24 : vertices * 24 + triangles * 12;
+        // The vertex arrays of the mesh's layout (mesh_layout.h), as their buffers hold them.
+        bytes += meshBytes(level, scene.shading == ShadingMode::Flat ? MeshLayout::Flat : MeshLayout::Smooth);
         // The overlay's lines (overlay.h: two 24-byte vertices a segment), on the CPU and in their buffer:
         // every edge (1.5 per triangle), and with normals one segment per face and per vertex.
         double segments = 0;

@@ -19,6 +19,7 @@
 #include "shadelab/gl/program.h"
 #include "shadelab/gl/render_target.h"
 #include "shadelab/gl/renderer.h"
+#include "shadelab/mesh_layout.h"
 #include "shadelab/subdivision.h"
 
 namespace shadelab::app {
@@ -105,11 +106,8 @@ void setGeometry(const Scene& scene, const std::map<int, BuiltLevel>& built, Rep
         row.level = std::max(row.level, level);
     }
     for (const auto& [level, b] : built) {
-        const std::size_t triangles = sphereTriangleCount(level);
-        row.vertexBytes +=
-            scene.shading == ShadingMode::Flat
-                ? 3 * triangles * sizeof(FlatVertex)
-                : sphereVertexCount(level) * sizeof(SmoothVertex) + 3 * triangles * sizeof(std::uint32_t);
+        row.vertexBytes += std::size_t(
+            meshBytes(level, scene.shading == ShadingMode::Flat ? MeshLayout::Flat : MeshLayout::Smooth));
         row.maxRadialDeviation = std::max(row.maxRadialDeviation, b.radialDeviation);
         row.maxNormalErrorDeg = std::max(row.maxNormalErrorDeg, b.normalErrorDeg);
     }
