@@ -668,6 +668,16 @@ TEST_F(DemoWindow, LessonStepsThroughAndRReturnsToTheStep) {
     expectStep(2, "end");
     demo.window().key("Home");
     expectStep(0, "home");
+    // F2 in a lesson: the step's band instead of the label, so the window shows the step's slide at its
+    // size, as `shadelab slides` draws it.
+    const std::vector<std::string> argv = {
+        SHADELAB_EXE, "slides", lesson.string(), "--out-dir", (scratch() / "slides").string(),
+        "--size",     kSize};
+    const ToolRun slides = runTool(argv, childEnvironment(""), scratch(), kWaitLimit);
+    ASSERT_TRUE(slides.ok()) << slides.describe(argv);
+    const Image slide = readPng(scratch() / "slides" / "01-one.png");
+    demo.window().key("F2");
+    EXPECT_TRUE(matches(settledCapture(demo.window(), slide), slide, kWindowTolerance, "presenting"));
     expectCleanQuit(demo);
 }
 

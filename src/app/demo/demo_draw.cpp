@@ -46,19 +46,18 @@ void drawDemo(gl::Renderer& renderer, DemoState& state, int width, int height, i
             std::max({std::abs(object.scale.x), std::abs(object.scale.y), std::abs(object.scale.z)});
         renderer.drawLinesOver(scene, probeLines(*probe, length), width, height, x);
     }
-    // Presentation mode: a lesson step's band across the bottom, the label over the bottom left above it,
-    // on top of everything; drawn here, so the window and the page draw them the same way (and `shadelab
-    // slides` the band).
+    // Presentation mode, on top of everything: in a lesson the step's band across the bottom — the picture
+    // is then what `shadelab slides` makes of the step at this size — otherwise the label over the bottom
+    // left. Drawn here, so the window and the page draw them the same way.
     if (!state.presenting) return;
-    int bottom = height;
     if (const Lesson* lesson = state.lesson()) {
         const LessonStep& step = lesson->steps[state.step()];
         const Image band = lessonBandImage(step.title, step.caption, width, height);
         renderer.drawImageOver(band, 0, height - band.height, width, height, x);
-        bottom -= band.height;
+        return;
     }
     const PresentationLabelImage label = presentationLabelImage(presentationLabel(state), width, height);
-    renderer.drawImageOver(label.image, label.margin, bottom - label.margin - label.image.height, width,
+    renderer.drawImageOver(label.image, label.margin, height - label.margin - label.image.height, width,
                            height, x);
 }
 
