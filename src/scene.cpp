@@ -28,10 +28,6 @@ std::string_view toString(DepthMode mode) {
     return "unknown";
 }
 
-std::optional<DepthMode> parseDepthMode(std::string_view text) {
-    return parseName(text, kDepthModes);
-}
-
 std::string_view toString(Overlay overlay) {
     switch (overlay) {
     case Overlay::None:
@@ -44,10 +40,6 @@ std::string_view toString(Overlay overlay) {
         return "lights";
     }
     return "unknown";
-}
-
-std::optional<Overlay> parseOverlay(std::string_view text) {
-    return parseName(text, kOverlays);
 }
 
 std::string_view toString(ProjectionType type) {

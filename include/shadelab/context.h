@@ -16,8 +16,6 @@ namespace shadelab {
 enum class Backend { Egl, Osmesa };
 std::string_view toString(Backend backend); // "egl" | "osmesa"
 std::optional<Backend> parseBackend(std::string_view text);
-// Backends compiled into this binary, primary first.
-std::vector<Backend> availableBackends();
 
 // What to make: the backend, the API and, for EGL, the device (EGL_EXT_platform_device).
 struct ContextRequest {

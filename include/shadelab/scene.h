@@ -25,7 +25,6 @@ enum class ProjectionType { Perspective, Frustum, Orthographic };
 // with the far plane at infinity (reversed-infinite; `far` then only bounds the analytic reference).
 enum class DepthMode { Standard, Reversed, ReversedInfinite };
 std::string_view toString(DepthMode mode); // "standard" | "reversed" | "reversed-infinite"
-std::optional<DepthMode> parseDepthMode(std::string_view text);
 std::string_view toString(ProjectionType type); // "perspective" | "frustum" | "orthographic"
 
 // "overlay": lines drawn over the shaded surface for teaching (the demo's W key): none; wireframe (the mesh's
@@ -35,7 +34,6 @@ std::string_view toString(ProjectionType type); // "perspective" | "frustum" | "
 // directional light arrows along its direction, a spot light its cone), in the camera's picture.
 enum class Overlay { None, Wireframe, Normals, Lights };
 std::string_view toString(Overlay overlay); // "none" | "wireframe" | "normals" | "lights"
-std::optional<Overlay> parseOverlay(std::string_view text);
 
 // The vocabularies of this header (vocabulary.h): every spelling each accepts, in order.
 inline constexpr std::array kProjectionTypes = {ProjectionType::Perspective, ProjectionType::Frustum,

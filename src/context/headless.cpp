@@ -17,11 +17,6 @@ std::optional<Backend> parseBackend(std::string_view text) {
     return std::nullopt;
 }
 
-std::vector<Backend> availableBackends() {
-    if (SHADELAB_HAVE_OSMESA) return {Backend::Egl, Backend::Osmesa};
-    return {Backend::Egl};
-}
-
 #if !SHADELAB_HAVE_OSMESA
 std::unique_ptr<HeadlessContext> makeOsmesaContext() {
     throw RuntimeError("osmesa: this shadelab was built without OSMesa (libosmesa6-dev was not found at "

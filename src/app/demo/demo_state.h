@@ -150,7 +150,6 @@ public:
     // and button change. Profile view: the row under it is profiled. Split view: a press within 8 px of
     // the divider grabs it and the drag moves it (drag() then leaves the camera alone).
     void pointer(double x, double y, bool leftHeld);
-    bool holdsDivider() const { return holdingDivider_; }
     void clearProbe() { probePoint_.reset(); }
     // The probe evaluated for the drawn scene (it follows orbits, level and mode changes); nullopt
     // without one.
