@@ -24,7 +24,7 @@ enum class ProjectionType { Perspective, Frustum, Orthographic };
 // reversed is true reversed-Z ([0, 1] clip range, near → 1, 32-bit float depth, GL_GREATER), optionally
 // with the far plane at infinity (reversed-infinite; `far` then only bounds the analytic reference).
 enum class DepthMode { Standard, Reversed, ReversedInfinite };
-std::string_view toString(DepthMode mode); // "standard" | "reversed" | "reversed-infinite"
+std::string_view toString(DepthMode mode);      // "standard" | "reversed" | "reversed-infinite"
 std::string_view toString(ProjectionType type); // "perspective" | "frustum" | "orthographic"
 
 // "overlay": lines drawn over the shaded surface for teaching (the demo's W key): none; wireframe (the mesh's
