@@ -1,7 +1,8 @@
 // The error view's compare pass (src/gl/views.cpp): per pixel |mode − exact| from two float renders of the
-// same scene, and whether the pixel is interior as `shadelab report` counts it (src/app/report.cpp
-// measureError with interiorMask(…, 2)): the 5×5 square around it lies inside the image, is covered by the
-// same object in the exact render (its alpha holds object index + 1) and is covered in the mode's render.
+// same scene, and whether the pixel is interior as `shadelab report` counts it
+// (src/app/report/report_error.cpp, measureError with interiorMask(…, 2)): the 5×5 square around it lies
+// inside the image, is covered by the same object in the exact render (its alpha holds object index + 1)
+// and is covered in the mode's render.
 // No defines. Output, in 1/255 units: r = mean of |ΔR|, |ΔG|, |ΔB| on interior pixels (else 0); g = 1 on
 // interior pixels (else 0); b = largest of them on interior pixels (else 0); a = largest of them wherever
 // either render covers the pixel, −1 where neither does (the heatmap shows it; the background stays).

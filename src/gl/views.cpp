@@ -30,7 +30,7 @@ constexpr glm::u8vec4 kModeCurve{255, 150, 40, 255};   // orange: the current mo
 constexpr glm::u8vec4 kExactCurve{255, 255, 255, 255}; // white: exact
 constexpr glm::u8vec4 kEdgeTick{80, 220, 255, 255};    // cyan: a mesh edge crosses the row
 
-// The labels' font scale: 5×7 glyphs twice as large from a 400-pixel picture on.
+// The labels' font scale: lines of 11 px (textLineHeight(1)), twice that from a 400-pixel picture on.
 int textScale(int width, int height) {
     return std::min(width, height) >= 400 ? 2 : 1;
 }

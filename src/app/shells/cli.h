@@ -33,7 +33,7 @@ struct ParsedCommand {
     DemoOptions demo;            // Demo
     BenchOptions bench;          // Bench: frames, warm-up and filter; size, backend and JSON are below
     std::string benchSize = "800x600", benchJson; // Bench: --size (checked by composeSize), --json
-    // Report (app/report.h, which main.cpp builds the options of): scene and backend as above.
+    // Report (app/report/report.h, whose options main.cpp builds): scene and backend as above.
     std::string reportOut = "report", reportLevels = "0..8";
     bool reportNoAuto = false;
     bool reportNoPlot = false;
