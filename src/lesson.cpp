@@ -122,18 +122,23 @@ LessonStep readStep(const Json& step, const std::string& path, const SceneTextRe
 
 } // namespace
 
+bool detail::isLessonTree(const Json& tree) {
+    return tree.is_object() && tree.contains("steps");
+}
+
 bool isLessonText(std::string_view jsonText) {
     try {
-        const Json tree = parseJson(jsonText); // the scene's limits: nesting, duplicate keys
-        return tree.is_object() && tree.contains("steps");
+        return isLessonTree(parseJson(jsonText)); // the scene's limits: nesting, duplicate keys
     } catch (const InputError&) {
         return false;
     }
 }
 
-Lesson parseLesson(std::string_view jsonText, std::string_view source, const SceneTextReader& readScene) {
+namespace {
+
+// parseLesson on a tree already parsed.
+Lesson lessonFromTree(const Json& root, std::string_view source, const SceneTextReader& readScene) {
     try {
-        const Json root = parseJson(jsonText);
         requireObject(root, "");
         static constexpr std::array<std::string_view, 2> kKeys = {"title", "steps"};
         checkKeys(root, "", kKeys);
@@ -157,24 +162,27 @@ Lesson parseLesson(std::string_view jsonText, std::string_view source, const Sce
     }
 }
 
-namespace {
-
-Lesson parseLessonBeside(const std::string& text, const std::filesystem::path& path) {
+// A lesson file's tree, its scene files read beside it.
+Lesson lessonBeside(const Json& root, const std::filesystem::path& path) {
     const std::filesystem::path folder = path.parent_path();
-    return parseLesson(text, path.string(),
-                       [&folder](const std::string& file) { return readSceneFile(folder / file); });
+    return lessonFromTree(root, path.string(),
+                          [&folder](const std::string& file) { return readSceneFile(folder / file); });
 }
 
 } // namespace
 
+Lesson parseLesson(std::string_view jsonText, std::string_view source, const SceneTextReader& readScene) {
+    return lessonFromTree(parseJsonFrom(jsonText, source), source, readScene);
+}
+
 Lesson loadLesson(const std::filesystem::path& path) {
-    return parseLessonBeside(readSceneFile(path), path);
+    return lessonBeside(parseJsonFrom(readSceneFile(path), path.string()), path);
 }
 
 std::variant<Scene, Lesson> loadSceneOrLesson(const std::filesystem::path& path) {
-    const std::string text = readSceneFile(path);
-    if (!isLessonText(text)) return parseScene(text, path.string());
-    return parseLessonBeside(text, path);
+    const Json tree = parseJsonFrom(readSceneFile(path), path.string()); // parsed once, whichever it is
+    if (!isLessonTree(tree)) return sceneFromTree(tree, path.string());
+    return lessonBeside(tree, path);
 }
 
 std::string slideFileName(std::size_t index, std::size_t count, std::string_view title) {

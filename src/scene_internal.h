@@ -88,5 +88,12 @@ std::string readSceneFile(const std::filesystem::path& path);
 // The text as a JSON tree: nesting bounded, duplicate keys refused, every syntax error named with its
 // byte and, where a number is out of range, its JSON path.
 Json parseJson(std::string_view text);
+// `source`'s text as a tree, an InputError prefixed with "<source>: ": the one parse of a file that may be a
+// scene or a lesson (lesson.cpp reads which it is from the tree).
+Json parseJsonFrom(std::string_view text, std::string_view source);
+// sceneFromJson with its errors prefixed with "<source>: ", as parseScene gives them.
+Scene sceneFromTree(const Json& tree, std::string_view source);
+// A tree that is a lesson rather than a scene: an object with "steps" (lesson.cpp).
+bool isLessonTree(const Json& tree);
 
 } // namespace shadelab::detail

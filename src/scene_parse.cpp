@@ -344,12 +344,24 @@ Scene detail::sceneFromJson(const Json& root) {
     return scene;
 }
 
-Scene parseScene(std::string_view jsonText, std::string_view source) {
+Json detail::parseJsonFrom(std::string_view text, std::string_view source) {
     try {
-        return sceneFromJson(parseJson(jsonText));
+        return parseJson(text);
     } catch (const InputError& e) {
         throw InputError(std::string(source) + ": " + e.what());
     }
+}
+
+Scene detail::sceneFromTree(const Json& tree, std::string_view source) {
+    try {
+        return sceneFromJson(tree);
+    } catch (const InputError& e) {
+        throw InputError(std::string(source) + ": " + e.what());
+    }
+}
+
+Scene parseScene(std::string_view jsonText, std::string_view source) {
+    return sceneFromTree(parseJsonFrom(jsonText, source), source);
 }
 
 Material parseMaterial(std::string_view jsonText, std::size_t object, std::string_view source) {
@@ -365,14 +377,14 @@ Material parseMaterial(std::string_view jsonText, std::size_t object, std::strin
 }
 
 Scene loadScene(const std::filesystem::path& path) {
-    const std::string text = readSceneFile(path);
-    if (isLessonText(text))
+    const Json tree = parseJsonFrom(readSceneFile(path), path.string());
+    if (isLessonTree(tree))
         throw InputError(
             printable(path.string()) +
             ": a lesson (it has \"steps\"), not a scene: `shadelab LESSON` steps through it in the "
             "window, `shadelab slides LESSON --out-dir DIR` exports it, `shadelab check LESSON` "
             "reads it");
-    return parseScene(text, path.string());
+    return sceneFromTree(tree, path.string());
 }
 
 } // namespace shadelab
