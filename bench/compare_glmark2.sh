@@ -164,7 +164,8 @@ for round in $(seq "$rounds"); do
         run_glmark2 "$tmp/glmark2-$round-$mode.txt" \
             -b "shading:shading=$mode:model=shadelab-sphere:duration=$duration"
         # phong's run times the one-colour culled sphere too: the two in one process, one moment.
-        extra=$([[ $mode == phong ]] && echo "|one-colour-culled" || true)
+        extra=""
+        if [[ $mode == phong ]]; then extra="|one-colour-culled"; fi
         run_shadelab "$tmp/shadelab-$round-$mode" "frame/glmark2-equivalent/($mode$extra)/"
     done
     echo "round $round/$rounds: glmark2's cat, shadelab's limits ..." >&2

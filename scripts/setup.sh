@@ -30,7 +30,7 @@ tools_packages=(
   xvfb xauth xdotool
   # CI's checks: formatting, static analysis, the sanitizer tree (clang, its runtimes, lld) and fuzzing
   # (clang's libFuzzer)
-  clang-format clang-tidy clang libclang-rt-14-dev lld-14
+  clang-format clang-tidy clang libclang-rt-14-dev lld-14 shellcheck
   # the page's build and its tests (scripts/web.sh installs them too)
   emscripten chromium chromium-driver python3-selenium
 )

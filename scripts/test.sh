@@ -5,7 +5,8 @@
 #      need (X, clang's tools, emscripten, Chromium) install beside it
 #   2. from here on, beside the foreground and with the cores it leaves idle (lower CPU priorities): the
 #      sanitizer tree's build (clang; -O1, the tests' own sources -O0), clang-tidy (.clang-tidy) on src/, the fuzzers' build
-#   3. the browser build (scripts/web.sh build); formatting (.clang-format) of src/, include/, tests/, web/
+#   3. the browser build (scripts/web.sh build); formatting (.clang-format) of src/, include/, tests/, web/;
+#      shellcheck on every shell script
 #   4. the whole test suite on the release build: CPU tests, GL tests on every headless backend (EGL with
 #      OpenGL and with OpenGL ES, OSMesa), the command line end to end, the demo window under Xvfb, the page
 #      in headless Chromium
@@ -21,7 +22,6 @@
 # Extra arguments go to every ctest run (e.g. -R cpu.). SHADELAB_QUICK=1 skips step 2 and stops after step 4.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-root=$PWD
 jobs=$(nproc)
 logs=$(mktemp -d "${TMPDIR:-/tmp}/shadelab-test-logs.XXXXXX")
 
@@ -30,23 +30,44 @@ cleanup=()             # files of the run's own, removed as it ends
 # ---- stage timing: a table of every stage's duration, printed at the end, whether it passed or not ----
 names=()
 seconds=()
+cpus=() # each stage's CPU seconds: its own processes' (a foreground stage's without the background stages')
 began=$(date +%s)
 stage_began=$began
 stage_name=""
+# Sets cpu_now to the CPU seconds (user + system) of the processes this shell has waited for: `times`' second
+# line, through the file $1. `times` runs in this shell, never in a pipeline or $(...): a subshell's `times`
+# counts only the subshell's own children.
+children_cpu() {
+  times >"$1"
+  cpu_now=$(tail -n 1 "$1" | awk '{ split($1, a, /[ms]/); split($2, b, /[ms]/)
+    printf "%d", a[1] * 60 + a[2] + b[1] * 60 + b[2] }')
+}
+stage_cpu_began=0
+background_cpu=0 # the CPU seconds of background stages waited for during the current stage
 stage() {
-  local now
+  local now cpu
   now=$(date +%s)
+  children_cpu "$logs/times"
+  cpu=$cpu_now
   if [ -n "$stage_name" ]; then
     names+=("$stage_name")
     seconds+=($((now - stage_began)))
+    cpus+=($((cpu - stage_cpu_began - background_cpu)))
   fi
   stage_name=$1
   stage_began=$now
+  stage_cpu_began=$cpu
+  background_cpu=0
   [ -n "$1" ] && printf '\n=== %s\n' "$1"
   return 0
 }
-# A stage that ran beside others: its own start and end.
-background_stage() { names+=("$1 (beside the others)"); seconds+=($(($3 - $2))); }
+# A stage that ran beside others: its own start and end, and its CPU seconds.
+background_stage() {
+  names+=("$1 (beside the others)")
+  seconds+=($(($3 - $2)))
+  cpus+=("$4")
+  background_cpu=$((background_cpu + $4))
+}
 # A background stage still running when the script ends (a failure elsewhere) ends with it, children first.
 kill_tree() {
   local child
@@ -60,18 +81,17 @@ print_table() {
   rm -f "${cleanup[@]}"
   stage ""
   printf '\n=== stage durations (%s, %s cores)\n' "$(date -u +%Y-%m-%dT%H:%MZ)" "$jobs"
+  printf '%-72s %7s %7s\n' "" "wall" "CPU"
   for i in "${!names[@]}"; do
-    printf '%-72s %4d:%02d\n' "${names[$i]}" $((seconds[i] / 60)) $((seconds[i] % 60))
+    printf '%-72s %4d:%02d %4d:%02d\n' "${names[$i]}" $((seconds[i] / 60)) $((seconds[i] % 60)) \
+      $((cpus[i] / 60)) $((cpus[i] % 60))
   done
-  local total=$(($(date +%s) - began))
-  printf '%-72s %4d:%02d\n' "total" $((total / 60)) $((total % 60))
   # The processes' CPU time (user + system, the background stages' too), against the wall time of all cores.
-  local cpu
-  times >"$logs/times" # here, not in a subshell: a subshell's `times` counts only its own children
-  cpu=$(tail -n 1 "$logs/times" | awk '{ split($1, a, /[ms]/); split($2, b, /[ms]/)
-    printf "%d", a[1] * 60 + a[2] + b[1] * 60 + b[2] }')
-  printf '%-72s %4d:%02d\n' "CPU time of every stage's processes ($jobs cores: at most $jobs× the total)" \
-    $((cpu / 60)) $((cpu % 60))
+  local total=$(($(date +%s) - began)) cpu
+  children_cpu "$logs/times"
+  cpu=$cpu_now
+  printf '%-72s %4d:%02d %4d:%02d\n' "total ($jobs cores: the CPU time is at most $jobs× the wall time)" \
+    $((total / 60)) $((total % 60)) $((cpu / 60)) $((cpu % 60))
   [ "$status" -eq 0 ] || printf 'FAILED (exit %d) in: %s\n' "$status" "${names[-1]:-setup}"
 }
 trap print_table EXIT
@@ -84,9 +104,14 @@ in_background() {
   shift 2
   starts[$name]=$(date +%s)
   # A subshell that lowers its own priority, so that it can run this script's functions (nice cannot).
+  # Its CPU seconds go to $logs/NAME.cpu (`times` in the subshell counts the subshell's children).
   (
     renice -n "$niceness" -p "$BASHPID" >/dev/null
-    "$@"
+    status=0
+    "$@" || status=$?
+    children_cpu "$logs/$name.times"
+    echo "$cpu_now" >"$logs/$name.cpu"
+    exit "$status"
   ) >"$logs/$name.log" 2>&1 &
   pids[$name]=$!
 }
@@ -94,7 +119,7 @@ finish() {
   local name=$1 status=0
   wait "${pids[$name]}" || status=$?
   unset "pids[$name]"
-  background_stage "$name" "${starts[$name]}" "$(date +%s)"
+  background_stage "$name" "${starts[$name]}" "$(date +%s)" "$(cat "$logs/$name.cpu" 2>/dev/null || echo 0)"
   if [ "$status" -ne 0 ]; then
     echo "shadelab: $name failed (exit $status); its log ($logs/$name.log):"
     tail -n 200 "$logs/$name.log"
@@ -144,8 +169,9 @@ fi
 stage "browser build (WebGL 2, emscripten)"
 scripts/web.sh build
 
-stage "format check (clang-format)"
+stage "format check (clang-format) and the shell scripts' check (shellcheck)"
 git ls-files 'src/*.cpp' 'src/*.h' 'include/*.h' 'tests/*.cpp' 'tests/*.h' 'web/*.cpp' | xargs clang-format --dry-run --Werror
+git ls-files '*.sh' .ci/run | xargs shellcheck
 
 stage "tests (release build)"
 # The window and page tests first: they wait on Xvfb and Chromium, so -j overlaps them with the rest.
