@@ -6,7 +6,7 @@
 #   2. from here on, beside the foreground and with the cores it leaves idle (lower CPU priorities): the
 #      sanitizer tree's build (clang; -O1, the tests' own sources -O0), clang-tidy (.clang-tidy) on src/, the fuzzers' build
 #   3. the browser build (scripts/web.sh build); formatting (.clang-format) of src/, include/, tests/, web/;
-#      shellcheck on every shell script
+#      every shell script checked by shellcheck
 #   4. the whole test suite on the release build: CPU tests, GL tests on every headless backend (EGL with
 #      OpenGL and with OpenGL ES, OSMesa), the command line end to end, the demo window under Xvfb, the page
 #      in headless Chromium
