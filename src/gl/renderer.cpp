@@ -152,6 +152,46 @@ const GpuMesh& Renderer::mesh(int level, VertexNormals normals, MeshLayout layou
     return *slot;
 }
 
+const Renderer::DrawPlan& Renderer::drawPlan(const Scene& sized, const ProgramVariant& variant) {
+    // The views draw several scenes a frame (a split's two sides, the error view's passes): the last few
+    // plans are kept, the latest first.
+    constexpr std::size_t kPlansKept = 4;
+    for (std::size_t i = 0; i < plans_.size(); ++i) {
+        const DrawPlan& p = plans_[i];
+        if (p.specialization == specialization_ && p.variant == variant && p.scene == sized) {
+            if (i != 0)
+                std::rotate(plans_.begin(), plans_.begin() + std::ptrdiff_t(i),
+                            plans_.begin() + std::ptrdiff_t(i) + 1);
+            return plans_.front();
+        }
+    }
+    DrawPlan plan{sized, variant, specialization_, {}, {}};
+    plan.programs.reserve(sized.objects.size());
+    const SurfaceProgram* previous = nullptr; // objects of one material in a row share a program
+    for (std::size_t i = 0; i < sized.objects.size(); ++i) {
+        const Material& material = sized.objects[i].material;
+        if (specialization_ != Specialization::Values) {
+            plan.programs.push_back(&program(variant));
+        } else if (previous && material == sized.objects[i - 1].material) {
+            plan.programs.push_back(previous);
+        } else {
+            plan.programs.push_back(&program(variant.withValues(sized, material)));
+        }
+        previous = plan.programs.back();
+    }
+    if (sized.shading != ShadingMode::Exact) {
+        const MeshLayout layout = sized.shading == ShadingMode::Flat && !variant.flatGeometryShader
+                                      ? MeshLayout::Flat
+                                      : MeshLayout::Smooth;
+        plan.meshes.reserve(sized.objects.size());
+        for (const SceneObject& object : sized.objects)
+            plan.meshes.push_back(&mesh(subdivisionLevel(sized, object), sized.vertexNormals, layout));
+    }
+    if (plans_.size() == kPlansKept) plans_.pop_back();
+    plans_.insert(plans_.begin(), std::move(plan));
+    return plans_.front();
+}
+
 const SurfaceProgram& Renderer::program(const ProgramVariant& variant) {
     auto& slot = programs_[variant];
     if (!slot) {
@@ -215,22 +255,30 @@ void Renderer::renderScene(const Scene& scene, int width, int height, int x) {
             glUniform1f(at.toonBandWidth, float(1.0 / scene.toonBands));
         }
     };
-    const ObjectProgram objectProgram = [&, bound = static_cast<const SurfaceProgram*>(nullptr)](
-                                            const SceneObject& object) mutable -> const SurfaceLocations& {
-        const SurfaceProgram& surface = program(
-            specialization_ == Specialization::Values ? variant.withValues(sized, object.material) : variant);
+    const DrawPlan& plan = drawPlan(sized, variant);
+    // A program keeps its uniforms: the light values are set when it is bound and again only for an
+    // object of another material.
+    const ObjectProgram objectProgram = [&, bound = static_cast<const SurfaceProgram*>(nullptr),
+                                         valuesOf = static_cast<const Material*>(nullptr)](
+                                            std::size_t index) mutable -> const SurfaceLocations& {
+        const SurfaceProgram& surface = *plan.programs[index];
+        const Material& material = sized.objects[index].material;
         if (&surface != bound) {
             glUseProgram(surface.program.get());
             setFrameUniforms(surface.at);
             bound = &surface;
+            valuesOf = nullptr;
         }
-        setLightValues(surface.at, variant.specialized, lightsView, object.material);
+        if (!valuesOf || *valuesOf != material) {
+            setLightValues(surface.at, variant.specialized, lightsView, material);
+            valuesOf = &material;
+        }
         return surface.at;
     };
     if (scene.shading == ShadingMode::Exact) {
         drawExact(sized, view, objectProgram, x);
     } else {
-        drawMeshes(sized, view, variant, objectProgram);
+        drawMeshes(sized, view, variant, plan, objectProgram);
     }
     glUseProgram(0);
     glDisable(GL_CULL_FACE);
@@ -241,12 +289,10 @@ void Renderer::renderScene(const Scene& scene, int width, int height, int x) {
 }
 
 void Renderer::drawMeshes(const Scene& sized, const SceneView& view, const ProgramVariant& variant,
-                          const ObjectProgram& objectProgram) {
-    const MeshLayout layout = sized.shading == ShadingMode::Flat && !variant.flatGeometryShader
-                                  ? MeshLayout::Flat
-                                  : MeshLayout::Smooth;
-    for (const SceneObject& object : sized.objects) {
-        const SurfaceLocations& at = objectProgram(object);
+                          const DrawPlan& plan, const ObjectProgram& objectProgram) {
+    for (std::size_t index = 0; index < sized.objects.size(); ++index) {
+        const SceneObject& object = sized.objects[index];
+        const SurfaceLocations& at = objectProgram(index);
         const glm::dmat4 viewFromObject = view.viewFromWorld * worldFromObject(object);
         if (ndcObserver_) {
             // Both faces: the observer may look at the inside of an object the near plane cuts open.
@@ -260,7 +306,7 @@ void Renderer::drawMeshes(const Scene& sized, const SceneView& view, const Progr
         }
         if (variant.flatGeometryShader)
             glUniform1f(at.handedness, glm::determinant(glm::dmat3(viewFromObject)) < 0 ? -1.0f : 1.0f);
-        mesh(subdivisionLevel(sized, object), sized.vertexNormals, layout).draw();
+        plan.meshes[index]->draw();
     }
 }
 
@@ -282,7 +328,7 @@ void Renderer::drawExact(const Scene& sized, const SceneView& view, const Object
         const glm::vec4 rect = proxyRectangle(view.clipFromView, viewFromObject, v.near, view.orthographic,
                                               sized.width, sized.height);
         if (!(rect.x < rect.z)) continue;
-        const SurfaceLocations& at = objectProgram(object);
+        const SurfaceLocations& at = objectProgram(index);
         glUniform4f(at.viewport, float(x), 0.0f, float(sized.width), float(sized.height));
         glUniform4f(at.nearRect, float(v.left), float(v.right), float(v.bottom), float(v.top));
         // An infinite far plane clips nothing behind (as the reference): the largest float's order stands

@@ -85,6 +85,14 @@ int ScreenPass::location(const char* name) const {
     return glGetUniformLocation(program.get(), name);
 }
 
+void ScreenPass::setSampler(const char* name, int unit) const {
+    GLint current = 0;
+    glGetIntegerv(GL_CURRENT_PROGRAM, &current);
+    glUseProgram(program.get());
+    glUniform1i(location(name), unit);
+    glUseProgram(GLuint(current));
+}
+
 void ScreenPass::draw(double x0, double y0, double x1, double y1, int viewportWidth,
                       int viewportHeight) const {
     glUniform4f(ndcRect, float(2 * x0 / viewportWidth - 1), float(2 * y0 / viewportHeight - 1),
@@ -115,9 +123,8 @@ void ImagePass::draw(const Image& image, int left, int top, int viewportX, int v
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glUseProgram(sprite_.program.get());
     glBindVertexArray(empty_.get());
-    glUniform1i(sprite_.location("uImage"), 0);
     const int bottom = viewportHeight - top - image.height;
-    glUniform2f(sprite_.location("uOrigin"), float(viewportX + left), float(bottom));
+    glUniform2f(sprite_.origin, float(viewportX + left), float(bottom));
     glEnable(GL_BLEND);
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
     sprite_.draw(left, bottom, left + image.width, bottom + image.height, viewportWidth, viewportHeight);

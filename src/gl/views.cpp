@@ -85,8 +85,28 @@ struct Views::Targets {
     std::vector<FloatTarget> reduce;
 };
 
+namespace {
+// The error view's passes (shaders/error, reduce and heatmap.frag.glsl), their samplers' units set once.
+struct ErrorPass : ScreenPass {
+    ErrorPass() : ScreenPass("error.frag.glsl") {
+        setSampler("uMode", 0);
+        setSampler("uExact", 1);
+    }
+};
+struct ReducePass : ScreenPass {
+    ReducePass() : ScreenPass("reduce.frag.glsl") { setSampler("uInput", 0); }
+};
+struct HeatmapPass : ScreenPass {
+    HeatmapPass() : ScreenPass("heatmap.frag.glsl") { setSampler("uError", 0); }
+    int origin = location("uOrigin"), scale = location("uScale"), background = location("uBackground"),
+        legend = location("uLegend");
+};
+} // namespace
+
 struct Views::Programs {
-    ScreenPass error{"error.frag.glsl"}, reduce{"reduce.frag.glsl"}, heatmap{"heatmap.frag.glsl"};
+    ErrorPass error;
+    ReducePass reduce;
+    HeatmapPass heatmap;
     ImagePass images;
 };
 
@@ -172,15 +192,12 @@ void Views::drawError(const Scene& scene, int width, int height, int x, unsigned
     t.error.bind();
     glViewport(0, 0, width, height);
     glUseProgram(p.error.program.get());
-    glUniform1i(p.error.location("uMode"), 0);
-    glUniform1i(p.error.location("uExact"), 1);
     bindTexture(0, t.mode.color);
     bindTexture(1, t.exact.color);
     p.error.draw(0, 0, width, height, width, height);
 
     // Reduction: 4×4 blocks per step down to one texel (sum of the mean error, interior pixels, largest).
     glUseProgram(p.reduce.program.get());
-    glUniform1i(p.reduce.location("uInput"), 0);
     std::size_t steps = 0;
     for (int w = width, h = height; w > 1 || h > 1; w = (w + 3) / 4, h = (h + 3) / 4) ++steps;
     if (t.reduce.size() < steps) t.reduce.resize(steps); // before taking pointers into it
@@ -209,12 +226,11 @@ void Views::drawError(const Scene& scene, int width, int height, int x, unsigned
     glClearColor(float(scene.background.x), float(scene.background.y), float(scene.background.z), 0.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     glUseProgram(p.heatmap.program.get());
-    glUniform1i(p.heatmap.location("uError"), 0);
-    glUniform2f(p.heatmap.location("uOrigin"), float(x), 0.0f);
-    glUniform1f(p.heatmap.location("uScale"), float(figures_.scale));
+    glUniform2f(p.heatmap.origin, float(x), 0.0f);
+    glUniform1f(p.heatmap.scale, float(figures_.scale));
     const glm::vec3 background(glm::clamp(scene.background, 0.0, 1.0));
-    glUniform3fv(p.heatmap.location("uBackground"), 1, glm::value_ptr(background));
-    glUniform1i(p.heatmap.location("uLegend"), 0);
+    glUniform3fv(p.heatmap.background, 1, glm::value_ptr(background));
+    glUniform1i(p.heatmap.legend, 0);
     bindTexture(0, t.error.color);
     p.heatmap.draw(0, 0, width, height, width, height);
 
@@ -222,7 +238,7 @@ void Views::drawError(const Scene& scene, int width, int height, int x, unsigned
     const int barWidth = 8 * scale, barLeft = width - barWidth - 8 * scale;
     const int barTop = 22 * scale, barBottom = height - 22 * scale;
     if (barBottom - barTop > 8) {
-        glUniform1i(p.heatmap.location("uLegend"), 1);
+        glUniform1i(p.heatmap.legend, 1);
         p.heatmap.draw(barLeft, height - barBottom, barLeft + barWidth, height - barTop, width, height);
         const Image top = labelImage({formatScale(figures_.scale) + "/255"}, scale);
         const Image bottom = labelImage({"0"}, scale);

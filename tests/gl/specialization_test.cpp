@@ -140,6 +140,56 @@ TEST_P(Specialization, FlatGeometryShaderMatchesDuplicatedVertices) {
     }
 }
 
+// The renderer resolves each object's program and mesh once per scene (Renderer::drawPlan) and sets an
+// object's light values only when its material differs from the object drawn before it with the same
+// program. So: a sequence of frames, each changing one thing (a material, a light's colour, the camera,
+// the middle one of three objects in a row, a level), drawn with each specialization, must give each
+// frame's own picture — the uber program's of that scene, drawn afterwards, within 1/255. A plan kept past
+// a change, or light values left from another object, shows as that frame's old colours.
+TEST(SpecializationCache, EveryChangeBetweenFramesIsDrawn) {
+    SHADELAB_REQUIRE_GL(renderer);
+    std::vector<Scene> frames;
+    Scene scene = litSphereScene(64, LightType::Point);
+    scene.shading = ShadingMode::Phong;
+    scene.objects[0].radius = 0.45;
+    scene.objects[0].subdivisions = 3;
+    for (double x : {-1.0, 0.0, 1.0}) { // three objects of one material in a row
+        SceneObject object = scene.objects[0];
+        object.center = {x, 0, 0};
+        scene.objects.push_back(object);
+    }
+    scene.objects.erase(scene.objects.begin());
+    frames.push_back(scene);
+    scene.objects[1].material.diffuse = {0.1, 0.9, 0.2}; // the middle one alone
+    frames.push_back(scene);
+    scene.objects[1].material.diffuse = scene.objects[0].material.diffuse; // back to the frame before
+    frames.push_back(scene);
+    scene.lights[0].diffuse = {1, 0.3, 0.3};
+    frames.push_back(scene);
+    scene.eye = {1, 1, 4};
+    frames.push_back(scene);
+    scene.objects[2].subdivisions = 0;
+    frames.push_back(scene);
+    scene.objects[0].material.shininess = 3;
+    frames.push_back(scene);
+    for (const auto& [specialization, label] : kSpecializationLabels) {
+        if (specialization == gl::Specialization::None) continue;
+        std::vector<Image> drawn;
+        renderer->setSpecialization(specialization);
+        for (const Scene& frame : frames) drawn.push_back(renderer->render(frame));
+        renderer->setSpecialization(gl::Specialization::None);
+        for (std::size_t i = 0; i < frames.size(); ++i) {
+            const Comparison c = compareImages(drawn[i], renderer->render(frames[i]), Tolerance{1, 0.05, 0});
+            EXPECT_TRUE(c.passed) << label << ", frame " << i << ": " << c.summary();
+            if (i > 0) {
+                EXPECT_FALSE(compareImages(drawn[i], drawn[i - 1], Tolerance{0, 0, 0}).passed)
+                    << label << ", frame " << i << " drew the frame before's picture";
+            }
+        }
+    }
+    renderer->setSpecialization(gl::Specialization::Values);
+}
+
 TEST(SpecializationCache, SwitchingBackNeverRecompiles) {
     SHADELAB_REQUIRE_GL(renderer);
     renderer->setSpecialization(gl::Specialization::Lights);

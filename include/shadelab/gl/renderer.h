@@ -8,6 +8,7 @@
 #include <optional>
 #include <span>
 #include <tuple>
+#include <vector>
 
 #include "shadelab/gl/mesh.h"
 #include "shadelab/gl/program.h"
@@ -76,12 +77,23 @@ private:
     };
     const LineProgram& lineProgram();
     void drawOverlay(const Scene& sized, const SceneView& view);
-    // Binds the program that draws an object, with the frame's and the object's uniforms set; returns
-    // where the program keeps the rest.
-    using ObjectProgram = std::function<const SurfaceLocations&(const SceneObject&)>;
+    // What each object of a scene is drawn with, resolved once for the scene and kept while neither it nor
+    // a setting changes: a frame then builds no variant's #define text and finds no program or mesh in a
+    // map (programs_ and meshes_ never drop an entry, so the pointers stay valid).
+    struct DrawPlan {
+        Scene scene;                                 // the scene as renderScene draws it (atSize, the term)
+        ProgramVariant variant;                      // the frame's variant, before an object's values
+        Specialization specialization{};             // specialization_ when it was made
+        std::vector<const SurfaceProgram*> programs; // one per object
+        std::vector<const GpuMesh*> meshes;          // one per object (none in exact shading)
+    };
+    const DrawPlan& drawPlan(const Scene& sized, const ProgramVariant& variant);
+    // Binds the program that draws the object of that index, with the frame's and the object's uniforms
+    // set; returns where the program keeps the rest.
+    using ObjectProgram = std::function<const SurfaceLocations&(std::size_t index)>;
     using FrameUniforms = std::function<void(const SurfaceLocations&)>;
     void drawMeshes(const Scene& sized, const SceneView& view, const ProgramVariant& variant,
-                    const ObjectProgram& objectProgram);
+                    const DrawPlan& plan, const ObjectProgram& objectProgram);
     void drawExact(const Scene& sized, const SceneView& view, const ObjectProgram& objectProgram, int x);
 
     Specialization specialization_ = Specialization::Values;
@@ -97,6 +109,7 @@ private:
     bool exactObjectIds_ = false, exactToon_ = false;
     std::optional<glm::dmat4> ndcObserver_;
     std::unique_ptr<Views> views_;
+    std::vector<DrawPlan> plans_; // drawPlan's, the latest first
 };
 
 } // namespace shadelab::gl

@@ -26,10 +26,13 @@ struct FloatTarget {
     std::vector<float> readRow(int y) const; // row y (from the bottom) as RGBA floats
 };
 
-// A fragment shader (shaders/<fragment>, no defines) over a rectangle from shaders/quad.vert.glsl.
+// A fragment shader (shaders/<fragment>, no defines) over a rectangle from shaders/quad.vert.glsl. A pass
+// finds its uniforms' locations once, when it is built (location), and gives each sampler its texture unit
+// then (setSampler): a frame looks nothing up by name.
 struct ScreenPass {
     explicit ScreenPass(const char* fragment);
     int location(const char* name) const;
+    void setSampler(const char* name, int unit) const; // leaves the current program as it was
     // The rectangle [x0, x1] × [y0, y1] of the current viewport, in pixels from its lower left; needs a
     // vertex array bound (none of its attributes are read).
     void draw(double x0, double y0, double x1, double y1, int viewportWidth, int viewportHeight) const;
@@ -52,7 +55,11 @@ public:
     const VertexArray& emptyVertexArray() const { return empty_; }
 
 private:
-    ScreenPass sprite_{"sprite.frag.glsl"};
+    struct SpritePass : ScreenPass {
+        SpritePass() : ScreenPass("sprite.frag.glsl") { setSampler("uImage", 0); }
+        int origin = location("uOrigin");
+    };
+    SpritePass sprite_;
     VertexArray empty_;
     Texture texture_;
 };

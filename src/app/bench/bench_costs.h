@@ -11,6 +11,7 @@ namespace shadelab::app {
 
 std::vector<RatioSpec> registerSphereCosts();                       // bench_sphere.cpp, on the CPU
 std::vector<RatioSpec> registerFrameCosts(Gpu& gpu);                // bench_frames.cpp, limits and glmark2
+std::vector<RatioSpec> registerObjectCosts(Gpu& gpu);               // bench_objects.cpp, many objects
 std::vector<RatioSpec> registerProcessCosts(const BenchOptions& o); // bench_processes.cpp
 
 } // namespace shadelab::app
