@@ -165,26 +165,4 @@ bool enableDebugOutput(std::function<void(const std::string&)>* sink) {
     return true;
 }
 
-void deleteBuffer(Id id) {
-    glDeleteBuffers(1, &id);
-}
-void deleteVertexArray(Id id) {
-    glDeleteVertexArrays(1, &id);
-}
-void deleteShader(Id id) {
-    glDeleteShader(id);
-}
-void deleteProgram(Id id) {
-    glDeleteProgram(id);
-}
-void deleteFramebuffer(Id id) {
-    glDeleteFramebuffers(1, &id);
-}
-void deleteRenderbuffer(Id id) {
-    glDeleteRenderbuffers(1, &id);
-}
-void deleteTexture(Id id) {
-    glDeleteTextures(1, &id);
-}
-
 } // namespace shadelab::gl

@@ -19,27 +19,14 @@ void attribute(GLuint location, GLsizei stride, std::size_t offset) {
     glVertexAttribPointer(location, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(offset));
 }
 
-Id genVertexArray() {
-    Id id = 0;
-    glGenVertexArrays(1, &id);
-    return id;
-}
-
-Id genBuffer() {
-    Id id = 0;
-    glGenBuffers(1, &id);
-    return id;
-}
-
 } // namespace
 
 GpuMesh::GpuMesh(const SphereMesh& mesh, MeshLayout layout)
-    : layout_(layout), triangles_(int(mesh.triangles.size())), vao_(genVertexArray()),
-      vertices_(genBuffer()) {
+    : layout_(layout), triangles_(int(mesh.triangles.size())) {
     glBindVertexArray(vao_.get());
     if (layout == MeshLayout::Smooth) {
         upload(GL_ARRAY_BUFFER, vertices_, smoothVertices(mesh));
-        indices_ = Buffer(genBuffer());
+        indices_ = Buffer();
         upload(GL_ELEMENT_ARRAY_BUFFER, indices_, smoothIndices(mesh)); // recorded in the VAO
         attribute(kPositionAttribute, sizeof(SmoothVertex), offsetof(SmoothVertex, position));
         attribute(kNormalAttribute, sizeof(SmoothVertex), offsetof(SmoothVertex, normal));
@@ -61,7 +48,7 @@ void GpuMesh::draw() const {
     glBindVertexArray(0);
 }
 
-GpuLines::GpuLines() : vao_(genVertexArray()), vertices_(genBuffer()) {
+GpuLines::GpuLines() {
     glBindVertexArray(vao_.get());
     glBindBuffer(GL_ARRAY_BUFFER, vertices_.get());
     attribute(0, sizeof(LineVertex), offsetof(LineVertex, position));

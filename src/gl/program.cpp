@@ -42,7 +42,7 @@ std::string infoLog(GLuint object, bool isProgram) {
 
 // Compiles `source`; `where` names it in messages.
 Shader compileSource(GLenum stage, const std::string& source, const std::string& where) {
-    Shader shader(glCreateShader(stage));
+    Shader shader(stage);
     const char* text = source.c_str();
     glShaderSource(shader.get(), 1, &text, nullptr);
     glCompileShader(shader.get());
@@ -243,8 +243,8 @@ Program buildProgram(const ProgramVariant& variant) {
         compileStage(GL_VERTEX_SHADER, exact ? "exact.vert.glsl" : "surface.vert.glsl", variant);
     const Shader fragment =
         compileStage(GL_FRAGMENT_SHADER, exact ? "exact.frag.glsl" : "surface.frag.glsl", variant);
-    Shader geometry;
-    Program program(glCreateProgram());
+    Shader geometry{NoCreate};
+    Program program;
     glAttachShader(program.get(), vertex.get());
     glAttachShader(program.get(), fragment.get());
     if (variant.flatGeometryShader) {
@@ -323,7 +323,7 @@ Program buildProgramFromBodies(const std::string& name, std::string_view vertexB
     };
     const Shader vertex = stage(GL_VERTEX_SHADER, vertexBody, "vertex");
     const Shader fragment = stage(GL_FRAGMENT_SHADER, fragmentBody, "fragment");
-    Program program(glCreateProgram());
+    Program program;
     glAttachShader(program.get(), vertex.get());
     glAttachShader(program.get(), fragment.get());
     linkOrThrow(program, name);

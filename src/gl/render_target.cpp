@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <string>
+#include <utility>
 
 #include <glad/gl.h>
 
@@ -11,14 +13,6 @@
 
 namespace shadelab::gl {
 namespace {
-
-Id genRenderbuffer(GLenum format, int width, int height) {
-    Id id = 0;
-    glGenRenderbuffers(1, &id);
-    glBindRenderbuffer(GL_RENDERBUFFER, id);
-    glRenderbufferStorage(GL_RENDERBUFFER, format, width, height);
-    return id;
-}
 
 void checkSize(int width, int height) {
     GLint maxRenderbuffer = 0;
@@ -64,40 +58,67 @@ DepthFormat depthFormatFor(DepthMode mode) {
     return mode == DepthMode::Standard ? DepthFormat::Depth24 : DepthFormat::Depth32F;
 }
 
-RenderTarget::RenderTarget(int width, int height, ColorFormat format, DepthFormat depth)
-    : width_(width), height_(height) {
+RenderTarget::RenderTarget(int width, int height, ColorFormat format, DepthFormat depth) {
+    fit(width, height, format, depth);
+}
+
+void RenderTarget::fit(int width, int height, ColorFormat format, DepthFormat depth) {
+    if (fbo_ && width == width_ && height == height_ && format == format_ && depth == depthFormat_) return;
+    *this = RenderTarget(); // the old attachments' memory first: a large window may not hold both
     checkSize(width, height);
     if (format == ColorFormat::Rgba32F && !capabilities().floatColorTargets)
         throw RuntimeError("a float (RGBA32F) render target needs EXT_color_buffer_float, which this " +
                            std::string(displayName(capabilities().api)) + " context lacks");
-    Id fbo = 0;
-    glGenFramebuffers(1, &fbo);
-    fbo_ = Framebuffer(fbo);
-    color_ =
-        Renderbuffer(genRenderbuffer(format == ColorFormat::Rgba8 ? GL_RGBA8 : GL_RGBA32F, width, height));
-    depth_ = Renderbuffer(genRenderbuffer(
-        depth == DepthFormat::Depth24 ? GL_DEPTH_COMPONENT24 : GL_DEPTH_COMPONENT32F, width, height));
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_.get());
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.get());
+    Framebuffer fbo;
+    Texture color;
+    Renderbuffer depthBuffer{NoCreate};
+    glBindTexture(GL_TEXTURE_2D, color.get());
+    if (format == ColorFormat::Rgba8)
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    else
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST); // sampled texel for texel
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo.get());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color.get(), 0);
+    if (depth != DepthFormat::None) {
+        depthBuffer = Renderbuffer();
+        glBindRenderbuffer(GL_RENDERBUFFER, depthBuffer.get());
+        glRenderbufferStorage(GL_RENDERBUFFER,
+                              depth == DepthFormat::Depth24 ? GL_DEPTH_COMPONENT24 : GL_DEPTH_COMPONENT32F,
+                              width, height);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depthBuffer.get());
+    }
     const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE) {
         GLint maxRenderbuffer = 0;
         GLint maxViewport[2] = {0, 0};
         glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxRenderbuffer);
         glGetIntegerv(GL_MAX_VIEWPORT_DIMS, maxViewport);
-        const double megabytes = double(width) * height * (format == ColorFormat::Rgba8 ? 8 : 20) / 1048576.0;
+        const double bytesPerPixel =
+            (format == ColorFormat::Rgba8 ? 4 : 16) + (depth == DepthFormat::None ? 0 : 4);
+        const double megabytes = double(width) * height * bytesPerPixel / 1048576.0;
         char needed[64];
         std::snprintf(needed, sizeof needed, "%.0f MiB", megabytes);
         throw RuntimeError(
-            "offscreen framebuffer " + std::to_string(width) + "x" + std::to_string(height) +
-            " (colour + depth, about " + needed + ") is incomplete: " + framebufferStatusName(status) +
+            "offscreen framebuffer " + std::to_string(width) + "x" + std::to_string(height) + " (" +
+            (format == ColorFormat::Rgba8 ? "RGBA8" : "RGBA32F") +
+            (depth == DepthFormat::None ? "" : " + depth") + ", about " + needed +
+            ") is incomplete: " + framebufferStatusName(status) +
             "; this context allows renderbuffers up to " + std::to_string(maxRenderbuffer) +
             " and viewports up to " + std::to_string(maxViewport[0]) + "x" + std::to_string(maxViewport[1]) +
             " (an attachment that could not be allocated, e.g. under a memory limit, also shows as "
             "incomplete): try a smaller --size");
     }
     checkGlError("creating the offscreen framebuffer");
+    width_ = width;
+    height_ = height;
+    format_ = format;
+    depthFormat_ = depth;
+    fbo_ = std::move(fbo);
+    color_ = std::move(color);
+    depth_ = std::move(depthBuffer);
 }
 
 void bindDefaultFramebuffer() {
@@ -141,6 +162,13 @@ Image RenderTarget::readRgba8() const {
 
 ImageF RenderTarget::readFloat() const {
     return read<ImageF>(GL_FLOAT, "reading back the float image");
+}
+
+std::vector<float> RenderTarget::readFloatRow(int y) const {
+    std::vector<float> row(std::size_t(width_) * 4);
+    bind();
+    glReadPixels(0, y, width_, 1, GL_RGBA, GL_FLOAT, row.data());
+    return row;
 }
 
 } // namespace shadelab::gl

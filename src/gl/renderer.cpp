@@ -314,11 +314,8 @@ void Renderer::drawMeshes(const Scene& sized, const SceneView& view, const Progr
 // ray_cast.cpp's prepareObject and PixelRays give the analytic reference.
 void Renderer::drawExact(const Scene& sized, const SceneView& view, const ObjectProgram& objectProgram,
                          int x) {
-    if (!emptyVertexArray_) { // the core profile draws only with a vertex array bound, even an empty one
-        Id id = 0;
-        glGenVertexArrays(1, &id);
-        emptyVertexArray_ = VertexArray(id);
-    }
+    // The core profile draws only with a vertex array bound, even an empty one.
+    if (!emptyVertexArray_) emptyVertexArray_ = VertexArray();
     glDisable(GL_CULL_FACE);
     const ViewVolume& v = view.volume;
     glBindVertexArray(emptyVertexArray_.get());

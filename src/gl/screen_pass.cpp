@@ -18,62 +18,7 @@ std::string_view shaderSource(const char* name) {
     return *text;
 }
 
-Id genTexture() {
-    Id id = 0;
-    glGenTextures(1, &id);
-    return id;
-}
-
 } // namespace
-
-void FloatTarget::fit(int w, int h, bool withDepth, DepthFormat format) {
-    if (fbo && w == width && h == height && withDepth == depthAttached && format == depthFormat) return;
-    width = w;
-    height = h;
-    depthAttached = withDepth;
-    depthFormat = format;
-    Id id = 0;
-    glGenFramebuffers(1, &id);
-    fbo = Framebuffer(id);
-    color = Texture(genTexture());
-    glBindTexture(GL_TEXTURE_2D, color.get());
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, w, h, 0, GL_RGBA, GL_FLOAT, nullptr);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glBindTexture(GL_TEXTURE_2D, 0);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo.get());
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color.get(), 0);
-    depth.reset();
-    if (withDepth) {
-        Id rb = 0;
-        glGenRenderbuffers(1, &rb);
-        depth = Renderbuffer(rb);
-        glBindRenderbuffer(GL_RENDERBUFFER, rb);
-        glRenderbufferStorage(GL_RENDERBUFFER,
-                              format == DepthFormat::Depth24 ? GL_DEPTH_COMPONENT24 : GL_DEPTH_COMPONENT32F,
-                              w, h);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, rb);
-    }
-    const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-    if (status != GL_FRAMEBUFFER_COMPLETE) {
-        char hex[16];
-        std::snprintf(hex, sizeof hex, "0x%x", status);
-        throw RuntimeError("a float (RGBA32F) target " + std::to_string(w) + "x" + std::to_string(h) +
-                           " for a teaching view is incomplete (status " + hex +
-                           "; out of memory shows so too); choose a smaller size");
-    }
-}
-
-void FloatTarget::bind() const {
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo.get());
-}
-
-std::vector<float> FloatTarget::readRow(int y) const {
-    std::vector<float> row(std::size_t(width) * 4);
-    bind();
-    glReadPixels(0, y, width, 1, GL_RGBA, GL_FLOAT, row.data());
-    return row;
-}
 
 ScreenPass::ScreenPass(const char* fragment)
     : program(buildProgramFromBodies(fragment, shaderSource("quad.vert.glsl"), shaderSource(fragment))),
@@ -105,11 +50,7 @@ void bindTexture(int unit, const Texture& texture) {
     glBindTexture(GL_TEXTURE_2D, texture.get());
 }
 
-ImagePass::ImagePass() : texture_(genTexture()) {
-    Id id = 0;
-    glGenVertexArrays(1, &id);
-    empty_ = VertexArray(id);
-}
+ImagePass::ImagePass() = default;
 
 void ImagePass::draw(const Image& image, int left, int top, int viewportX, int viewportWidth,
                      int viewportHeight) const {

@@ -81,8 +81,8 @@ void drawLine(Image& image, int x0, int y0, int x1, int y1, glm::u8vec4 color) {
 } // namespace
 
 struct Views::Targets {
-    FloatTarget mode, exact, edges, error;
-    std::vector<FloatTarget> reduce;
+    RenderTarget mode, exact, edges, error; // RGBA32F: unrounded colours, sampled and read back
+    std::vector<RenderTarget> reduce;
 };
 
 namespace {
@@ -160,8 +160,8 @@ void Views::renderModeAndExact(const Scene& scene, int width, int height) {
                            "targets, which need EXT_color_buffer_float; this " +
                            std::string(displayName(capabilities().api)) + " context lacks it");
     const DepthFormat depth = depthFormatFor(scene.depth);
-    targets_->mode.fit(width, height, true, depth);
-    targets_->exact.fit(width, height, true, depth);
+    targets_->mode.fit(width, height, ColorFormat::Rgba32F, depth);
+    targets_->exact.fit(width, height, ColorFormat::Rgba32F, depth);
     Scene mode = scene;
     mode.view = View{};
     mode.overlay = Overlay::None;        // the lines are no part of the shading's error
@@ -188,12 +188,12 @@ void Views::drawError(const Scene& scene, int width, int height, int x, unsigned
     glBindVertexArray(p.images.emptyVertexArray().get());
 
     // Compare pass: the per-pixel error and the interior.
-    t.error.fit(width, height, false, DepthFormat::Depth24);
+    t.error.fit(width, height, ColorFormat::Rgba32F, DepthFormat::None);
     t.error.bind();
     glViewport(0, 0, width, height);
     glUseProgram(p.error.program.get());
-    bindTexture(0, t.mode.color);
-    bindTexture(1, t.exact.color);
+    bindTexture(0, t.mode.color());
+    bindTexture(1, t.exact.color());
     p.error.draw(0, 0, width, height, width, height);
 
     // Reduction: 4×4 blocks per step down to one texel (sum of the mean error, interior pixels, largest).
@@ -201,14 +201,15 @@ void Views::drawError(const Scene& scene, int width, int height, int x, unsigned
     std::size_t steps = 0;
     for (int w = width, h = height; w > 1 || h > 1; w = (w + 3) / 4, h = (h + 3) / 4) ++steps;
     if (t.reduce.size() < steps) t.reduce.resize(steps); // before taking pointers into it
-    const FloatTarget* input = &t.error;
+    const RenderTarget* input = &t.error;
     for (std::size_t step = 0; step < steps; ++step) {
-        FloatTarget& output = t.reduce[step];
-        output.fit((input->width + 3) / 4, (input->height + 3) / 4, false, DepthFormat::Depth24);
+        RenderTarget& output = t.reduce[step];
+        output.fit((input->width() + 3) / 4, (input->height() + 3) / 4, ColorFormat::Rgba32F,
+                   DepthFormat::None);
         output.bind();
-        glViewport(0, 0, output.width, output.height);
-        bindTexture(0, input->color);
-        p.reduce.draw(0, 0, output.width, output.height, output.width, output.height);
+        glViewport(0, 0, output.width(), output.height());
+        bindTexture(0, input->color());
+        p.reduce.draw(0, 0, output.width(), output.height(), output.width(), output.height());
         input = &output;
     }
     float total[4] = {0, 0, 0, 0};
@@ -231,7 +232,7 @@ void Views::drawError(const Scene& scene, int width, int height, int x, unsigned
     const glm::vec3 background(glm::clamp(scene.background, 0.0, 1.0));
     glUniform3fv(p.heatmap.background, 1, glm::value_ptr(background));
     glUniform1i(p.heatmap.legend, 0);
-    bindTexture(0, t.error.color);
+    bindTexture(0, t.error.color());
     p.heatmap.draw(0, 0, width, height, width, height);
 
     const int scale = textScale(width, height);
@@ -331,7 +332,7 @@ void Views::drawProfile(const Scene& scene, int width, int height, int x, unsign
     mode.view = View{};
     Scene edges = mode; // the same render with the mesh's edges over it: where they differ, an edge crosses
     edges.overlay = Overlay::Wireframe;
-    t.edges.fit(width, height, true, depthFormatFor(scene.depth));
+    t.edges.fit(width, height, ColorFormat::Rgba32F, depthFormatFor(scene.depth));
     t.edges.bind();
     renderer_.renderScene(edges, width, height, 0);
 
@@ -339,8 +340,8 @@ void Views::drawProfile(const Scene& scene, int width, int height, int x, unsign
     const int row = profileRow(scene, height);
     figures_.row = row;
     const int glRow = height - 1 - row;
-    const std::vector<float> m = t.mode.readRow(glRow), e = t.exact.readRow(glRow),
-                             w = t.edges.readRow(glRow);
+    const std::vector<float> m = t.mode.readFloatRow(glRow), e = t.exact.readFloatRow(glRow),
+                             w = t.edges.readFloatRow(glRow);
     figures_.modeRow.resize(std::size_t(width));
     figures_.exactRow.resize(std::size_t(width));
     for (int i = 0; i < width; ++i) {

@@ -1,6 +1,7 @@
 // Properties every rendering must have, whatever the reference images say: visibility by depth, flat
 // triangles of one colour lit at the centroid, Gouraud colours clamped per vertex, and only finite,
-// in-range colours as bright as the reference on stiff scenes.
+// in-range colours as bright as the reference on stiff scenes; and the GL objects they are drawn with
+// (handles and render targets) created, adopted and deleted as gl/handles.h and render_target.h say.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -9,10 +10,14 @@
 #include <tuple>
 #include <vector>
 
+#include <glad/gl.h>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "gl/gl_test_support.h"
 #include "gl/projected_mesh.h"
+#include "shadelab/errors.h"
+#include "shadelab/gl/handles.h"
+#include "shadelab/gl/render_target.h"
 
 namespace shadelab::test {
 namespace {
@@ -254,6 +259,78 @@ TEST_P(StiffScenes, RenderOnlyFiniteInRangeColoursAsBrightAsTheReference) {
 
 INSTANTIATE_TEST_SUITE_P(Cases, StiffScenes, testing::ValuesIn(kStiffCases),
                          [](const auto& info) { return std::string(info.param.name); });
+
+} // namespace
+} // namespace shadelab::test
+
+namespace shadelab::test {
+namespace {
+
+// gl/handles.h: a handle made by its constructor owns a new GL object, NoCreate owns none, wrap() adopts
+// an id, a move hands the object on, and destruction deletes it (glIs* false afterwards).
+TEST(Handles, CreateAdoptMoveAndDelete) {
+    SHADELAB_REQUIRE_GL(renderer);
+    gl::Id id = 0;
+    {
+        const gl::Texture texture;
+        ASSERT_NE(texture.get(), 0u);
+        glBindTexture(GL_TEXTURE_2D, texture.get()); // a name becomes a texture when first bound
+        glBindTexture(GL_TEXTURE_2D, 0);
+        EXPECT_TRUE(glIsTexture(texture.get()));
+        id = texture.get();
+    }
+    EXPECT_FALSE(glIsTexture(id)) << "a destroyed handle deletes its texture";
+    EXPECT_FALSE(gl::Buffer(gl::NoCreate));
+    gl::Program program;
+    EXPECT_TRUE(glIsProgram(program.get()));
+    gl::Program moved = std::move(program);
+    EXPECT_FALSE(program); // NOLINT(bugprone-use-after-move): the moved-from state is what is tested
+    EXPECT_TRUE(glIsProgram(moved.get()));
+    id = moved.get();
+    moved = gl::Program(gl::NoCreate);
+    EXPECT_FALSE(glIsProgram(id)) << "assigning over a handle deletes what it held";
+    gl::Program adopted = gl::Program::wrap(glCreateProgram());
+    id = adopted.get();
+    EXPECT_TRUE(glIsProgram(id));
+    adopted.reset();
+    EXPECT_FALSE(glIsProgram(id)) << "an adopted id is deleted by its owner";
+    const gl::Shader shader(GL_FRAGMENT_SHADER);
+    GLint type = 0;
+    glGetShaderiv(shader.get(), GL_SHADER_TYPE, &type);
+    EXPECT_EQ(type, GL_FRAGMENT_SHADER);
+}
+
+// gl/render_target.h: fit() keeps what it holds at the same size and formats, allocates anew otherwise,
+// and after a size the context refuses holds nothing (the error names the size).
+TEST(RenderTargets, FitKeepsOrReplacesAndARefusedSizeLeavesNothing) {
+    SHADELAB_REQUIRE_GL(renderer);
+    gl::RenderTarget target;
+    EXPECT_FALSE(target.color());
+    target.fit(8, 4, gl::ColorFormat::Rgba8, gl::DepthFormat::Depth24);
+    const gl::Id first = target.color().get();
+    target.fit(8, 4, gl::ColorFormat::Rgba8, gl::DepthFormat::Depth24);
+    EXPECT_EQ(target.color().get(), first) << "the same size and formats: nothing allocated";
+    target.fit(8, 4, gl::ColorFormat::Rgba8, gl::DepthFormat::None);
+    target.fit(16, 4, gl::ColorFormat::Rgba8, gl::DepthFormat::None);
+    EXPECT_EQ(target.width(), 16);
+    target.bind();
+    glViewport(0, 0, 16, 4);
+    glClearColor(1, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    const Image image = target.readRgba8();
+    ASSERT_EQ(image.width, 16);
+    EXPECT_EQ(image.rgba[0], 255);
+    EXPECT_EQ(image.rgba[1], 0);
+    try {
+        target.fit(1 << 20, 4, gl::ColorFormat::Rgba8, gl::DepthFormat::Depth24);
+        ADD_FAILURE() << "a 1048576-pixel-wide target was made";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("1048576x4"), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(target.color());
+    EXPECT_EQ(target.width(), 0);
+    gl::bindDefaultFramebuffer();
+}
 
 } // namespace
 } // namespace shadelab::test

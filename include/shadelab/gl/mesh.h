@@ -28,7 +28,7 @@ private:
     MeshLayout layout_;
     int triangles_ = 0;
     VertexArray vao_;
-    Buffer vertices_, indices_;
+    Buffer vertices_, indices_{NoCreate}; // indices: the smooth layout only
 };
 
 // Line segments (GL_LINES) of position and colour (attribute locations 0 and 1 of shaders/lines.vert.glsl):

@@ -104,8 +104,8 @@ private:
     std::unique_ptr<LineProgram> lineProgram_;
     std::map<std::tuple<int, VertexNormals, Overlay>, std::unique_ptr<GpuLines>> overlays_;
     std::unique_ptr<GpuLines> streamedLines_, streamedTriangles_;
-    std::unique_ptr<ImagePass> imagePass_; // drawImageOver's, made at its first use
-    VertexArray emptyVertexArray_;         // exact shading's proxies have no attributes
+    std::unique_ptr<ImagePass> imagePass_;   // drawImageOver's, made at its first use
+    VertexArray emptyVertexArray_{NoCreate}; // exact shading's proxies have no attributes (made at first use)
     bool exactObjectIds_ = false, exactToon_ = false;
     std::optional<glm::dmat4> ndcObserver_;
     std::unique_ptr<Views> views_;

@@ -1,6 +1,6 @@
-// What the teaching views (gl/views.h) draw with besides the Renderer: float targets to render a scene
-// into and read or sample, full-screen (or any rectangle) fragment passes, and CPU-made images (labels,
-// plots) drawn into the picture. Each owns its GL objects (gl/handles.h).
+// What the teaching views (gl/views.h) draw with besides the Renderer and its render targets: full-screen
+// (or any rectangle) fragment passes, and CPU-made images (labels, plots) drawn into the picture. Each owns
+// its GL objects (gl/handles.h).
 #pragma once
 
 #include <vector>
@@ -10,21 +10,6 @@
 #include "shadelab/image.h"
 
 namespace shadelab::gl {
-
-// A framebuffer with an RGBA32F texture to read back or sample, and for scene renders a depth attachment.
-struct FloatTarget {
-    int width = 0, height = 0;
-    bool depthAttached = false;
-    DepthFormat depthFormat = DepthFormat::Depth24;
-    Framebuffer fbo;
-    Texture color;
-    Renderbuffer depth;
-
-    // (Re)allocates when the size or the depth attachment changed. Throws RuntimeError if incomplete.
-    void fit(int w, int h, bool withDepth, DepthFormat format);
-    void bind() const;
-    std::vector<float> readRow(int y) const; // row y (from the bottom) as RGBA floats
-};
 
 // A fragment shader (shaders/<fragment>, no defines) over a rectangle from shaders/quad.vert.glsl. A pass
 // finds its uniforms' locations once, when it is built (location), and gives each sampler its texture unit

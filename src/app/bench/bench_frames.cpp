@@ -58,13 +58,11 @@ void beginFrame(int width, int height) {
 void countFragments(benchmark::State& state, Gpu& gpu, const std::function<void()>& draw) {
     GLuint samples = 0;
     if (gl::capabilities().sampleCounts) {
-        GLuint query = 0;
-        glGenQueries(1, &query);
-        glBeginQuery(GL_SAMPLES_PASSED, query);
+        const gl::Query query;
+        glBeginQuery(GL_SAMPLES_PASSED, query.get());
         draw();
         glEndQuery(GL_SAMPLES_PASSED);
-        glGetQueryObjectuiv(query, GL_QUERY_RESULT, &samples);
-        glDeleteQueries(1, &query);
+        glGetQueryObjectuiv(query.get(), GL_QUERY_RESULT, &samples);
     }
     const Image image = gpu.target.readRgba8();
     double covered = 0;
@@ -91,16 +89,14 @@ void registerFrame(Gpu& gpu, const std::string& name, const std::function<void()
 // The limits are built on the first frame of the benchmark that uses them (a current context is needed)
 // and kept for the run: the context outlives every benchmark.
 struct Limits {
-    gl::Program fill, sphere;
-    gl::VertexArray empty;
+    gl::Program fill{gl::NoCreate}, sphere{gl::NoCreate};
+    gl::VertexArray empty{gl::NoCreate};
     std::map<int, std::unique_ptr<gl::GpuMesh>> meshes;
     void build() {
         if (fill) return;
         fill = oneColourProgram(kFullScreenVertex, "full-screen fill");
         sphere = oneColourProgram(kSphereVertex, "one-colour sphere");
-        GLuint id = 0;
-        glGenVertexArrays(1, &id);
-        empty = gl::VertexArray(id);
+        empty = gl::VertexArray();
     }
     const gl::GpuMesh& mesh(int level) {
         auto& slot = meshes[level];

@@ -81,7 +81,7 @@ void registerObjects(Gpu& gpu, const std::string& name, std::size_t objects,
 // The limit: what any GL program pays to draw these objects one by one, with the renderer's depth and cull
 // set-up: per object one clip matrix and one draw of the shared level-0 mesh, in one colour.
 struct BareLoop {
-    gl::Program program;
+    gl::Program program{gl::NoCreate};
     GLint clipFromObject = -1;
     std::unique_ptr<gl::GpuMesh> mesh;
     void draw(const Scene& scene) {

@@ -67,20 +67,14 @@ void FramedPicture::draw(gl::Renderer& renderer, DemoState& state, const Picture
     if (picture.width <= 0 || picture.height <= 0) return;
     try {
         state.setViewport(picture.width, picture.height);
-        const gl::DepthFormat depth = gl::depthFormatFor(state.scene().depth); // what drawn() keeps
-        if (!target_ || target_->width() != picture.width || target_->height() != picture.height ||
-            depth_ != depth) {
-            target_.reset(); // the old one's memory first: a large window may not hold both
-            target_ = std::make_unique<gl::RenderTarget>(picture.width, picture.height,
-                                                         gl::ColorFormat::Rgba8, depth);
-            depth_ = depth;
-        }
-        target_->bind();
+        target_.fit(picture.width, picture.height, gl::ColorFormat::Rgba8,
+                    gl::depthFormatFor(state.scene().depth)); // the depth drawn() keeps
+        target_.bind();
         drawDemo(renderer, state, picture.width, picture.height);
         // GL counts rows up from the bottom; the picture's place is measured from the top.
-        target_->blitToWindow(picture.x, framebufferHeight - picture.y - picture.height);
+        target_.blitToWindow(picture.x, framebufferHeight - picture.y - picture.height);
     } catch (...) {
-        target_.reset();
+        target_ = gl::RenderTarget();
         gl::bindDefaultFramebuffer();
         throw;
     }

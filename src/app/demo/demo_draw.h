@@ -28,8 +28,7 @@ public:
               int framebufferHeight);
 
 private:
-    std::unique_ptr<gl::RenderTarget> target_;
-    gl::DepthFormat depth_ = gl::DepthFormat::Depth24;
+    gl::RenderTarget target_; // follows the picture's size and the scene's depth mode
 };
 
 // Into the bound framebuffer, over a viewport of width × height moved `x` to the right; sets
