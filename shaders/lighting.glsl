@@ -1,7 +1,13 @@
-// The lighting equations of DESIGN §3: the GLSL mirror of src/lighting.cpp (change both together).
-// Prepended to both stages of every program. All vectors are in view space; the viewer is at the origin.
-// Defines it responds to:
-//   MAX_LIGHTS            size of the uber program's light array (always defined by the loader)
+// The lighting equations of DESIGN §3: the GLSL mirror of src/lighting.cpp (change both together). The steps
+// of a light's term have the C++ names — toViewer, toLight, attenuation, spotFactor, specular — and the
+// guards are C++'s constants. Prepended to both stages of every program. All vectors are in view space; the
+// viewer is at the origin.
+// Defines it responds to, each written by gl::ProgramVariant::defines (src/gl/program_variant.cpp):
+//   MAX_LIGHTS            size of the uber program's light array
+//   TINY_COMPONENT, MIN_ATTENUATION_DENOMINATOR, MIN_LENGTH_SQUARED  DESIGN §3's guards (lighting.h's
+//                         kTinyComponent, kMinAttenuationDenominator, kMinLengthSquared)
+//   LIGHT_AMBIENT, LIGHT_DIRECTIONAL, LIGHT_POINT, LIGHT_SPOT  the LightType codes of uLights[i].type
+//   TOON_HIGHLIGHT        kToonHighlight
 //   LIGHTING_BLINN_PHONG  Blinn-Phong specular max(n·h,0)^β; otherwise Phong max(v·r,0)^α
 //   SHADING_TOON          diffuse quantized into uToonBands bands, highlight thresholded at TOON_HIGHLIGHT
 //   SPECIALIZED           a program for one scene's light set-up (ProgramVariant in gl/program.h), with
@@ -23,11 +29,6 @@
 // reads every uniform component a fragment shader uses with a bounds-checked gather of all eight lanes
 // (bench/README.md "What llvmpipe makes of the fragment shader"); with VALUES_COMPILED_IN they are
 // constants, and none is gathered.
-
-const int LIGHT_AMBIENT = 0;
-const int LIGHT_DIRECTIONAL = 1;
-const int LIGHT_POINT = 2;
-const int LIGHT_SPOT = 3;
 
 struct Light {
     int type;             // uber program only
@@ -130,7 +131,7 @@ vec3 safeNormalize(vec3 v, vec3 fallback) {
     float largest = max(max(abs(v.x), abs(v.y)), abs(v.z));
     vec3 scaled = v * (1.0 / largest);
     vec3 unit = scaled * inversesqrt(dot(scaled, scaled));
-    return largest > 1e-30 ? unit : fallback;
+    return largest > TINY_COMPONENT ? unit : fallback;
 }
 
 // normalize(v) for a v the CPU has bounded (|v| <= 3: an interpolated normal of the normal matrix that
@@ -138,9 +139,11 @@ vec3 safeNormalize(vec3 v, vec3 fallback) {
 // a guard, and a plain normalize does the rest.
 vec3 normalizeBounded(vec3 v, vec3 fallback) {
     float lengthSquared = dot(v, v);
-    return lengthSquared > 1e-36 ? v * inversesqrt(lengthSquared) : fallback;
+    return lengthSquared > MIN_LENGTH_SQUARED ? v * inversesqrt(lengthSquared) : fallback;
 }
 
+// DESIGN §3's v: towards the eye, or +z under orthographic projection; a viewer on the surface sees it
+// head-on (the normal).
 vec3 toViewer(vec3 positionView, vec3 normalView) {
 #if defined(VIEWER_AT_INFINITY)
     return vec3(0.0, 0.0, 1.0);
@@ -169,7 +172,8 @@ float specularPower(float x) {
 #endif
 }
 
-float specularTerm(vec3 normalView, vec3 toViewerView, vec3 toLightView, float lDotN) {
+// spec = max(v·r, 0)^α (Phong) or max(n·h, 0)^β (Blinn-Phong).
+float specular(vec3 normalView, vec3 toViewerView, vec3 toLightView, float lDotN) {
 #ifdef LIGHTING_BLINN_PHONG
     vec3 halfView = normalizeBounded(toViewerView + toLightView, normalView); // |v + l| <= 2
     return specularPower(max(dot(normalView, halfView), 0.0));
@@ -188,7 +192,7 @@ vec3 directTerm(Light light, vec3 toLightView, float factor, vec3 normalView, ve
 #endif
     vec3 color = light.diffuseProduct * diffuse;
 #if HAS_SPECULAR
-    float spec = lDotN > 0.0 ? specularTerm(normalView, toViewerView, toLightView, lDotN) : 0.0;
+    float spec = lDotN > 0.0 ? specular(normalView, toViewerView, toLightView, lDotN) : 0.0;
 #ifdef SHADING_TOON
     spec = spec > TOON_HIGHLIGHT ? 1.0 : 0.0;
 #endif
@@ -197,23 +201,34 @@ vec3 directTerm(Light light, vec3 toLightView, float factor, vec3 normalView, ve
     return factor * color;
 }
 
-// A light exactly on the surface lights it head-on: l falls back to the normal. `positional` numbers the
-// specialized program's positional lights (points first, then spots).
-vec3 toPositionalLight(Light light, int positional, vec3 positionView, vec3 normalView,
-                       out float attenuation) {
+// A positional light's l and t; a light exactly on the surface lights it head-on: l falls back to the
+// normal. `positional` numbers the specialized program's positional lights (points first, then spots).
+// (A directional light's l is −directionView, made unit on the CPU.)
+vec3 toLight(Light light, int positional, vec3 positionView, vec3 normalView, out float t) {
 #if defined(INTERPOLATED_TO_LIGHT) && defined(FRAGMENT_STAGE)
     vec3 d = vToLightView[positional];
 #else
     vec3 d = light.positionView - positionView;
 #endif
-#if HAS_ATTENUATION
-    float t = length(d);
-    vec3 k = light.attenuation;
-    attenuation = 1.0 / max(k.x + k.y * t + k.z * t * t, 1e-12);
-#else
-    attenuation = 1.0;
-#endif
+    t = length(d); // unused, and so not computed, without HAS_ATTENUATION
     return safeNormalize(d, normalView);
+}
+
+// att = 1/(a + b·t + c·t²), the denominator floored so that a light on the surface with a = 0 stays finite.
+float attenuation(Light light, float t) {
+#if HAS_ATTENUATION
+    vec3 k = light.attenuation;
+    return 1.0 / max(k.x + k.y * t + k.z * t * t, MIN_ATTENUATION_DENOMINATOR);
+#else
+    return 1.0;
+#endif
+}
+
+// spot = max(−l·d, 0)^e inside the cone, 0 outside; exponent 0 gives 1 even on a 90° cone's rim.
+float spotFactor(Light light, vec3 toLightView) {
+    float cosAngle = dot(-toLightView, light.directionView);
+    if (cosAngle < light.cosCutoff) return 0.0;
+    return light.exponent > 0.0 ? pow(max(cosAngle, 0.0), light.exponent) : 1.0;
 }
 
 vec3 shadeDirectional(Light light, vec3 positionView, vec3 normalView, vec3 toViewerView) {
@@ -221,19 +236,17 @@ vec3 shadeDirectional(Light light, vec3 positionView, vec3 normalView, vec3 toVi
 }
 
 vec3 shadePoint(Light light, int positional, vec3 positionView, vec3 normalView, vec3 toViewerView) {
-    float attenuation;
-    vec3 toLightView = toPositionalLight(light, positional, positionView, normalView, attenuation);
-    return directTerm(light, toLightView, attenuation, normalView, toViewerView);
+    float t;
+    vec3 toLightView = toLight(light, positional, positionView, normalView, t);
+    return directTerm(light, toLightView, attenuation(light, t), normalView, toViewerView);
 }
 
-// spot = max(−l·d, 0)^e inside the cone, 0 outside; exponent 0 gives 1 even on a 90° cone's rim.
 vec3 shadeSpot(Light light, int positional, vec3 positionView, vec3 normalView, vec3 toViewerView) {
-    float attenuation;
-    vec3 toLightView = toPositionalLight(light, positional, positionView, normalView, attenuation);
-    float cosAngle = dot(-toLightView, light.directionView);
-    if (cosAngle < light.cosCutoff) return vec3(0.0);
-    float spot = light.exponent > 0.0 ? pow(max(cosAngle, 0.0), light.exponent) : 1.0;
-    return directTerm(light, toLightView, attenuation * spot, normalView, toViewerView);
+    float t;
+    vec3 toLightView = toLight(light, positional, positionView, normalView, t);
+    float spot = spotFactor(light, toLightView);
+    if (spot == 0.0) return vec3(0.0); // outside the cone: no term to evaluate
+    return directTerm(light, toLightView, attenuation(light, t) * spot, normalView, toViewerView);
 }
 
 // Σ_lights [k_a·I_a + att·spot·(k_d·I_d·max(l·n,0) + [l·n > 0]·k_s·I_s·spec)], not clamped.

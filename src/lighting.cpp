@@ -2,17 +2,23 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "shadelab/vocabulary.h"
 
 namespace shadelab {
-namespace {
 
-// Largest component below which a vector is treated as zero and not normalized (the same in GLSL, where
-// 1e-30 is still a normal float).
-constexpr double kTinyComponent = 1e-30;
-constexpr double kMinAttenuationDenominator = 1e-12; // same constant in shaders/lighting.glsl
+glm::dvec3 toViewer(const glm::dvec3& positionView, const glm::dvec3& normalView, bool orthographic) {
+    return orthographic ? glm::dvec3(0, 0, 1) : safeNormalize(-positionView, normalView);
+}
+
+std::pair<glm::dvec3, double> toLight(const Light& light, const SurfacePoint& point) {
+    if (light.type == LightType::Directional) return {-safeNormalize(light.direction, point.normal), 0.0};
+    const glm::dvec3 d = light.position - point.position;
+    // A light exactly on the surface lights it head-on rather than from an undefined direction.
+    return {safeNormalize(d, point.normal), glm::length(d)};
+}
 
 double attenuation(const Light& light, double t) {
     if (light.type == LightType::Directional) return 1;
@@ -31,21 +37,10 @@ double spotFactor(const Light& light, const glm::dvec3& l) {
     return light.exponent > 0 ? std::pow(std::max(cosAngle, 0.0), light.exponent) : 1.0;
 }
 
-} // namespace
-
-std::pair<glm::dvec3, double> toLight(const Light& light, const SurfacePoint& point) {
-    if (light.type == LightType::Directional) return {-safeNormalize(light.direction, point.normal), 0.0};
-    const glm::dvec3 d = light.position - point.position;
-    // A light exactly on the surface lights it head-on rather than from an undefined direction.
-    return {safeNormalize(d, point.normal), glm::length(d)};
-}
-
 glm::dvec3 specularVector(const SurfacePoint& p, const glm::dvec3& l, LightingModel model) {
     if (model == LightingModel::Phong) return -l + 2 * glm::dot(l, p.normal) * p.normal;
     return safeNormalize(p.toViewer + l, p.normal);
 }
-
-namespace {
 
 double specular(const SurfacePoint& p, const glm::dvec3& l, double shininess, LightingModel model) {
     const double exponent = std::max(shininess, 1.0); // pow(0, 0) is undefined in GLSL
@@ -53,8 +48,6 @@ double specular(const SurfacePoint& p, const glm::dvec3& l, double shininess, Li
     const double cosine = model == LightingModel::Phong ? glm::dot(p.toViewer, rh) : glm::dot(p.normal, rh);
     return std::pow(std::max(cosine, 0.0), exponent);
 }
-
-} // namespace
 
 std::string_view toString(ShadingMode mode) {
     switch (mode) {
@@ -196,6 +189,37 @@ LightTerms shadeTerms(const SurfacePoint& p, const Material& uncapped, std::span
 glm::dvec3 shade(const SurfacePoint& p, const Material& material, std::span<const Light> lights,
                  ShadeOptions options) {
     return shadeTerms(p, material, lights, options).of(options.term);
+}
+
+namespace {
+
+// A non-negative double as the nearest float, or the largest float where it is beyond float's range.
+float finiteFloat(double value) {
+    return float(std::min(value, double(std::numeric_limits<float>::max())));
+}
+
+} // namespace
+
+LightValues lightValues(const Light& light, const Material& material) {
+    LightValues v;
+    v.ambientProduct = glm::vec3(capColor(material.ambient) * capColor(light.ambient));
+    v.diffuseProduct = glm::vec3(capColor(material.diffuse) * capColor(light.diffuse));
+    v.specularProduct = glm::vec3(capColor(material.specular) * capColor(light.specular));
+    v.attenuation = {finiteFloat(light.attenuation.x), finiteFloat(light.attenuation.y),
+                     finiteFloat(light.attenuation.z)};
+    v.cosCutoff = float(std::cos(light.cutoffDeg * std::numbers::pi / 180));
+    v.exponent = finiteFloat(light.exponent);
+    return v;
+}
+
+glm::vec3 ambientProduct(std::span<const Light> lights, const Material& material) {
+    glm::dvec3 sum(0); // k_a·ΣI_a = Σk_a·I_a
+    for (const Light& light : lights) sum += capColor(light.ambient);
+    return glm::vec3(capColor(material.ambient) * capColor(sum));
+}
+
+float shininessValue(const Material& material) {
+    return finiteFloat(std::max(material.shininess, 1.0));
 }
 
 glm::dvec3 clampColor(const glm::dvec3& c) {

@@ -90,10 +90,10 @@ ProbeReport probeSurface(const Scene& scene, const ProbePoint& point, const Sphe
         lightsView.push_back(transformLight(l, view.viewFromWorld));
     }
     const ShadeOptions options{scene.lighting, scene.shading == ShadingMode::Toon, scene.toonBands};
-    auto toViewer = [&](const glm::dvec3& p) { return toViewerView(p, view.orthographic); };
     auto surface = [&](const glm::dvec3& positionObject, const glm::dvec3& normalObject) {
         const glm::dvec3 p = frame.positionView(positionObject);
-        return SurfacePoint{p, frame.normalView(normalObject), toViewer(p)};
+        const glm::dvec3 n = frame.normalView(normalObject);
+        return SurfacePoint{p, n, toViewer(p, n, view.orthographic)};
     };
 
     ProbeReport report;

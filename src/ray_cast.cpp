@@ -65,11 +65,7 @@ SurfacePoint exactSurfacePoint(const ObjectInView& object, const RayHit& hit, co
     // sphere open and its inside shows.
     const glm::dvec3 normalView =
         safeNormalize(object.normalViewFromObject * hit.pointObject, glm::dvec3(0, 0, 1));
-    return SurfacePoint{positionView, normalView, toViewerView(positionView, orthographic)};
-}
-
-glm::dvec3 toViewerView(const glm::dvec3& positionView, bool orthographic) {
-    return orthographic ? glm::dvec3(0, 0, 1) : safeNormalize(-positionView, glm::dvec3(0, 0, 1));
+    return SurfacePoint{positionView, normalView, toViewer(positionView, normalView, orthographic)};
 }
 
 void PixelRays::ray(double x, double y, glm::dvec3& originView, glm::dvec3& directionView) const {

@@ -426,6 +426,20 @@ TEST(SafeNormalize, FallsBackForZeroAndTinyVectors) {
 
 // ---- enum spellings ----
 
+// DESIGN §3's viewer: towards the eye under perspective, +z under orthographic projection, and — the one
+// fallback rule C++ and GLSL share — the normal for a viewer exactly on the surface.
+TEST(ToViewer, TowardsTheEyePlusZOrthographicAndTheNormalOnTheSurface) {
+    const glm::dvec3 n = glm::normalize(glm::dvec3(1, 2, 2));
+    const glm::dvec3 p(3, 0, -4);
+    const glm::dvec3 v = toViewer(p, n, false);
+    EXPECT_NEAR(v.x, -0.6, 1e-15);
+    EXPECT_NEAR(v.z, 0.8, 1e-15);
+    EXPECT_EQ(toViewer(p, n, true), glm::dvec3(0, 0, 1));
+    EXPECT_EQ(toViewer(glm::dvec3(0), n, false), n);
+    EXPECT_EQ(toViewer(glm::dvec3(kTinyComponent / 2, 0, 0), n, false), n) << "below the guard: the normal";
+    EXPECT_EQ(toViewer(glm::dvec3(0), n, true), glm::dvec3(0, 0, 1));
+}
+
 TEST(EnumSpelling, EveryValueRoundTrips) {
     const std::vector<std::pair<ShadingMode, std::string_view>> shading = {{ShadingMode::Flat, "flat"},
                                                                            {ShadingMode::Gouraud, "gouraud"},

@@ -107,9 +107,31 @@ LightTerms shadeTerms(const SurfacePoint& point, const Material& material, std::
 glm::dvec3 shade(const SurfacePoint& point, const Material& material, std::span<const Light> lights,
                  ShadeOptions options);
 
+// DESIGN §3's guards, one value each for C++ and GLSL (gl/program_variant.cpp hands them to the shaders as
+// #defines, with the LightType codes):
+// a vector whose largest component is below kTinyComponent is not normalized (its fallback is used);
+inline constexpr double kTinyComponent = 1e-30;
+// the attenuation's denominator a + b·t + c·t² is at least this, so a light on the surface with a = 0
+// stays finite;
+inline constexpr double kMinAttenuationDenominator = 1e-12;
+// GLSL's normalizeBounded (a vector the CPU has bounded, |v| <= 3) normalizes no |v|² below this.
+inline constexpr double kMinLengthSquared = 1e-36;
+
+// The steps of one light's term, in the order shadeTerms takes them and shaders/lighting.glsl's functions
+// of the same names do:
+// DESIGN §3's v: the unit vector from `positionView` towards the viewer — towards the eye under perspective,
+// +z under orthographic projection (the eye at infinity, back along the parallel rays). A viewer exactly
+// on the surface sees it head-on: v falls back to the normal (as l does for a light on the surface).
+glm::dvec3 toViewer(const glm::dvec3& positionView, const glm::dvec3& normalView, bool orthographic);
 // The unit vector from `point` towards `light` (for a directional light: against its direction) and the
 // distance to it (0 for directional and ambient lights): DESIGN §3's l and t.
 std::pair<glm::dvec3, double> toLight(const Light& light, const SurfacePoint& point);
+// att = 1/(a + b·t + c·t²) for point and spot lights, 1 for the others.
+double attenuation(const Light& light, double t);
+// spot = max(−l·d, 0)^e inside the cone, 0 outside; 1 for other lights.
+double spotFactor(const Light& light, const glm::dvec3& l);
+// spec = max(v·r, 0)^α (Phong) or max(n·h, 0)^β (Blinn-Phong), the exponent at least 1.
+double specular(const SurfacePoint& point, const glm::dvec3& l, double shininess, LightingModel model);
 // The vector the specular term measures against: r = −l + 2(l·n)n (Phong) or h = normalize(v + l)
 // (Blinn-Phong).
 glm::dvec3 specularVector(const SurfacePoint& point, const glm::dvec3& l, LightingModel model);
@@ -131,5 +153,21 @@ glm::dvec3 safeNormalize(const glm::dvec3& v, const glm::dvec3& fallback);
 // `v` scaled to unit length whatever its magnitude (1e-300 or 1e300): divided by its largest component
 // first. Directions (of lights, of spots) are scale-free; `v` must be finite and non-zero.
 glm::dvec3 unitDirection(const glm::dvec3& v);
+
+// What one light gives the shaders for one material, each value rounded to float once: the same floats
+// whether they are set as uniforms (gl/renderer.cpp) or compiled in (gl::ProgramVariant::withValues). All
+// finite: colours are capped (capColor), so the products stay inside float's range, and an attenuation or
+// exponent beyond it becomes the largest float (an Inf has no GLSL literal, and in pow(1, Inf) it would
+// give NaN where the equation gives 1).
+struct LightValues {
+    glm::vec3 ambientProduct{0}, diffuseProduct{0}, specularProduct{0}; // k_a·I_a, k_d·I_d, k_s·I_s
+    glm::vec3 attenuation{1, 0, 0};                                     // a, b, c
+    float cosCutoff = 0, exponent = 0;                                  // spot lights
+};
+LightValues lightValues(const Light& light, const Material& material);
+// k_a·ΣI_a over all lights: a specialized program's one ambient term.
+glm::vec3 ambientProduct(std::span<const Light> lights, const Material& material);
+// The material's exponent: at least 1 (DESIGN §3's guard), at most the largest float.
+float shininessValue(const Material& material);
 
 } // namespace shadelab

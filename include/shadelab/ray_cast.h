@@ -34,11 +34,6 @@ void intersectObject(const ObjectInView& object, int index, const glm::dvec3& or
 SurfacePoint exactSurfacePoint(const ObjectInView& object, const RayHit& hit, const glm::dvec3& originView,
                                const glm::dvec3& directionView, bool orthographic);
 
-// The unit vector towards the viewer from `positionView` (DESIGN §3, in C++ and GLSL alike): towards the eye
-// under perspective; under orthographic projection the eye is at infinity, so back along the parallel
-// rays, +z.
-glm::dvec3 toViewerView(const glm::dvec3& positionView, bool orthographic);
-
 // Exactly one place decides which point of the view a pixel position sees. (x, y) are pixel coordinates
 // from the top left corner of a width × height image: pixel (i, j)'s centre is (i + 0.5, j + 0.5).
 struct PixelRays {

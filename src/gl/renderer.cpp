@@ -18,18 +18,9 @@
 namespace shadelab::gl {
 namespace {
 
+// The LIGHT_* code of shaders/lighting.glsl: the enum's value (ProgramVariant::defines writes them).
 int lightTypeCode(LightType type) {
-    switch (type) { // the LIGHT_* constants of shaders/lighting.glsl
-    case LightType::Ambient:
-        return 0;
-    case LightType::Directional:
-        return 1;
-    case LightType::Point:
-        return 2;
-    case LightType::Spot:
-        return 3;
-    }
-    return 0;
+    return int(type);
 }
 
 void setVec3(GLint location, const glm::dvec3& value) {

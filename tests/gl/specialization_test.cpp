@@ -2,11 +2,14 @@
 // (and, with values compiled in, the same floats as constants), so on every scene the pictures agree
 // within 1/255 (float sums in another order), and programs are cached by their key.
 #include <cctype>
+#include <cmath>
+#include <cstdlib>
 #include <functional>
 
 #include "gl/gl_test_support.h"
 #include "shadelab/errors.h"
 #include "shadelab/gl/program.h"
+#include "shadelab/text.h"
 
 namespace shadelab::test {
 namespace {
@@ -236,6 +239,28 @@ TEST(SpecializationCache, ValuesBuildAProgramPerDistinctMaterial) {
     EXPECT_EQ(renderer->programsBuilt(), before + 2) << "values seen before";
 }
 
+// The constants shaders/lighting.glsl shares with src/lighting.cpp come from C++, each read back as C++'s
+// value rounded to float, in every variant.
+TEST(SpecializationKey, DefinesCarryLightingsConstants) {
+    auto valueOf = [](const std::string& defines, const std::string& name) {
+        const std::string key = "#define " + name + " ";
+        const std::size_t at = defines.find(key);
+        if (at == std::string::npos) return std::nan("");
+        return double(std::strtof(defines.c_str() + at + key.size(), nullptr));
+    };
+    for (const bool specialize : {false, true}) {
+        const std::string defines =
+            gl::ProgramVariant::forScene(litSphereScene(16, LightType::Spot), specialize).defines();
+        EXPECT_EQ(valueOf(defines, "TINY_COMPONENT"), double(float(kTinyComponent)));
+        EXPECT_EQ(valueOf(defines, "MIN_ATTENUATION_DENOMINATOR"), double(float(kMinAttenuationDenominator)));
+        EXPECT_EQ(valueOf(defines, "MIN_LENGTH_SQUARED"), double(float(kMinLengthSquared)));
+        EXPECT_EQ(valueOf(defines, "TOON_HIGHLIGHT"), double(float(kToonHighlight)));
+        EXPECT_EQ(valueOf(defines, "MAX_LIGHTS"), kMaxLights);
+        for (const LightType type : kLightTypes)
+            EXPECT_EQ(valueOf(defines, "LIGHT_" + upperAscii(toString(type))), int(type)) << toString(type);
+    }
+}
+
 TEST(SpecializationKey, LeavesOutWhatTheSceneDoesNotUse) {
     Scene scene = litSphereScene(16, LightType::Point);
     scene.lights[0].attenuation = {1, 0, 0};
@@ -271,8 +296,8 @@ TEST(SpecializationKey, ValuesReadBackAsTheUniformsFloats) {
     scene.lights[0].attenuation = {0.5, 0.1, 0.02};
     const gl::ProgramVariant v = gl::ProgramVariant::forScene(scene, true).withValues(scene, m);
     EXPECT_EQ(v.name(), "toon/blinn-phong+d0p0s1+values");
-    const gl::LightValues l = gl::lightValues(scene.lights[0], m);
-    const glm::vec3 ambient = gl::ambientProduct(scene.lights, m);
+    const LightValues l = lightValues(scene.lights[0], m);
+    const glm::vec3 ambient = ambientProduct(scene.lights, m);
     const std::vector<float> expected = {
         float(m.shininess),  ambient.x,           ambient.y,          ambient.z,          3.0f,
         float(1.0 / 3),      l.diffuseProduct.x,  l.diffuseProduct.y, l.diffuseProduct.z, l.specularProduct.x,

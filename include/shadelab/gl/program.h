@@ -1,10 +1,6 @@
-// Shader programs, built from shaders/*.glsl with the version, the variant's #defines and #line prepended
-// (no #version in the files). A variant is either the "uber" program of a shading mode × lighting model
-// (light counts and types as uniforms, one loop) or a program specialized to one scene's light set-up:
-// counts per light type as compile-time constants, and no attenuation, specular or ambient code where the
-// scene has none (DESIGN §3 unchanged: the same equation with the absent terms left out) — and, further,
-// to one object's values (its material times the lights' colours, the lights' attenuation and cones) as
-// constants.
+// Shader programs, built from shaders/*.glsl with the version, a variant's #defines
+// (gl/program_variant.h) and #line prepended (no #version in the files), and the uniform locations of a
+// surface program, found once when it is built.
 #pragma once
 
 #include <array>
@@ -12,78 +8,10 @@
 #include <string_view>
 #include <vector>
 
-#include <glm/vec3.hpp>
-
 #include "shadelab/gl/handles.h"
-#include "shadelab/lighting.h"
-#include "shadelab/scene.h"
+#include "shadelab/gl/program_variant.h"
 
 namespace shadelab::gl {
-
-// How far the renderer specializes its programs (README "Leaving out what a scene does not need").
-enum class Specialization {
-    None,   // the uber program of each shading mode × lighting model: the baseline and the cross-check
-    Lights, // to the scene's light set-up; values stay uniforms, so the window recompiles nothing when a
-            // colour, a light's attenuation or the shininess changes
-    Values, // and to each drawn object's values, compiled in as constants: a program per object's values
-            // (`shadelab render` and `bench`). llvmpipe reads every uniform component a fragment shader
-            // uses with a gather of all eight lanes, constants with none (bench/README.md).
-};
-
-struct ProgramVariant {
-    ShadingMode shading = ShadingMode::Phong;
-    LightingModel lighting = LightingModel::BlinnPhong;
-    bool specialized = false;
-    // Flat shading only: shared vertices and a geometry shader instead of three vertices per face.
-    bool flatGeometryShader = false;
-    // Specialized programs only:
-    int directional = 0, point = 0, spot = 0; // lights of each type
-    bool ambient = true;                      // some light's I_a is non-zero
-    bool attenuation = true;                  // some point or spot light's attenuation is not (1, 0, 0)
-    bool specular = true;                     // some object's k_s and some light's I_s are non-zero
-    bool viewerAtInfinity = false;            // an orthographic projection: v is the constant +z
-    // Exact shading only: toon's quantized lighting on the exact sphere (the error view's answer for toon).
-    bool exactToon = false;
-    // The NDC view (mesh shading modes): gl_Position is the observer's, and each fragment outside the
-    // camera's clip volume (|x|, |y|, |z| > w, or w <= 0) is discarded, as the clipper would remove it.
-    bool ndcView = false;
-    // Specialization::Values only: the #define lines that compile one object's values in (withValues);
-    // empty otherwise. Every float is written so that it reads back as the same float.
-    std::string values;
-
-    static ProgramVariant uber(ShadingMode shading, LightingModel lighting);
-    // The scene's specialized variant (to its light set-up), or its uber variant when `specialize` is false.
-    static ProgramVariant forScene(const Scene& scene, bool specialize);
-    // This specialized variant with `material`'s and the scene's lights' values compiled in (the floats
-    // lightValues and ambientProduct give the uniforms otherwise), and the scene's toon bands.
-    ProgramVariant withValues(const Scene& scene, const Material& material) const;
-
-    // "phong/blinn-phong" (uber) or "phong/blinn-phong+d1p2s0-ambient-attenuation" (specialized; the
-    // terms left out are listed, "+ortho" for a viewer at infinity, "+values" with values compiled in):
-    // the spelling of logs, benchmarks and test names.
-    std::string name() const;
-    std::string defines() const; // the #define lines the variant compiles with
-    bool operator==(const ProgramVariant&) const = default;
-    // The order of the program cache, over every field. Not a defaulted <=>: the browser build's libc++
-    // (LLVM 14) gives std::string none.
-    bool operator<(const ProgramVariant& other) const;
-};
-
-// What one light gives the shaders for one material, each value rounded to float once: the same floats
-// whether they are set as uniforms (renderer.cpp) or compiled in (ProgramVariant::withValues). All finite:
-// colours are capped (capColor), so the products stay inside float's range, and an attenuation or
-// exponent beyond it becomes the largest float (an Inf has no GLSL literal, and in pow(1, Inf) it would
-// give NaN where the equation gives 1).
-struct LightValues {
-    glm::vec3 ambientProduct{0}, diffuseProduct{0}, specularProduct{0}; // k_a·I_a, k_d·I_d, k_s·I_s
-    glm::vec3 attenuation{1, 0, 0};                                     // a, b, c
-    float cosCutoff = 0, exponent = 0;                                  // spot lights
-};
-LightValues lightValues(const Light& light, const Material& material);
-// k_a·ΣI_a over all lights: a specialized program's one ambient term.
-glm::vec3 ambientProduct(const std::vector<Light>& lights, const Material& material);
-// The material's exponent: at least 1 (DESIGN §3's guard), at most the largest float.
-float shininessValue(const Material& material);
 
 // Where a surface program keeps its uniforms, looked up once when it is built (not by name every frame).
 // −1 marks a uniform the variant does not declare (an absent light type, the ambient sum of an
