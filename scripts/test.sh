@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
-# Sets up and builds shadelab, then runs everything CI runs, and prints how long each stage took:
+# Sets up and builds shadelab, then runs everything CI runs, and prints how long each stage took (wall and
+# CPU time):
 #   1. setup: the Debian packages the build needs that are missing, then the release build (-O2 as the
-#      program's own build, without debug information; warnings are errors); the packages only the checks
-#      need (X, clang's tools, emscripten, Chromium) install beside it
-#   2. from here on, beside the foreground and with the cores it leaves idle (lower CPU priorities): the
-#      sanitizer tree's build (clang; -O1, the tests' own sources -O0), clang-tidy (.clang-tidy) on src/, the fuzzers' build
-#   3. the browser build (scripts/web.sh build); formatting (.clang-format) of src/, include/, tests/, web/;
-#      every shell script checked by shellcheck
+#      program's own build, without debug information; warnings are errors). Beside it, at lower CPU
+#      priorities, with the cores it leaves idle: the packages only the checks need (X, clang's tools,
+#      emscripten, Chromium), then the browser build (scripts/web.sh build) and the sanitizer tree's build
+#      (clang; -O1, the tests' own sources -O0)
+#   2. from the release build on, beside the rest at the lowest priority: clang-tidy (.clang-tidy) on src/,
+#      the fuzzers' build
+#   3. formatting (.clang-format) of src/, include/, tests/, web/; every shell script checked by shellcheck
 #   4. the whole test suite on the release build: CPU tests, GL tests on every headless backend (EGL with
 #      OpenGL and with OpenGL ES, OSMesa), the command line end to end, the demo window under Xvfb, the page
 #      in headless Chromium
@@ -19,7 +21,8 @@
 #      is the same renderer code on the same driver). The page's tests are left out: the page is
 #      WebAssembly, not built with the sanitizers.
 #   7. the fuzzers for a fixed budget (scripts/fuzz.sh)
-# Extra arguments go to every ctest run (e.g. -R cpu.). SHADELAB_QUICK=1 skips step 2 and stops after step 4.
+# Extra arguments go to every ctest run (e.g. -R cpu.). SHADELAB_QUICK=1 builds no sanitizer tree, runs no
+# clang-tidy, and stops after step 4.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc)
@@ -127,17 +130,6 @@ finish() {
   fi
 }
 
-stage "setup: the build's packages, then the release build (the checks' packages install beside it)"
-scripts/setup.sh --install program,tests
-in_background "checks' packages" 19 scripts/setup.sh --install tools
-# -O2 as the program's own build, without its debug information (a third of the compile time); warnings are
-# errors. The tests' own sources at -O1 (tests/CMakeLists.txt): 206 CPU-s instead of 296, the suite as fast.
-# Linked with gold (binutils, as ld): a third less time than ld.bfd for the large test executables.
-SHADELAB_BUILD_TYPE=Release scripts/setup.sh --build -- -DSHADELAB_WERROR=ON \
-  -DCMAKE_EXE_LINKER_FLAGS=-fuse-ld=gold -DCMAKE_SHARED_LINKER_FLAGS=-fuse-ld=gold \
-  "-DCMAKE_CXX_FLAGS_RELEASE=-O2 -DNDEBUG" "-DCMAKE_C_FLAGS_RELEASE=-O2 -DNDEBUG" -DSHADELAB_TEST_OPTIMIZATION=-O1
-finish "checks' packages"
-
 # Built by clang (the fuzzers' compiler, installed with the checks' packages) and linked by lld, at -O1 (what
 # AddressSanitizer's own documentation asks for): the suite under the sanitizers takes about 3 minutes instead
 # of 6:57 with everything at -O0. The tests' own sources are built at -O0 all the same (tests/CMakeLists.txt:
@@ -157,17 +149,49 @@ build_asan() {
 build_fuzzers() {
   cmake -S fuzz -B build-fuzz -DCMAKE_CXX_COMPILER=clang++ && cmake --build build-fuzz -j"$jobs"
 }
-# Everything after the release suite that needs no test of it starts now, with the cores the foreground
-# leaves idle: the sanitizer tree first (the suite under it waits for it), clang-tidy and the fuzzers with
-# what is left even of that. The whole run is CPU-bound: what fills an idle core is what shortens it.
+# The checks' packages install beside the release build; what needs them waits for them (their exit status
+# in $logs/packages.status), then runs.
+install_tools() {
+  local status=0
+  scripts/setup.sh --install tools || status=$?
+  echo "$status" >"$logs/packages.status"
+  return "$status"
+}
+after_packages() {
+  until [ -e "$logs/packages.status" ]; do sleep 1; done
+  if [ "$(cat "$logs/packages.status")" != 0 ]; then
+    echo "the checks' packages did not install (their log: checks' packages)"
+    return 1
+  fi
+  "$@"
+}
+
+stage "setup: the build's packages, then the release build (the checks' packages, the browser build and the sanitizer build beside it)"
+scripts/setup.sh --install program,tests
+# The whole run is CPU-bound: what fills an idle core shortens it. The release build leaves cores idle
+# (configuring, a precompiled header or a large link that the rest waits for), and these fill them at lower
+# priorities: the packages, then the browser build (the page's tests need it with the release suite), then
+# the sanitizer tree (its suite runs after the release suite).
+in_background "checks' packages" 10 install_tools
+in_background "browser build" 5 after_packages scripts/web.sh build
+[ "${SHADELAB_QUICK:-}" = 1 ] || in_background "sanitizer build" 10 after_packages build_asan
+# -O2 as the program's own build, without its debug information (a third of the compile time); warnings are
+# errors. The tests' own sources at -O1 (tests/CMakeLists.txt): 206 CPU-s instead of 296, the suite as fast.
+# Linked with gold (binutils, as ld): a third less time than ld.bfd for the large test executables.
+SHADELAB_BUILD_TYPE=Release scripts/setup.sh --build -- -DSHADELAB_WERROR=ON \
+  -DCMAKE_EXE_LINKER_FLAGS=-fuse-ld=gold -DCMAKE_SHARED_LINKER_FLAGS=-fuse-ld=gold \
+  "-DCMAKE_CXX_FLAGS_RELEASE=-O2 -DNDEBUG" "-DCMAKE_C_FLAGS_RELEASE=-O2 -DNDEBUG" -DSHADELAB_TEST_OPTIMIZATION=-O1
+finish "checks' packages"
+
+# clang-tidy (on the release tree's compile database) and the fuzzers' build need nothing else: they take
+# what the release suite and the sanitizer build leave idle.
 if [ "${SHADELAB_QUICK:-}" != 1 ]; then
-  in_background "sanitizer build" 10 build_asan
   in_background "clang-tidy" 19 bash -c "git ls-files 'src/*.cpp' | xargs -P$jobs -n1 clang-tidy -p build --quiet"
   in_background "fuzzers' build" 19 build_fuzzers
 fi
 
-stage "browser build (WebGL 2, emscripten)"
-scripts/web.sh build
+stage "browser build (what the release build left)"
+finish "browser build"
 
 stage "format check (clang-format) and the shell scripts' check (shellcheck)"
 git ls-files 'src/*.cpp' 'src/*.h' 'include/*.h' 'tests/*.cpp' 'tests/*.h' 'web/*.cpp' | xargs clang-format --dry-run --Werror
