@@ -6,7 +6,7 @@
 //
 // SHADELAB_FUZZ_STRICT=1 adds two checks that known open bugs still fail (fuzz/README.md), so they are off
 // by default to keep CI's budgeted run meaningful: an accepted scene whose matrices (sceneView) are not
-// finite (issue 6, item 4: "never a NaN matrix"; an InputError is allowed), and an InputError message
+// finite ("never a NaN matrix"; an InputError is allowed), and an InputError message
 // longer than kMaxMessageBytes (user text must come back truncated).
 #include <cmath>
 #include <cstdint>

@@ -1,6 +1,7 @@
 #include "shadelab/reference.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -119,6 +120,67 @@ std::vector<bool> interiorMask(const std::vector<int>& ids, int width, int heigh
         }
     }
     return interior;
+}
+
+std::vector<bool> sharedInterior(const ImageF& rendered, const ReferenceImage& reference, int erode) {
+    const int w = reference.color.width, h = reference.color.height;
+    if (rendered.width != w || rendered.height != h)
+        throw InputError("the render is " + std::to_string(rendered.width) + "x" +
+                         std::to_string(rendered.height) + " but the reference " + std::to_string(w) + "x" +
+                         std::to_string(h));
+    std::vector<int> renderedIds(reference.objectId.size(), -1);
+    for (std::size_t i = 0; i < renderedIds.size(); ++i)
+        if (rendered.rgba[4 * i + 3] > 0.5f) renderedIds[i] = reference.objectId[i];
+    std::vector<bool> interior = interiorMask(reference.objectId, w, h, erode);
+    const std::vector<bool> inRendered = interiorMask(renderedIds, w, h, erode);
+    for (std::size_t i = 0; i < interior.size(); ++i) interior[i] = interior[i] && inRendered[i];
+    return interior;
+}
+
+namespace {
+
+// 255·|Δ| of each colour channel of pixel i: a NaN stays NaN.
+std::array<double, 3> channelErrors(const ImageF& rendered, const ReferenceImage& reference, std::size_t i) {
+    std::array<double, 3> errors{};
+    for (std::size_t c = 0; c < 3; ++c)
+        errors[c] =
+            255.0 * std::abs(double(rendered.rgba[4 * i + c]) - double(reference.color.rgba[4 * i + c]));
+    return errors;
+}
+
+// max that keeps a NaN of either side.
+double maxKeepingNan(double a, double b) {
+    return std::isnan(a) || std::isnan(b) ? std::numeric_limits<double>::quiet_NaN() : std::max(a, b);
+}
+
+} // namespace
+
+InteriorError interiorError(const ImageF& rendered, const ReferenceImage& reference, int erode) {
+    const std::vector<bool> interior = sharedInterior(rendered, reference, erode);
+    InteriorError error;
+    double sum = 0;
+    for (std::size_t i = 0; i < interior.size(); ++i) {
+        if (!interior[i]) continue;
+        for (const double e : channelErrors(rendered, reference, i)) {
+            sum += e;
+            error.max = maxKeepingNan(error.max, e);
+        }
+        ++error.pixels;
+    }
+    error.mean = error.pixels ? sum / (3.0 * double(error.pixels)) : 0;
+    return error;
+}
+
+std::vector<double> interiorPixelErrors(const ImageF& rendered, const ReferenceImage& reference, int erode) {
+    const std::vector<bool> interior = sharedInterior(rendered, reference, erode);
+    std::vector<double> errors;
+    for (std::size_t i = 0; i < interior.size(); ++i) {
+        if (!interior[i]) continue;
+        double largest = 0;
+        for (const double e : channelErrors(rendered, reference, i)) largest = maxKeepingNan(largest, e);
+        errors.push_back(largest);
+    }
+    return errors;
 }
 
 } // namespace shadelab

@@ -532,7 +532,7 @@ TEST(TransformLight, ShadingIsInvariantUnderARigidMove) {
     }
 }
 
-// A direction is scale-free (issue 14): [1e-30, 0, 0] used to light differently from [1, 0, 0] in the
+// A direction is scale-free: [1e-30, 0, 0] used to light differently from [1, 0, 0] in the
 // renderer, the reference and the unit direction, because 1e-30 fell under the "zero" threshold.
 TEST(TransformLight, DirectionsOfAnyScaleLightAlike) {
     const glm::dmat4 view = glm::rotate(glm::dmat4(1.0), 0.3, glm::dvec3(0, 1, 0));

@@ -28,7 +28,6 @@ from serve import PageHandler  # noqa: E402  (the page's files only, as scripts/
 import cli_rules  # noqa: E402  (the command line's rules for scene files and outputs)
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'build-web', 'site')
-FLAGS = ['shading', 'lighting', 'term', 'normal-matrix', 'perspective-matrix', 'subdivisions', 'size', 'depth', 'tolerance-px', 'overlay', 'view']
 CHROME_ARGS = ['--headless=new', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--no-sandbox',
                '--disable-dev-shm-usage', '--window-size=1280,800', '--force-device-scale-factor=1']
 
@@ -161,26 +160,28 @@ def png_bytes(width, height, rgba):
 
 
 def render(argv):
+    # Every option takes a value; which names are flags the page says (the program's one table of them,
+    # window.shadelab.tables().flags), once it has started.
     scene_path, flags, out = None, {}, None
     i = 0
     while i < len(argv):
         arg = argv[i]
-        name = arg[2:].split('=', 1)[0] if arg.startswith('--') else None
-        if name in FLAGS + ['out']:
+        if arg.startswith('--'):
+            name = arg[2:].split('=', 1)[0]
             if '=' in arg:
                 value = arg.split('=', 1)[1]
             elif i + 1 < len(argv):
                 i += 1
                 value = argv[i]
             else:
-                return fail(2, '--%s needs a value' % name)
+                return fail(2, '%s needs a value' % cli_rules.quoted('--' + name))
             if name == 'out':
                 out = value
             else:
                 flags[name] = value
         elif arg.startswith('-') and arg != '-':
-            return fail(2, 'unknown option %s; render takes SCENE.json, --%s and --out'
-                        % (cli_rules.quoted(arg), ', --'.join(FLAGS)))
+            return fail(2, 'unknown option %s; render takes SCENE.json, the scene flags and --out'
+                        % cli_rules.quoted(arg))
         elif scene_path is None:
             scene_path = arg
         else:
@@ -207,6 +208,11 @@ def render(argv):
     try:
         if page.failed:
             return fail(1, page.failed)
+        known = page.js('return window.shadelab.tables().flags')
+        for name in flags:
+            if name not in known:
+                return fail(2, 'unknown option %s; render takes SCENE.json, --%s and --out'
+                            % (cli_rules.quoted('--' + name), ', --'.join(known)))
         message = page.load(text.decode('utf-8', errors='replace'), name) or page.flags(flags)
         if message:
             return fail(2, message)

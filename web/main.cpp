@@ -28,6 +28,9 @@
 #include "shadelab/image.h"
 #include "shadelab/lesson.h"
 #include "shadelab/scene.h"
+#include "shadelab/sphere.h"
+#include "shadelab/text.h"
+#include "shadelab/window.h"
 
 namespace {
 
@@ -273,20 +276,12 @@ EMSCRIPTEN_KEEPALIVE const char* shadelab_apply_flags(const char* flags) {
     return guarded([&] {
         const nlohmann::json parsed = nlohmann::json::parse(flags);
         app::SceneOverrides o;
-        auto take = [&](const char* key, std::optional<std::string>& into) {
-            if (parsed.contains(key)) into = parsed.at(key).get<std::string>();
-        };
-        take("shading", o.shading);
-        take("lighting", o.lighting);
-        take("term", o.term);
-        take("normal-matrix", o.normalMatrix);
-        take("perspective-matrix", o.perspectiveMatrix);
-        take("size", o.size);
-        take("subdivisions", o.subdivisions);
-        take("tolerance-px", o.tolerancePx);
-        take("depth", o.depth);
-        take("overlay", o.overlay);
-        take("view", o.view);
+        for (const auto& [name, value] : parsed.items()) {
+            std::optional<std::string>* into = app::overrideNamed(o, name);
+            if (!into)
+                throw InputError("unknown flag --" + printable(name) + "; the flags are " + app::flagList());
+            *into = value.get<std::string>();
+        }
         const Scene scene = app::applyOverrides(page().state->scene(), o, page().sceneName);
         page().state = std::make_unique<DemoState>(scene);
         requestDraw();
@@ -408,6 +403,35 @@ EMSCRIPTEN_KEEPALIVE void shadelab_set_match_highlight(int on) {
 // The canvas was resized (or must be redrawn for another reason).
 EMSCRIPTEN_KEEPALIVE void shadelab_redraw() {
     requestDraw();
+}
+
+// The tables the page reads rather than repeats: the flags' names (app::sceneFlags, the command line's
+// table), the highest subdivision level, and the browser's key names (KeyboardEvent.key, and .code for the
+// keypad) as the GLFW codes of the window's bindings (demo_keys.cpp; a printable key is its upper-case
+// ASCII, which the page forms itself; '+' is Shift + '=' as in the window).
+EMSCRIPTEN_KEEPALIVE const char* shadelab_tables() {
+    nlohmann::json flags = nlohmann::json::array();
+    for (const app::SceneFlag& flag : app::sceneFlags()) flags.push_back(std::string(flag.name));
+    const nlohmann::json keys = {{"Escape", kKeyEscape},
+                                 {"F1", kKeyF1},
+                                 {"F2", kKeyF2},
+                                 {"F11", kKeyF11},
+                                 {"PageDown", kKeyPageDown},
+                                 {"PageUp", kKeyPageUp},
+                                 {"Home", kKeyHome},
+                                 {"End", kKeyEnd},
+                                 {"ArrowRight", kKeyRight},
+                                 {"ArrowLeft", kKeyLeft},
+                                 {"Backspace", kKeyBackspace},
+                                 {" ", kKeySpace},
+                                 {"+", int('=')},
+                                 {"=", int('=')},
+                                 {"-", int('-')},
+                                 {"_", int('-')}};
+    const nlohmann::json codes = {{"NumpadAdd", kKeyKeypadAdd}, {"NumpadSubtract", kKeyKeypadSubtract}};
+    return give(nlohmann::json{
+        {"flags", flags}, {"maxSubdivisions", kMaxSubdivisions}, {"keys", keys}, {"codes", codes}}
+                    .dump());
 }
 
 // What the panel's refresh reads, twice a second: everything but the scenes' objects (panelJson).

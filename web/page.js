@@ -8,6 +8,7 @@
 const $ = (id) => document.getElementById(id);
 const params = new URLSearchParams(location.search);
 let api = null; // the shadelab_* functions, once the module has started
+let tables = null; // the program's flags, levels and key codes (shadelab_tables), once it has started
 let saved = 0;
 
 // An error stays until the next action replaces it; a notice (`notice` true: the Esc note) goes after
@@ -112,12 +113,15 @@ function bind() {
     captureFloat: c('shadelab_capture_float', 'number', ['number', 'number']),
     captureWidth: c('shadelab_capture_width', 'number', []),
     captureHeight: c('shadelab_capture_height', 'number', []),
+    tables: () => JSON.parse(Module.ccall('shadelab_tables', 'string', [], [])),
   };
 }
 
 // Called by main.cpp once the WebGL 2 context and the renderer exist.
 async function shadelabStarted() {
   api = bind();
+  tables = api.tables(); // the flags, the levels and the keys, as the program has them
+  $('level').max = tables.maxSubdivisions;
   fitCanvas();
   new ResizeObserver(fitCanvas).observe($('view'));
   wireControls();
@@ -160,7 +164,7 @@ async function shadelabStarted() {
 // The command-line flags, given as ?shading=flat&size=256x256…, through the CLI's own parser.
 function applyUrlFlags() {
   const flags = {};
-  for (const name of ['shading', 'lighting', 'term', 'normal-matrix', 'perspective-matrix', 'subdivisions', 'size', 'depth', 'tolerance-px', 'overlay', 'view'])
+  for (const name of tables.flags)
     if (params.has(name)) flags[name] = params.get(name);
   return Object.keys(flags).length ? api.applyFlags(JSON.stringify(flags)) : '';
 }
@@ -241,19 +245,11 @@ function fitCanvas() {
   if (api) api.redraw();
 }
 
-// ---- keys: the window's bindings (GLFW codes: printable keys are their upper-case ASCII) ----
+// ---- keys: the window's bindings (GLFW codes: printable keys are their upper-case ASCII; the others from
+// the program's table, shadelab_tables) ----
 function glfwKey(event) {
-  if (event.code === 'NumpadAdd') return 334;
-  if (event.code === 'NumpadSubtract') return 333;
-  if (event.key === 'Escape') return 256;
-  if (event.key === 'F1') return 290;
-  if (event.key === 'F2') return 291;
-  if (event.key === 'F11') return 300;
-  // A lesson's steps, as the window binds them.
-  const steps = {PageDown: 267, PageUp: 266, Home: 268, End: 269, ArrowRight: 262, ArrowLeft: 263, Backspace: 259, ' ': 32};
-  if (event.key in steps) return steps[event.key];
-  if (event.key === '+' || event.key === '=') return 61;
-  if (event.key === '-' || event.key === '_') return 45;
+  if (event.code in tables.codes) return tables.codes[event.code];
+  if (event.key in tables.keys) return tables.keys[event.key];
   if (event.key.length === 1) {
     const code = event.key.toUpperCase().charCodeAt(0);
     if (code > 32 && code < 127) return code;
@@ -653,6 +649,7 @@ Object.assign(window.shadelab, {
   applyFlags: (flags) => { const m = api.applyFlags(JSON.stringify(flags)); showMessage(m); refresh(); return m; },
   press: (code) => press(code),
   ui: () => api.ui(),
+  tables: () => tables,
   message: () => ($('message').hidden ? '' : $('message').textContent),
   // A capture read back in bands (web/driver.py): captureStart draws it and keeps it, captureRows gives
   // rows [y, y + count) as base64, so no one call carries hundreds of megabytes.

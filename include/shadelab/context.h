@@ -3,6 +3,7 @@
 // only). Window and headless differ only in the context and the render target.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
@@ -14,7 +15,8 @@
 namespace shadelab {
 
 enum class Backend { Egl, Osmesa };
-std::string_view toString(Backend backend); // "egl" | "osmesa"
+inline constexpr std::array kBackends = {Backend::Egl, Backend::Osmesa}; // --backend's (vocabulary.h)
+std::string_view toString(Backend backend);                              // "egl" | "osmesa"
 std::optional<Backend> parseBackend(std::string_view text);
 
 // What to make: the backend, the API and, for EGL, the device (EGL_EXT_platform_device).

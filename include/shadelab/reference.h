@@ -31,4 +31,20 @@ inline Scene withTrueNormals(Scene scene) {
 // the "interior" used for error measurement (DESIGN §6: silhouette eroded by 2 px).
 std::vector<bool> interiorMask(const std::vector<int>& ids, int width, int height, int radius = 2);
 
+// The one measure of a picture's error against the reference (DESIGN §6), for `shadelab report`, the
+// error view's figures on the CPU, and the tests: |Δ| per colour channel, in 8-bit units, over the pixels
+// interior to the same object in both (sharedInterior). A NaN channel makes max NaN: it is never hidden.
+struct InteriorError {
+    double mean = 0, max = 0;
+    std::size_t pixels = 0;
+};
+InteriorError interiorError(const ImageF& rendered, const ReferenceImage& reference, int erode = 2);
+// The pixels interiorError measures: interior (interiorMask, eroded by `erode` px) to the same object in
+// the reference and in the render, whose coverage is its alpha (> 0.5) and whose objects are the
+// reference's where both cover. Throws InputError when the two sizes differ.
+std::vector<bool> sharedInterior(const ImageF& rendered, const ReferenceImage& reference, int erode = 2);
+// Per interior pixel, in row order: the largest of its three channels' errors.
+std::vector<double> interiorPixelErrors(const ImageF& rendered, const ReferenceImage& reference,
+                                        int erode = 2);
+
 } // namespace shadelab

@@ -1,4 +1,4 @@
-// One way in for every value (issue 13): each scene value that a command-line flag can also set has one
+// One way in for every value: each scene value that a command-line flag can also set has one
 // range and one function that checks it, and every door calls that function — the scene's JSON
 // (parseScene), a scene built or changed in code (validateScene) and the flags (src/app/demo/scene_flags.cpp,
 // and through them the demo and the page). A door parses only its own syntax (a JSON number, "WxH", a

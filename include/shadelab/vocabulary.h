@@ -1,4 +1,4 @@
-// One way in for every named value (issue 13): a vocabulary is an array of an enum's values, each with its
+// One way in for every named value: a vocabulary is an array of an enum's values, each with its
 // toString() spelling (lighting.h: shading modes, lighting models, light types; scene.h: projections,
 // vertex normals, depth modes, overlays). Every door — the scene's JSON, a command-line flag, the page's
 // controls through them — finds a spelling with parseName and refuses one it lacks with the same message:

@@ -4,6 +4,7 @@
 #include "shadelab/gl/loader.h"
 #include "shadelab/gl/render_target.h"
 #include "shadelab/gl/renderer.h"
+#include "shadelab/vocabulary.h"
 
 namespace shadelab {
 
@@ -12,9 +13,7 @@ std::string_view toString(Backend backend) {
 }
 
 std::optional<Backend> parseBackend(std::string_view text) {
-    if (text == "egl") return Backend::Egl;
-    if (text == "osmesa") return Backend::Osmesa;
-    return std::nullopt;
+    return parseName(text, kBackends);
 }
 
 #if !SHADELAB_HAVE_OSMESA

@@ -4,20 +4,26 @@
 #include <glad/gl.h>
 
 namespace shadelab::gl {
+namespace {
+
+// One name from a glGen* function.
+template <class Generate> Id generated(Generate generate) {
+    Id id = 0;
+    generate(1, &id);
+    return id;
+}
+
+} // namespace
 
 Id BufferKind::create() {
-    Id id = 0;
-    glGenBuffers(1, &id);
-    return id;
+    return generated(glGenBuffers);
 }
 void BufferKind::destroy(Id id) {
     glDeleteBuffers(1, &id);
 }
 
 Id VertexArrayKind::create() {
-    Id id = 0;
-    glGenVertexArrays(1, &id);
-    return id;
+    return generated(glGenVertexArrays);
 }
 void VertexArrayKind::destroy(Id id) {
     glDeleteVertexArrays(1, &id);
@@ -31,36 +37,28 @@ void ProgramKind::destroy(Id id) {
 }
 
 Id FramebufferKind::create() {
-    Id id = 0;
-    glGenFramebuffers(1, &id);
-    return id;
+    return generated(glGenFramebuffers);
 }
 void FramebufferKind::destroy(Id id) {
     glDeleteFramebuffers(1, &id);
 }
 
 Id RenderbufferKind::create() {
-    Id id = 0;
-    glGenRenderbuffers(1, &id);
-    return id;
+    return generated(glGenRenderbuffers);
 }
 void RenderbufferKind::destroy(Id id) {
     glDeleteRenderbuffers(1, &id);
 }
 
 Id TextureKind::create() {
-    Id id = 0;
-    glGenTextures(1, &id);
-    return id;
+    return generated(glGenTextures);
 }
 void TextureKind::destroy(Id id) {
     glDeleteTextures(1, &id);
 }
 
 Id QueryKind::create() {
-    Id id = 0;
-    glGenQueries(1, &id);
-    return id;
+    return generated(glGenQueries);
 }
 void QueryKind::destroy(Id id) {
     glDeleteQueries(1, &id);

@@ -4,6 +4,7 @@
 
 #include "shadelab/errors.h"
 #include "shadelab/gl/handles.h"
+#include "shadelab/vocabulary.h"
 
 namespace shadelab {
 
@@ -16,9 +17,7 @@ std::string_view displayName(Api api) {
 }
 
 std::optional<Api> parseApi(std::string_view text) {
-    if (text == "gl") return Api::Gl;
-    if (text == "gles") return Api::Gles;
-    return std::nullopt;
+    return parseName(text, kApis);
 }
 
 } // namespace shadelab

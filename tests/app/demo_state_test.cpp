@@ -1,4 +1,4 @@
-// The demo's pure logic (src/app/demo/demo_state.h) against issue 3 (the demo window) and DESIGN §2–§3: the
+// The demo's pure logic (src/app/demo/demo_state.h) against README "The demo window" and DESIGN §2–§3: the
 // key table, the orbit camera, the material and light presets and DemoState::apply/current. Expected values
 // come from the issue, DESIGN and GLFW's key codes, not from demo_state.cpp.
 #include "app/demo/demo_state.h"
@@ -172,7 +172,7 @@ double projectedRadiusNdc(const Scene& scene, const glm::dvec3& centre, double r
 
 // ---- keys ----
 
-// The key codes GLFW reports, and the command the issue gives each (issue 3, "Keys").
+// The key codes GLFW reports, and the command README's key table gives each.
 const std::vector<std::pair<int, Command>>& issueKeys() {
     static const std::vector<std::pair<int, Command>> kKeys = {
         {GLFW_KEY_1, Command::Flat},
@@ -200,10 +200,10 @@ const std::vector<std::pair<int, Command>>& issueKeys() {
         {GLFW_KEY_F1, Command::ToggleHelp},
         {GLFW_KEY_ESCAPE, Command::Quit},
         {GLFW_KEY_C, Command::TogglePanel},
-        {GLFW_KEY_F2, Command::TogglePresentation}, // issue 15: presentation mode
+        {GLFW_KEY_F2, Command::TogglePresentation}, // Presentation mode
         {GLFW_KEY_W, Command::ToggleOverlay},       // wireframe and normals overlay
         {GLFW_KEY_F11, Command::ToggleFullScreen},
-        // Issue 31: a lesson's steps.
+        // A lesson's steps.
         {GLFW_KEY_PAGE_DOWN, Command::NextStep},
         {GLFW_KEY_SPACE, Command::NextStep},
         {GLFW_KEY_RIGHT, Command::NextStep},
@@ -227,7 +227,7 @@ TEST(DemoKeys, WindowKeyConstantsAreGlfwKeyCodes) {
     EXPECT_EQ(kKeyEnd, GLFW_KEY_END);
 }
 
-// Issue 31: a lesson's step keys move through it, each step as written with the window's own settings kept;
+// A lesson's step keys move through it, each step as written with the window's own settings kept;
 // a key works inside a step, and R returns to the step as written (not only its camera).
 TEST(DemoLesson, StepKeysMoveThroughTheStepsAndRReturnsToTheStep) {
     auto lesson = std::make_shared<Lesson>();
@@ -505,7 +505,7 @@ TEST(DemoLevel, PlusNeverLowersAnObjectsLevel) {
             << "object " << i << " was at level " << scene.objects[i].subdivisions;
 }
 
-// Issue 15: the title's level is the drawn one. "auto" chooses by the projected size, so after the window
+// The title's level is the drawn one. "auto" chooses by the projected size, so after the window
 // grows from the scene's 256×256 to 1000×800 the drawn level is higher; the title, the triangle count and
 // "+" follow the drawn size, not the scene's image size. A again leaves auto at the level shown.
 TEST(DemoLevel, AutoLevelAndTitleFollowTheDrawnSize) {
@@ -534,7 +534,7 @@ TEST(DemoLevel, AutoLevelAndTitleFollowTheDrawnSize) {
     EXPECT_EQ(state.level(), drawnLevel + 1) << "+ from auto is one above the level shown";
 }
 
-// Issue 15: with the panel hidden, what O, N, M, L (and the other keys) changed is in the title's end.
+// With the panel hidden, what O, N, M, L (and the other keys) changed is in the title's end.
 TEST(DemoTitle, SaysWhatTheLastKeyChanged) {
     DemoState state{Scene{}};
     EXPECT_EQ(windowTitle(state, 0).find("| H: keys |"), std::string::npos) << "nothing changed yet";
@@ -555,7 +555,7 @@ TEST(DemoTitle, SaysWhatTheLastKeyChanged) {
     }
 }
 
-// Issue 15, presentation mode: F2 toggles the large label; it names the mode, the lighting model, the
+// Presentation mode: F2 toggles the large label; it names the mode, the lighting model, the
 // drawn level and the exponent by its model's letter. F11 (full screen) is the window's to carry out.
 TEST(DemoPresentation, LabelNamesModeLightingLevelAndExponent) {
     Scene scene;
@@ -664,7 +664,7 @@ TEST(DemoProjection, OFromAnOrthographicSceneKeepsTheSpheresSize) {
     EXPECT_TRUE(sameProjection(state.current().projection, scene.projection));
 }
 
-// The window draws current(width, height) at the framebuffer's size. Issue 3, robustness: a resized
+// The window draws current(width, height) at the framebuffer's size. Robustness: a resized
 // window must not distort the picture. Perspective recomputes its aspect from the size; the orthographic
 // box must too, or the sphere becomes an ellipse.
 TEST(DemoProjection, SphereStaysRoundWhenTheWindowAspectDiffersFromTheScenes) {
@@ -1108,7 +1108,7 @@ TEST(DemoStateRandom, RandomCommandsDragsAndZoomsAlwaysGiveAValidScene) {
 namespace shadelab::app {
 namespace {
 
-// Issue 15, teaching instruments: W cycles the overlay through the scene (so S saves it and `render`
+// Teaching instruments: W cycles the overlay through the scene (so S saves it and `render`
 // draws it): none, wireframe, wireframe with face and vertex normals, the lights' markers, none.
 TEST(DemoOverlay, WCyclesWireframeNormalsNoneAndTheSceneCarriesIt) {
     DemoState state{Scene{}};
@@ -1407,7 +1407,7 @@ TEST(MatricesText, TheNormalMatrixIsTheInverseTransposeOrMItself) {
 } // namespace
 } // namespace shadelab::app
 
-// Issue 29: the window keeps the scene's framing. grid.json (800x600) beside the panel in a 1280x800 window
+// The window keeps the scene's framing. grid.json (800x600) beside the panel in a 1280x800 window
 // (an 860x800 area) is letterboxed, not cropped to its two middle columns.
 TEST(FitPicture, KeepsTheScenesAspectCentredInTheArea) {
     using shadelab::app::fitPicture;
@@ -1437,7 +1437,7 @@ TEST(FitPicture, KeepsTheScenesAspectCentredInTheArea) {
     EXPECT_FALSE(wide.contains(10, 77 + 645)) << "the bar below is not the picture";
 }
 
-// Issue 29: the panel's material edits apply to one chosen object, or to all only when chosen so. A probe
+// The panel's material edits apply to one chosen object, or to all only when chosen so. A probe
 // click picks the object it hits; the status line names what the edits apply to, and the material's name
 // says it was edited.
 TEST(DemoPanelEdits, AProbeClickChoosesTheObjectThePanelEdits) {
@@ -1568,7 +1568,7 @@ TEST(DemoObjects, ScaleEditsTheChosenObjectOrAllAndJTogglesTheNormalMatrix) {
     EXPECT_EQ(windowTitle(state, 1.0).find("normals by M"), std::string::npos);
 }
 
-// Issue 29: exact shading draws no mesh, so the title, the status and the presentation label name the ray
+// Exact shading draws no mesh, so the title, the status and the presentation label name the ray
 // cast instead of a level and a triangle count; back on a mesh mode they show the level again.
 TEST(DemoTitle, ExactShadingNamesTheRayCastNotALevel) {
     using namespace shadelab::app;
@@ -1586,7 +1586,7 @@ TEST(DemoTitle, ExactShadingNamesTheRayCastNotALevel) {
     EXPECT_NE(windowTitle(state, 0).find("| level 5 | "), std::string::npos) << windowTitle(state, 0);
 }
 
-// Issue 29: after an orbit of 180° the probed point is on the far side of the sphere: the table says the
+// After an orbit of 180° the probed point is on the far side of the sphere: the table says the
 // probe is hidden behind the object (and the window draws no vectors for it: probeFacesAway); orbiting
 // back shows it again.
 TEST(DemoProbe, AProbeBehindTheObjectIsSaidToBeHidden) {
@@ -1605,7 +1605,7 @@ TEST(DemoProbe, AProbeBehindTheObjectIsSaidToBeHidden) {
     EXPECT_FALSE(probeFacesAway(*state.probe()));
 }
 
-// Issue 29: the presentation label is laid out from the picture's size alone (stable from frame to frame),
+// The presentation label is laid out from the picture's size alone (stable from frame to frame),
 // large for a class (lines a twelfth of the height: 55 px at 1280x720), never wider than the picture less
 // its margins (smaller text in a narrow picture instead of a clipped line), and its box holds all three
 // lines.

@@ -207,7 +207,7 @@ TEST_F(CliTest, EglDevicesAreListedAndChosen) {
     EXPECT_NE(verbose.err.find("EGL device 0 ("), std::string::npos) << describe(verbose);
 }
 
-// Issue 15, the regression kit: `shadelab compare` is the tests' comparison from a shell. 0 within the
+// The regression kit: `shadelab compare` is the tests' comparison from a shell. 0 within the
 // tolerance, 1 beyond it (the figures printed, --diff written), 2 for a file that is not there; a mask's
 // black pixels are not compared.
 TEST_F(CliTest, CompareJudgesAsTheTestsDo) {
@@ -241,7 +241,7 @@ shadelab::Image filled(int width, int height, std::uint8_t value) {
     return image;
 }
 
-// Issue 29: `compare --json` is the summary as one object for a CI dashboard: the same figures as
+// `compare --json` is the summary as one object for a CI dashboard: the same figures as
 // compareImages, the limits, the sizes (both, when they differ), passed as the exit code says, the diff's
 // path when one was written.
 TEST_F(CliTest, CompareJsonCarriesTheFiguresOfTheSummary) {
@@ -451,7 +451,7 @@ TEST_F(CliTest, SplitViewLevelsGoThroughTheWorkLimit) {
     EXPECT_FALSE(fs::exists(dir_ / "s.png"));
 }
 
-// Issue 15: reference takes render's context flags (checked, no effect), so one command line switches.
+// `reference` takes render's context flags (checked, no effect), so one command line switches.
 TEST_F(CliTest, ReferenceAcceptsRendersContextFlags) {
     for (const std::vector<std::string>& flags :
          {std::vector<std::string>{"--backend", "osmesa", "--specialize", "off"},
@@ -464,7 +464,7 @@ TEST_F(CliTest, ReferenceAcceptsRendersContextFlags) {
     }
 }
 
-// Issue 15: colours are linear 0..1; [200, 30, 30] is valid but is a warning naming the field.
+// Colours are linear 0..1; [200, 30, 30] is valid but is a warning naming the field.
 TEST_F(CliTest, ColourAboveTenIsAWarningNamingTheField) {
     writeFile(dir_ / "scene.json", R"({ "objects": [ { "material": { "diffuse": [200, 30, 30] } } ] })");
     const Outcome run = shadelab({"render", "scene.json", "--size", "16x16", "--out", "out.png"});
@@ -477,7 +477,7 @@ TEST_F(CliTest, ColourAboveTenIsAWarningNamingTheField) {
     EXPECT_EQ(plain.err.find("warning"), std::string::npos) << describe(plain);
 }
 
-// Issue 15: a subcommand's --help is about that subcommand, without the demo's key table.
+// A subcommand's --help is about that subcommand, without the demo's key table.
 TEST_F(CliTest, SubcommandHelpLeavesOutTheDemoKeys) {
     for (const char* command : {"render", "reference", "report", "bench"}) {
         const Outcome run = shadelab({command, "--help"});
@@ -488,7 +488,7 @@ TEST_F(CliTest, SubcommandHelpLeavesOutTheDemoKeys) {
     EXPECT_NE(top.out.find("Demo keys"), std::string::npos) << top.out;
 }
 
-// Issue 15: bench's table carries no colour escapes when it is not written to a terminal.
+// `bench`'s table carries no colour escapes when it is not written to a terminal.
 TEST_F(CliTest, BenchWritesNoColourEscapesIntoAPipe) {
     const Outcome run =
         shadelab({"bench", "--filter", "sphere/build/level0/", "--frames", "3", "--warmup", "0"});
@@ -520,7 +520,7 @@ TEST_F(CliTest, ReferenceSceneFile) {
 
 // --- Flags override the scene file --------------------------------------------------------------------
 
-// Issue 29: a flag's help lists exactly the spellings it accepts (both come from the vocabularies), so
+// A flag's help lists exactly the spellings it accepts (both come from the vocabularies), so
 // `exact` is in --shading's help and every spelling in a help is accepted.
 TEST_F(CliTest, FlagHelpListsEverySpellingTheFlagAccepts) {
     const Outcome help = shadelab({"render", "--help"});
@@ -769,7 +769,7 @@ const BadInput kBadInputs[] = {
      .prepare = Prepare::SceneFile,
      .scene = R"({ "shading": 3 })"},
     // The demo validates its arguments before it looks for a display or renders the showcase.
-    // Issue 15: messages that say what to do.
+    // Messages that say what to do.
     {.name = "json_comment",
      .args = {"render", "scene.json", "--out", "out.png"},
      .mentions = {"scene.json", "JSON has no comments"},

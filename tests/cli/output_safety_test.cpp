@@ -471,7 +471,7 @@ TEST_F(ResourceLimits, ReportBeyondTheMachineIsRefusedBeforeMeasuring) {
     EXPECT_FALSE(fs::exists(dir_ / "R"));
 }
 
-// Accepted, then drawn wrong (issue 14): a directional or spot direction of any scale must light exactly as
+// Accepted, then drawn wrong: a directional or spot direction of any scale must light exactly as
 // its unit direction, in the renderer and in the reference alike.
 TEST_F(ResourceLimits, DirectionsOfAnyScaleDrawTheSamePicture) {
     auto scene = [](const std::string& direction) {
@@ -494,7 +494,7 @@ TEST_F(ResourceLimits, DirectionsOfAnyScaleDrawTheSamePicture) {
     }
 }
 
-// Issue 16: DISPLAY names an X server that accepts the connection but never answers (a stopped Xvfb). The
+// DISPLAY names an X server that accepts the connection but never answers (a stopped Xvfb). The
 // demo used to hang in XOpenDisplay forever; it must give up within seconds and render the showcase
 // headless instead. The silent server is a Unix socket in /tmp/.X11-unix that listens and never accepts.
 TEST(SilentDisplay, DemoFallsBackToTheShowcaseWithinSeconds) {

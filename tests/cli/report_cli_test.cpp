@@ -243,7 +243,7 @@ TEST_F(ReportCli, FullDiskKeepsTheEarlierSet) {
 
 } // namespace
 
-// Interrupted (issue 14 item 3): SIGINT in the middle of measuring, SIGTERM/SIGHUP as soon as a temporary
+// Interrupted: SIGINT in the middle of measuring, SIGTERM/SIGHUP as soon as a temporary
 // file appears in the folder (the probe or the set being written). Afterwards the folder holds the complete
 // old set or the complete new set, never a mix, and no temporary file; the exit status names the signal.
 TEST_F(ReportCli, InterruptedRunLeavesTheOldOrTheNewSet) {
@@ -301,7 +301,7 @@ TEST_F(ReportCli, InterruptedRunLeavesTheOldOrTheNewSet) {
     }
 }
 
-// --no-plot (issue 15): report.csv and report.json only, and gnuplot is not needed (none on PATH here).
+// --no-plot: report.csv and report.json only, and gnuplot is not needed (none on PATH here).
 TEST_F(ReportCli, NoPlotWritesCsvAndJsonWithoutGnuplot) {
     writeFile(dir_ / "s.json", kTinyScene);
     fs::create_directories(dir_ / "empty-bin");

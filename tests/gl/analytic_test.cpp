@@ -34,25 +34,6 @@ TEST_P(PhongAgainstReference, InteriorErrorIsBelowHalfALevel) {
 INSTANTIATE_TEST_SUITE_P(Scenes, PhongAgainstReference, testing::ValuesIn(analyticCases()),
                          [](const auto& info) { return std::string(info.param.name); });
 
-// Per-pixel error on the interior: the largest |Δ| over the colour channels, in 1/255 units, for each pixel
-// interior to the same object in both images (each coverage eroded by `erode` px, as interiorError does).
-std::vector<double> interiorPixelErrors(const ImageF& rendered, const ReferenceImage& reference,
-                                        int erode = 2) {
-    const std::vector<bool> interior = sharedInterior(rendered, reference, erode);
-    std::vector<double> errors;
-    for (int y = 0; y < rendered.height; ++y) {
-        for (int x = 0; x < rendered.width; ++x) {
-            if (!interior[std::size_t(y) * rendered.width + x]) continue;
-            double e = 0;
-            for (int c = 0; c < 3; ++c)
-                e = std::max(
-                    e, 255.0 * std::abs(double(rendered.pixel(x, y)[c]) - reference.color.pixel(x, y)[c]));
-            errors.push_back(e);
-        }
-    }
-    return errors;
-}
-
 struct ErrorStats {
     double median = 0, fractionOver = 0; // fraction of pixels with error > the threshold
 };

@@ -1,4 +1,4 @@
-// The bundled lesson (lessons/lighting.json, issue 31) on every API the suite runs (desktop OpenGL and
+// The bundled lesson (lessons/lighting.json) on every API the suite runs (desktop OpenGL and
 // OpenGL ES through EGL, OSMesa): each step's scene draws, at a slide's 16:9 shape, a picture with no NaN or
 // Inf in it that shows its objects — except the step of the unnegated perspective matrix, whose picture must
 // be the bare background (the lecture's point: w < 0 in front of the eye clips everything).

@@ -1,4 +1,4 @@
-// Depth precision under stress (issue 6): two equal spheres on the view axis, the farther one `gap` behind
+// Depth precision under stress: two equal spheres on the view axis, the farther one `gap` behind
 // the nearer, so it is hidden everywhere; every pixel where the farther one wins is a depth-test failure.
 // For each distance and near plane the smallest gap with no failing pixel is found by bisection, in both
 // depth modes, and compared with DESIGN §2's estimates: ≈ 6e-8·d²/near (standard) and ≈ 1.2e-7·d

@@ -1,4 +1,4 @@
-// Extreme geometry, lighting and cameras (issue 6, items 2–5). Each case states what it expects: a correct
+// Extreme geometry, lighting and cameras. Each case states what it expects: a correct
 // picture within a stated error — against the analytic reference (interior error, as interiorError), or
 // against the same scene at a normal scale — or a clear InputError whose message names the field. Every
 // image, rendered or reference, goes through a float target and is scanned for non-finite and out-of-range

@@ -36,40 +36,6 @@ HeadlessRenderer* glRenderer(std::string& why) {
     return renderer.get();
 }
 
-std::vector<bool> sharedInterior(const ImageF& rendered, const ReferenceImage& reference, int erode) {
-    const int w = rendered.width, h = rendered.height;
-    // The rendered coverage (alpha) as ids: the object is taken from the reference where both cover.
-    std::vector<int> renderedIds(reference.objectId.size(), -1);
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x)
-            if (rendered.pixel(x, y)[3] > 0.5f)
-                renderedIds[std::size_t(y) * w + x] = reference.objectId[std::size_t(y) * w + x];
-    std::vector<bool> interior = interiorMask(reference.objectId, w, h, erode);
-    const std::vector<bool> inRendered = interiorMask(renderedIds, w, h, erode);
-    for (std::size_t i = 0; i < interior.size(); ++i) interior[i] = interior[i] && inRendered[i];
-    return interior;
-}
-
-InteriorError interiorError(const ImageF& rendered, const ReferenceImage& reference, int erode) {
-    const std::vector<bool> interior = sharedInterior(rendered, reference, erode);
-    InteriorError error;
-    double sum = 0;
-    for (int y = 0; y < rendered.height; ++y) {
-        for (int x = 0; x < rendered.width; ++x) {
-            if (!interior[std::size_t(y) * rendered.width + x]) continue;
-            for (int c = 0; c < 3; ++c) {
-                const double d =
-                    255.0 * std::abs(double(rendered.pixel(x, y)[c]) - reference.color.pixel(x, y)[c]);
-                sum += d;
-                error.max = std::max(error.max, d);
-            }
-            ++error.pixels;
-        }
-    }
-    error.mean = error.pixels ? sum / (3.0 * double(error.pixels)) : 0;
-    return error;
-}
-
 double silhouetteShiftPx(const ImageF& image, const ReferenceImage& reference) {
     const int w = image.width, h = image.height;
     auto refCovered = [&](int x, int y) {

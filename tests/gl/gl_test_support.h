@@ -20,15 +20,8 @@ ContextRequest contextUnderTest();
 // The process's renderer, or nullptr with the reason in `why` when no context can be made.
 HeadlessRenderer* glRenderer(std::string& why);
 
-// Interior error of an image against the analytic reference: |Δ| per colour channel, in 8-bit units,
-// over pixels interior to the same object in both (each coverage eroded by `erode` pixels).
-struct InteriorError {
-    double mean = 0, max = 0;
-    std::size_t pixels = 0;
-};
-InteriorError interiorError(const ImageF& rendered, const ReferenceImage& reference, int erode = 2);
-// The pixels interiorError measures: interior to the same object in the reference and in the render.
-std::vector<bool> sharedInterior(const ImageF& rendered, const ReferenceImage& reference, int erode = 2);
+// Interior error against the analytic reference: shadelab::interiorError (reference.h), the measure
+// `shadelab report` uses.
 
 // Pixels whose coverage differs between the render and the reference, per pixel of the reference's
 // silhouette (covered pixels with an uncovered 4-neighbour): the mean distance in pixels between the two

@@ -1,4 +1,4 @@
-// `shadelab report` (issue 5) on a small configuration: the bundled report scene at 128×128, levels 3..5 and
+// `shadelab report` on a small configuration: the bundled report scene at 128×128, levels 3..5 and
 // auto, a few frames. The measuring core is called directly; the last tests run the whole command.
 #include <unistd.h>
 
@@ -202,7 +202,7 @@ TEST(Report, JsonHasTheRunAndOneObjectPerRow) {
         for (std::size_t c = kTextColumns; c < kDocumentedColumns.size(); ++c)
             EXPECT_TRUE(row.at(kDocumentedColumns[c]).is_number())
                 << kDocumentedColumns[c] << " in " << row.dump();
-        // issue 15: level is a number where it is one ("auto" only for the automatic level).
+        // Level is a number where it is one ("auto" only for the automatic level).
         if (row.at("level") != "auto") {
             EXPECT_TRUE(row.at("level").is_number_integer()) << "level in " << row.dump();
         }

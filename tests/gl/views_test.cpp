@@ -1,4 +1,4 @@
-// The teaching views of issue 11 (gl/views.h) against their parts: the error view's figures against
+// The teaching views (gl/views.h) against their parts: the error view's figures against
 // `shadelab report`'s measure of the same configuration, the split view's halves against plain renders of
 // its sides, the profile's samples against the rendered rows.
 #include <algorithm>

@@ -32,6 +32,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/demo/demo_state.h"
+#include "app/demo/scene_flags.h"
 #include "cli/run_process.h"
 #include "gl/gl_test_support.h"
 #include "gl/projected_mesh.h"
@@ -314,7 +315,7 @@ TEST_F(Browser, PhongLevel8MatchesTheAnalyticReference) {
     expectCleanConsole(session.answer(console).at("console"));
 }
 
-// Exact shading on WebGL 2 (issue 11): the sphere ray-cast in the fragment shader against the same ray cast
+// Exact shading on WebGL 2: the sphere ray-cast in the fragment shader against the same ray cast
 // in double, on the analytic scenes, read back through a float target: interior mean <= 0.05/255 and max
 // <= 2/255 (except, under a spot, pixel centres within float rounding of the cone's edge, counted as in the
 // Phong test), and the covered pixels those of the reference within 0.05 per silhouette pixel.
@@ -576,9 +577,9 @@ TEST_F(Browser, KeysChangeThePictureAsInTheWindow) {
     expectCleanConsole(session.answer(console).at("console"));
 }
 
-// Issue 11 in the page: 5 (exact), E (error), V (split) and a real mouse drag of its divider, I (profile)
-// and a pointer move choosing its row. Each picture is native OpenGL ES's render of the page's state (its
-// view included) within the SwiftShader tolerance, and the state says what the key did.
+// The teaching views in the page: 5 (exact), E (error), V (split) and a real mouse drag of its divider, I
+// (profile) and a pointer move choosing its row. Each picture is native OpenGL ES's render of the page's
+// state (its view included) within the SwiftShader tolerance, and the state says what the key did.
 TEST_F(Browser, ViewsAsInTheWindow) {
     Scene scene = litSphereScene(200, LightType::Point);
     scene.shading = ShadingMode::Gouraud;
@@ -825,7 +826,7 @@ TEST_F(Browser, SDownloadsThePictureAndItsScene) {
     expectCleanConsole(session.answer(console).at("console"));
 }
 
-// Issue 15, presentation mode in the page: ?present shows the large label (the window's words), F2 hides it.
+// Presentation mode in the page: ?present shows the large label (the window's words), F2 hides it.
 TEST_F(Browser, PresentationLabelShowsAndF2HidesIt) {
     Session session;
     session.open("?present");
@@ -838,7 +839,7 @@ TEST_F(Browser, PresentationLabelShowsAndF2HidesIt) {
     if (!session.run(dir_)) return;
     const std::string label = session.answer(ui).at("ui").at("presentation");
     EXPECT_TRUE(label.starts_with("PHONG SHADING\nBLINN-PHONG LIGHTING\nLEVEL 3")) << label;
-    // Issue 29: the label is drawn into the picture by the same code as the window's (drawDemo with
+    // The label is drawn into the picture by the same code as the window's (drawDemo with
     // presentationLabelImage), so the page shows it where and as large as that layout says: the pixels
     // that F2 changes are those of the label's box at the bottom left of the picture (the scene's framing
     // in the canvas, between bars), and most of the box.
@@ -867,7 +868,7 @@ TEST_F(Browser, PresentationLabelShowsAndF2HidesIt) {
     expectCleanConsole(session.answer(console).at("console"));
 }
 
-// Issue 31 in the page: the bundled lesson by ?lesson=URL, its scene files fetched beside it (../scenes/),
+// Lessons in the page: the bundled lesson by ?lesson=URL, its scene files fetched beside it (../scenes/),
 // every one of its steps drawn by the page as natively at 320×180, the picker naming it; then a lesson
 // loaded as a file steps with Page Down, Space, Page Up and the panel's ▶ button, each step's picture native
 // OpenGL ES's render of that step's scene, and R returns to a changed step; the panel shows the step.
@@ -956,7 +957,7 @@ TEST_F(Browser, LessonStepsWithKeysAndButtonsAndTheBundledLessonDrawsEveryStep) 
     expectCleanConsole(session.answer(console).at("console"));
 }
 
-// Issue 29, the page's gaps: the picker names a bundled scene opened by ?scene=; the view menu says what
+// The page's gaps: the picker names a bundled scene opened by ?scene=; the view menu says what
 // the split draws; every warning the command line prints for a scene shows on the page; the probe's table
 // keeps its columns (no wrapping); a spot's cutoff and exponent sliders show their numbers; Esc's note
 // goes away by itself.
@@ -1004,7 +1005,7 @@ TEST_F(Browser, PickerViewMenuWarningsProbeSlidersAndEscAsTheCommandLineHasThem)
     EXPECT_TRUE(session.answer(later).at("element").at("hidden").get<bool>()) << "Esc's note stayed";
 }
 
-// Issue 29: the page frames a scene as `render` does, with the window's code (fitPicture, FramedPicture).
+// The page frames a scene as `render` does, with the window's code (fitPicture, FramedPicture).
 // grid.json (800x600, four columns of spheres) in a canvas narrower than 4:3 (bars above and below) and in
 // a wider one (bars at the sides): what differs from the bars' colour is the largest rectangle of the
 // scene's aspect, centred, where the page says the picture is; its pixels are native render's of grid.json
@@ -1091,7 +1092,7 @@ TEST_F(Browser, WideScenesKeepTheirFramingBetweenBars) {
     expectCleanConsole(session.answer(console).at("console"));
 }
 
-// Issue 29: the page's material controls edit the object chosen (0: all objects), as the window's panel
+// The page's material controls edit the object chosen (0: all objects), as the window's panel
 // does (DemoState::chooseEditedObject and editMaterial), and a probe click chooses the object it hits.
 // grid.json's twelve spheres each have their own shininess: choosing object 7 and moving the shininess
 // slider changes object 7's alone, and the panel says "panel edits: object 7 of 12"; a click on the second
@@ -1295,6 +1296,14 @@ TEST_F(Browser, RenderScriptFollowsTheCommandLinesRules) {
         EXPECT_EQ(web.err, cli.err) << scene;
         EXPECT_EQ(web.err.find('\x1b'), std::string::npos) << web.err;
     }
+    EXPECT_FALSE(fs::exists(dir_ / "o.png"));
+    // The flags are the program's one table (app::sceneFlags), read from the page: an unknown one is named,
+    // and the message lists every flag the command line has.
+    const Outcome unknown = runWith({"render", "--shade", "flat", "--out", "o.png"}, dir_, options);
+    EXPECT_EQ(unknown.exitCode, 2) << unknown.err;
+    EXPECT_NE(unknown.err.find("unknown option \"--shade\""), std::string::npos) << unknown.err;
+    for (const app::SceneFlag& flag : app::sceneFlags())
+        EXPECT_NE(unknown.err.find("--" + std::string(flag.name)), std::string::npos) << flag.name;
     EXPECT_FALSE(fs::exists(dir_ / "o.png"));
 
     const mode_t mask = ::umask(0);

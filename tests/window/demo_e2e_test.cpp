@@ -342,7 +342,7 @@ Image checkState(DemoProcess& demo, const Expected& expected, const std::string&
     const Image capture = settledCapture(demo.window(), rendered);
     const Image screenshot = readPng(stem.string() + ".png");
     EXPECT_TRUE(matches(capture, rendered, kWindowTolerance, label + ".window"));
-    // Issue 29: S's picture is the one `render` gives for the saved scene, pixel for pixel.
+    // S's picture is the one `render` gives for the saved scene, pixel for pixel.
     EXPECT_TRUE(matches(screenshot, rendered, kExact, label + ".screenshot"));
     std::printf("  %-8s S %4.0f ms, render %4.0f ms | window vs render: %s | S vs render: %s\n",
                 label.c_str(), screenshotMs, renderMs,
@@ -351,7 +351,7 @@ Image checkState(DemoProcess& demo, const Expected& expected, const std::string&
     return rendered;
 }
 
-// Issue 29: `S` then `render` of the saved JSON gives the same pixels — 0 differing — with a spot light, in
+// `S` then `render` of the saved JSON gives the same pixels — 0 differing — with a spot light, in
 // every shading mode (exact and toon included) under both lighting models. The window draws with the
 // lights' values as uniforms (a slider recompiles nothing), so it is held to kWindowTolerance; S draws the
 // picture as `render` does.
@@ -566,7 +566,7 @@ TEST_F(DemoWindow, OpenGlEsWindowShowsWhatRenderGives) {
     everyModeKeyShowsWhatRenderGives("gles");
 }
 
-// Issue 15: after the window is resized, the title shows the level that is drawn. The scene is 256×256;
+// After the window is resized, the title shows the level that is drawn. The scene is 256×256;
 // the window grows to 960×720 (inside Xvfb's 1024×768 screen) and A picks the level for that size: the
 // title's level is the one the saved JSON (at the window's size) gives, and the picture is what `render`
 // draws for that JSON.
@@ -599,7 +599,7 @@ TEST_F(DemoWindow, AfterAResizeTheTitleShowsTheDrawnLevel) {
     expectCleanQuit(demo);
 }
 
-// Issue 15, presentation mode: --present draws the large label over the bottom of the picture and leaves
+// Presentation mode: --present draws the large label over the bottom of the picture and leaves
 // the rest as `render` draws it; F2 takes the label away and the whole window is the render again.
 TEST_F(DemoWindow, PresentationLabelCoversOnlyTheBottomAndF2RemovesIt) {
     const fs::path scene = writeScene("scene.json", sceneJson(kWidth * 2, kHeight * 2, 3, "phong", "phong"));
@@ -623,7 +623,7 @@ TEST_F(DemoWindow, PresentationLabelCoversOnlyTheBottomAndF2RemovesIt) {
     expectCleanQuit(demo);
 }
 
-// Issue 31: `shadelab LESSON.json` opens at step 1; Page Down / Space / Page Up / Home / End step through
+// `shadelab LESSON.json` opens at step 1; Page Down / Space / Page Up / Home / End step through
 // it, and the window's picture at each step is what `render` gives of that step's scene; a key changes the
 // step and R returns to it as written. Steps 1 and 2 name scene files; step 3 changes step 2's shading,
 // which s3.json writes out in full for render.
@@ -718,7 +718,7 @@ constexpr int panelColumn(int windowWidth) {
     return std::min(420, windowWidth / 2);
 }
 
-// Issue 29: the picture keeps the scene's aspect, centred in the area beside the panel with bars above and
+// The picture keeps the scene's aspect, centred in the area beside the panel with bars above and
 // below or at the sides (never a cropped side). The size the scene's picture takes in an area, computed
 // here on its own: the area's full width or full height, the other side rounded to the scene's aspect.
 struct Fitted {
@@ -807,7 +807,7 @@ TEST_F(DemoWindow, PanelDrawsBesideThePicture) {
     expectCleanQuit(demo);
 }
 
-// Issue 9: a newcomer's first window. The scene's image is 256x256, but the window opens at a size fit for
+// A newcomer's first window. The scene's image is 256x256, but the window opens at a size fit for
 // the screen (1280x800, at most 90 % of the work area: Xvfb here is 1024x768), with the object framed as
 // the scene defines it beside the panel, not covered by it.
 TEST_F(DemoWindow, DefaultWindowFitsTheScreenAndThePanelCoversNothing) {
@@ -823,7 +823,7 @@ TEST_F(DemoWindow, DefaultWindowFitsTheScreenAndThePanelCoversNothing) {
     expectCleanQuit(demo);
 }
 
-// Issue 16: a screenshot that runs out of memory used to end the demo (the exception escaped GLFW's key
+// A screenshot that runs out of memory used to end the demo (the exception escaped GLFW's key
 // callback). Under an address-space limit just above what the demo holds (set on the running process, as
 // `prlimit --as` does), S must report "screenshot not saved" and the demo must go on and quit cleanly.
 TEST_F(DemoWindow, ScreenshotOutOfMemoryKeepsTheDemoRunning) {
@@ -858,7 +858,7 @@ TEST_F(DemoWindow, ScreenshotOutOfMemoryKeepsTheDemoRunning) {
     EXPECT_EQ(exit.code, 0) << "the demo did not survive the failed screenshot: " << exit.describe();
 }
 
-// Issue 15: S restarted at shadelab-001 each launch and replaced an earlier screenshot. With an earlier
+// S restarted at shadelab-001 each launch and replaced an earlier screenshot. With an earlier
 // shadelab-001 pair in the folder, S must save shadelab-002 and leave shadelab-001 as it was.
 TEST_F(DemoWindow, ScreenshotTakesTheNextFreeNumberAndNeverOverwrites) {
     expectScreenshotBesideAnEarlierOne("keep-demo");

@@ -3,12 +3,14 @@
 // renderer. The shaders keep to what all of them share; what a smaller API lacks is refused by name.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string_view>
 
 namespace shadelab {
 
 enum class Api { Gl, Gles };
+inline constexpr std::array kApis = {Api::Gl, Api::Gles}; // the vocabulary of --api (vocabulary.h)
 
 std::string_view toString(Api api);    // "gl" | "gles": the spelling of --api
 std::string_view displayName(Api api); // "OpenGL 3.3 core" | "OpenGL ES 3.0"

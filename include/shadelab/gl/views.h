@@ -1,6 +1,6 @@
-// The teaching views of issue 11 (view.h): the error heatmap, the split view and the intensity profile,
-// each drawn by the one Renderer into whatever framebuffer is bound, legends and plots included, so the
-// window, the page and a headless render show the same picture. The error view's figures are computed on
+// The teaching views (view.h; the "view" of DESIGN §4): the error heatmap, the split view and the intensity
+// profile, each drawn by the one Renderer into whatever framebuffer is bound, legends and plots included, so
+// the window, the page and a headless render show the same picture. The error view's figures are computed on
 // the GPU (a compare pass and a reduction over float targets the views own).
 #pragma once
 

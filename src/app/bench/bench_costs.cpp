@@ -1,4 +1,4 @@
-// `shadelab bench`, issue 5: what shadelab's work costs against the limits of this machine, each limit
+// `shadelab bench`: what shadelab's work costs against the limits of this machine, each limit
 // measured in the same run — sphere generation against memcpy of its output bytes and against the
 // lecture's naive recursion; each shading mode's frame against a full-screen fill and against a one-colour
 // draw of the same sphere; a thousand small spheres against the bare draw loop; `shadelab render` from

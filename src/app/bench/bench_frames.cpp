@@ -166,7 +166,7 @@ std::vector<RatioSpec> registerModes(Gpu& gpu, const std::shared_ptr<Limits>& li
         ratios.push_back({std::string(toString(mode)) + " L6: frame / one-colour sphere (culled)", name,
                           "frame/limits/one-colour-sphere-culled"});
     }
-    // Exact shading (issue 11) against Phong shading, the mesh it replaces, at level 6 and 8: the ray cast
+    // Exact shading against Phong shading, the mesh it replaces, at level 6 and 8: the ray cast
     // per pixel against the triangles' vertex work.
     Scene exact = oneLight;
     exact.shading = ShadingMode::Exact;

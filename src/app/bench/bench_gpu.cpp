@@ -1,13 +1,10 @@
 #include "app/bench/bench_gpu.h"
 
 #include <algorithm>
-#include <chrono>
 
 #include "shadelab/gl/loader.h"
 
 namespace shadelab::app {
-
-using Clock = std::chrono::steady_clock;
 
 void setSpread(benchmark::State& state, const std::vector<double>& ms) {
     if (ms.empty()) return;
@@ -21,16 +18,11 @@ Gpu::Gpu(const BenchOptions& o)
 
 void Gpu::timeFrames(benchmark::State& state, const std::function<void()>& draw) {
     target.bind();
-    for (int i = 0; i < options.warmupFrames; ++i) draw();
-    gl::finish();
+    warmUp(options.warmupFrames, draw);
     std::vector<double> ms;
     for (auto _ : state) {
-        const auto start = Clock::now();
-        draw();
-        gl::finish();
-        const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-        state.SetIterationTime(seconds);
-        ms.push_back(seconds * 1e3);
+        ms.push_back(timeFrameMs(draw));
+        state.SetIterationTime(ms.back() / 1e3);
     }
     setSpread(state, ms);
 }

@@ -37,7 +37,7 @@ struct Gpu {
 };
 
 // Each group registers its benchmarks and returns the ratios it wants reported.
-std::vector<RatioSpec> registerSpecializationBenchmarks(Gpu& gpu); // bench.cpp (issue 4)
-std::vector<RatioSpec> registerCostBenchmarks(Gpu& gpu); // bench_costs.cpp (issue 5): costs against limits
+std::vector<RatioSpec> registerSpecializationBenchmarks(Gpu& gpu); // bench.cpp
+std::vector<RatioSpec> registerCostBenchmarks(Gpu& gpu);           // bench_costs.cpp: costs against limits
 
 } // namespace shadelab::app

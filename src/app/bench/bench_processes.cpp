@@ -12,14 +12,11 @@
 #include <vector>
 
 #include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include "app/bench/bench_costs.h"
+#include "app/process/child_process.h"
 #include "shadelab/errors.h"
-
-extern char** environ; // POSIX: the environment the children inherit, less one variable
 
 namespace shadelab::app {
 namespace {
@@ -43,32 +40,25 @@ struct TempDir {
 // Runs `args` with stdout and stderr to `log` and the parent's environment (less `unset`), and returns
 // the wall time from spawn to exit. A child that cannot start or exits non-zero throws with its output.
 double runProcess(const std::vector<std::string>& args, const char* unset, const std::filesystem::path& log) {
-    std::vector<char*> argv, envp;
-    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    const std::string drop = unset ? std::string(unset) + "=" : std::string();
-    for (char** e = environ; *e; ++e)
-        if (drop.empty() || std::strncmp(*e, drop.c_str(), drop.size()) != 0) envp.push_back(*e);
-    envp.push_back(nullptr);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawn_file_actions_adddup2(&actions, 1, 2);
+    const int out = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (out < 0) throw RuntimeError("bench: cannot write " + log.string() + ": " + std::strerror(errno));
     const auto start = std::chrono::steady_clock::now();
     pid_t pid = 0;
-    const int error = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), envp.data());
-    posix_spawn_file_actions_destroy(&actions);
-    if (error != 0) throw RuntimeError("bench: cannot start " + args[0] + ": " + std::strerror(error));
-    int status = 0;
-    while (waitpid(pid, &status, 0) < 0)
-        if (errno != EINTR) throw RuntimeError("bench: waiting for " + args[0] + ": " + std::strerror(errno));
+    try {
+        pid = startChild(args, ChildStreams{-1, out, true, unset, false}, "bench");
+    } catch (...) {
+        ::close(out);
+        throw;
+    }
+    ::close(out);
+    const int status = waitForChild(pid, "bench", args[0]);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    if (const std::string failure = childFailure(status); !failure.empty()) {
         std::string command;
         for (const std::string& a : args) command += " " + a;
         std::ifstream file(log);
         const std::string output((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-        throw RuntimeError("bench:" + command + ": failed; its output:\n" + output);
+        throw RuntimeError("bench:" + command + ": failed (" + failure + "); its output:\n" + output);
     }
     return seconds;
 }

@@ -303,7 +303,7 @@ bool DemoState::apply(Command command) {
 }
 
 // What a key changed, in words: on a sphere orthographic and perspective, or exact and averaged normals,
-// look alike, so the title says it (issue 15).
+// look alike, so the title says it.
 std::string DemoState::describeChange(Command command) const {
     const Scene scene = drawn();
     switch (command) {

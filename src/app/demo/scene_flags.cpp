@@ -15,6 +15,60 @@
 
 namespace shadelab::app {
 
+const std::vector<SceneFlag>& sceneFlags() {
+    static const std::vector<SceneFlag> kFlags = {
+        {"shading", &SceneOverrides::shading,
+         "Shading mode: " + joinNames(kAllShadingModes) +
+             " (exact: each sphere ray-cast per pixel, the analytic reference; overrides the scene)"},
+        {"lighting", &SceneOverrides::lighting,
+         "Lighting model: " + joinNames(kLightingModels) + " (overrides the scene)"},
+        {"term", &SceneOverrides::term,
+         "Term of the lighting sum drawn: " + joinNames(kLightingTerms) +
+             " (ambient k_a*I_a, diffuse k_d*I_d*max(l.n,0), specular k_s*I_s*spec, each as the shading mode "
+             "evaluates it; all: their sum)"},
+        {"perspective-matrix", &SceneOverrides::perspectiveMatrix,
+         "Perspective matrix: " + joinNames(kPerspectiveMatrices) +
+             " (webgl: the lecture's matrix times -1, w > 0 in front of the eye; unnegated: before the -1, w "
+             "< 0 "
+             "in front, so everything is clipped and the picture is empty, on purpose)"},
+        {"normal-matrix", &SceneOverrides::normalMatrix,
+         "What transforms normals: " + joinNames(kNormalMatrixRules) +
+             " (inverse-transpose: (M^-1)^T, which keeps them perpendicular to the surface; model: M itself, "
+             "wrong wherever M scales unevenly, the lecture's wrong picture on purpose)"},
+        {"subdivisions", &SceneOverrides::subdivisions,
+         "Subdivision level of every object, 0.." + std::to_string(kMaxSubdivisions) +
+             ", or auto: the smallest level whose silhouette error stays below --tolerance-px"},
+        {"tolerance-px", &SceneOverrides::tolerancePx,
+         "Silhouette error auto subdivision allows (default 0.5)"},
+        {"depth", &SceneOverrides::depth,
+         "Depth mode: " + joinNames(kDepthModes) +
+             " (standard: DESIGN's [-1,1] convention; reversed: reversed-Z, 32-bit float depth; "
+             "reversed-infinite: reversed-Z with the far plane at infinity)"},
+        {"overlay", &SceneOverrides::overlay,
+         "Lines over the surface: " + joinNames(kOverlays) +
+             " (wireframe: the mesh's edges; normals: edges, face and vertex normals)"},
+        {"view", &SceneOverrides::view,
+         "What the picture shows: scene, error (|mode - exact| heatmap), profile (intensity along a row) or "
+         "split:A,B (A, B each shading[/lighting][@level], e.g. split:gouraud,phong or "
+         "split:phong@4,phong@6)"},
+        {"size", &SceneOverrides::size, "Image size WxH, e.g. 512x512 (overrides the scene)"},
+    };
+    return kFlags;
+}
+
+std::optional<std::string>* overrideNamed(SceneOverrides& overrides, std::string_view name) {
+    for (const SceneFlag& flag : sceneFlags())
+        if (flag.name == name) return &(overrides.*flag.value);
+    return nullptr;
+}
+
+std::string flagList() {
+    std::string list;
+    for (const SceneFlag& flag : sceneFlags())
+        list += (list.empty() ? "--" : ", --") + std::string(flag.name);
+    return list;
+}
+
 // The syntax is the flag's; each side's range is the scene's image.width and image.height (scene_values.h).
 void composeSize(Scene& scene, const std::string& text) {
     static const std::regex kSize(R"(([0-9]{1,9})x([0-9]{1,9}))");

@@ -5,6 +5,8 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "shadelab/scene.h"
 
@@ -22,6 +24,21 @@ struct SceneOverrides {
     std::optional<std::string> overlay;           // none | wireframe | normals | lights
     std::optional<std::string> view;              // scene | error | profile | split:A,B (view.h)
 };
+
+// The one table of these flags: each flag's name (the command line's --NAME, the page's ?NAME= and the key
+// of the page's flags object), the override it sets, and its help, whose spellings come from the
+// vocabulary its value is parsed with. The command line, the page and the browser's render script all read
+// it.
+struct SceneFlag {
+    std::string_view name;
+    std::optional<std::string> SceneOverrides::*value;
+    std::string help;
+};
+const std::vector<SceneFlag>& sceneFlags(); // in the order --help lists them
+// The override of the flag named `name`, or nullptr for a name no flag has.
+std::optional<std::string>* overrideNamed(SceneOverrides& overrides, std::string_view name);
+// "--shading, --lighting, …, --size": every flag, for messages.
+std::string flagList();
 
 // The scene file (or the DESIGN §4 defaults when `path` is empty) with the overrides applied and the
 // result validated. Errors name the argument (e.g. "--size") or the JSON path.

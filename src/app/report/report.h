@@ -1,4 +1,4 @@
-// `shadelab report` (issue 5): what each shading mode, lighting model and subdivision level of one scene
+// `shadelab report`: what each shading mode, lighting model and subdivision level of one scene
 // buys in accuracy and costs in time. measureReport() is the measuring core: it needs only a headless
 // context, so the GL tests call it without the command line; runReport() adds the scene, the files
 // (report.csv, report.json, report.png drawn by gnuplot) and the progress bar.

@@ -86,31 +86,18 @@ ReportError measureError(const ImageF& rendered, const ReferenceImage& reference
                            std::to_string(h));
     const std::size_t pixels = std::size_t(w) * std::size_t(h);
     ReportError e;
-    // The render's coverage as ids: the object is taken from the reference where both cover.
-    std::vector<int> renderedIds(pixels, -1);
-    for (std::size_t i = 0; i < pixels; ++i) {
-        const bool covered = rendered.rgba[4 * i + 3] > 0.5f;
-        if (covered) renderedIds[i] = reference.objectId[i];
-        if (covered != (reference.objectId[i] >= 0)) ++e.coverageMismatch;
-    }
-    const std::vector<bool> inReference = interiorMask(reference.objectId, w, h, 2);
-    const std::vector<bool> inRendered = interiorMask(renderedIds, w, h, 2);
-    double interiorSum = 0, squaredSum = 0;
-    for (std::size_t i = 0; i < pixels; ++i) {
-        const bool interior = inReference[i] && inRendered[i];
+    for (std::size_t i = 0; i < pixels; ++i)
+        if ((rendered.rgba[4 * i + 3] > 0.5f) != (reference.objectId[i] >= 0)) ++e.coverageMismatch;
+    const InteriorError interior = interiorError(rendered, reference, 2); // DESIGN §6: eroded by 2 px
+    e.interiorMean = interior.mean;
+    e.interiorMax = interior.max;
+    e.interiorPixels = interior.pixels;
+    double squaredSum = 0;
+    for (std::size_t i = 0; i < pixels; ++i)
         for (int c = 0; c < 3; ++c) {
-            const float got = rendered.rgba[4 * i + c], want = reference.color.rgba[4 * i + c];
-            const double d = unit(got) - unit(want);
+            const double d = unit(rendered.rgba[4 * i + c]) - unit(reference.color.rgba[4 * i + c]);
             squaredSum += d * d;
-            if (!interior) continue;
-            const double error = 255.0 * std::abs(double(got) - double(want)); // NaN stays visible here
-            interiorSum += error;
-            e.interiorMax = std::max(e.interiorMax, error);
-            if (std::isnan(error)) e.interiorMax = error;
         }
-        if (interior) ++e.interiorPixels;
-    }
-    e.interiorMean = e.interiorPixels ? interiorSum / (3.0 * double(e.interiorPixels)) : 0;
     const double mse = pixels ? squaredSum / (3.0 * double(pixels)) : 0;
     e.psnrDb = mse > 0 ? std::min(kMaxPsnrDb, -10 * std::log10(mse)) : kMaxPsnrDb;
     e.ssim = meanSsim(luminance(rendered.rgba.data(), pixels), luminance(reference.color.rgba.data(), pixels),

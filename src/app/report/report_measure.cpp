@@ -6,7 +6,6 @@
 #include "app/report/report.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -25,12 +24,6 @@
 namespace shadelab::app {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double msSince(Clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 // One level's mesh, built and timed once per configuration of levels.
 struct BuiltLevel {
@@ -69,11 +62,8 @@ constexpr int kOneOffRepeats = 3;
 double compileMs(GlRun& gl, const gl::ProgramVariant& variant, gl::MeshLayout layout) {
     gl.frameTarget.bind();
     gl::finish();
-    const auto start = Clock::now();
-    const gl::Program program = gl::buildProgram(variant);
-    gl::drawWith(program, layout == gl::MeshLayout::Flat ? gl.tetrahedronFlat : gl.tetrahedronSmooth);
-    gl::finish();
-    return msSince(start);
+    return compileAndFirstDrawMs(variant,
+                                 layout == gl::MeshLayout::Flat ? gl.tetrahedronFlat : gl.tetrahedronSmooth);
 }
 
 // The upload and frame times of `scene` as configured.

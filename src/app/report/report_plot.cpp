@@ -10,16 +10,13 @@
 #include <set>
 
 #include <fcntl.h>
-#include <spawn.h>
 #include <sys/mman.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
+#include "app/process/child_process.h"
 #include "shadelab/errors.h"
 #include "shadelab/image.h"
 #include "shadelab/text.h"
-
-extern char** environ; // POSIX: the environment gnuplot inherits
 
 namespace shadelab::app {
 
@@ -168,23 +165,6 @@ std::string gnuplotScript(const std::vector<ReportRow>& rows, const ReportInfo& 
     return s + "\n";
 }
 
-namespace {
-
-bool onPath(const char* program) {
-    const char* path = std::getenv("PATH");
-    std::string dirs = path ? path : "";
-    std::size_t start = 0;
-    while (start <= dirs.size()) {
-        const std::size_t end = std::min(dirs.find(':', start), dirs.size());
-        const std::string dir = end > start ? dirs.substr(start, end - start) : ".";
-        if (::access((dir + "/" + program).c_str(), X_OK) == 0) return true;
-        start = end + 1;
-    }
-    return false;
-}
-
-} // namespace
-
 // Runs gnuplot on `script`, fed through standard input from an anonymous file, and returns what it wrote to
 // standard output: no path reaches gnuplot's command line (so a folder named "-p" is not an option), and the
 // PNG never touches the disk until it has been checked. --default-settings: no ~/.gnuplot runs first.
@@ -209,40 +189,30 @@ std::string runGnuplot(const std::string& script) {
         ::close(in);
         throw RuntimeError("report: pipe for gnuplot: " + std::string(std::strerror(errno)));
     }
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_adddup2(&actions, in, STDIN_FILENO);
-    posix_spawn_file_actions_adddup2(&actions, out[1], STDOUT_FILENO);
-    std::string program = "gnuplot", defaults = "--default-settings";
-    char* argv[] = {program.data(), defaults.data(), nullptr};
     pid_t pid = 0;
-    const int spawnError = ::posix_spawnp(&pid, "gnuplot", &actions, nullptr, argv, environ);
-    posix_spawn_file_actions_destroy(&actions);
+    try {
+        pid = startChild({"gnuplot", "--default-settings"}, ChildStreams{in, out[1], false, nullptr, true},
+                         "report", "; report.png is drawn with gnuplot, Debian package gnuplot-nox");
+    } catch (...) {
+        ::close(in);
+        ::close(out[0]);
+        ::close(out[1]);
+        throw;
+    }
     ::close(in);
     ::close(out[1]);
     std::string png;
-    if (spawnError == 0) {
-        char buffer[65536];
-        for (;;) {
-            const ssize_t n = ::read(out[0], buffer, sizeof buffer);
-            if (n < 0 && errno == EINTR) continue;
-            if (n <= 0) break;
-            png.append(buffer, std::size_t(n));
-        }
+    char buffer[65536];
+    for (;;) {
+        const ssize_t n = ::read(out[0], buffer, sizeof buffer);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) break;
+        png.append(buffer, std::size_t(n));
     }
     ::close(out[0]);
-    if (spawnError != 0)
-        throw RuntimeError("report: cannot run gnuplot (" + std::string(std::strerror(spawnError)) +
-                           "); report.png is drawn with gnuplot, Debian package gnuplot-nox");
-    int status = 0;
-    while (::waitpid(pid, &status, 0) < 0)
-        if (errno != EINTR)
-            throw RuntimeError("report: waiting for gnuplot: " + std::string(std::strerror(errno)));
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-        throw RuntimeError("report: gnuplot failed (" +
-                           (WIFEXITED(status) ? "exit status " + std::to_string(WEXITSTATUS(status))
-                                              : "signal " + std::to_string(WTERMSIG(status))) +
-                           ") on report.gp; its messages are above");
+    const std::string failure = childFailure(waitForChild(pid, "report", "gnuplot"));
+    if (!failure.empty())
+        throw RuntimeError("report: gnuplot failed (" + failure + ") on report.gp; its messages are above");
     // gnuplot exits 0 after a write error of its own: check that what it wrote is a whole PNG.
     (void)decodePng(png, "report: gnuplot's report.png");
     return png;

@@ -19,47 +19,10 @@
 namespace shadelab::app {
 namespace {
 
-// The spellings in each flag's help come from the vocabularies the flags are parsed with (vocabulary.h), so
-// the help lists exactly what is accepted.
+// The scene flags, from their one table (scene_flags.h): the help lists exactly what is accepted.
 void addSceneFlags(CLI::App& command, SceneOverrides& o) {
-    command.add_option(
-        "--shading", o.shading,
-        "Shading mode: " + joinNames(kAllShadingModes) +
-            " (exact: each sphere ray-cast per pixel, the analytic reference; overrides the scene)");
-    command.add_option("--lighting", o.lighting,
-                       "Lighting model: " + joinNames(kLightingModels) + " (overrides the scene)");
-    command.add_option("--term", o.term,
-                       "Term of the lighting sum drawn: " + joinNames(kLightingTerms) +
-                           " (ambient k_a*I_a, diffuse k_d*I_d*max(l.n,0), specular k_s*I_s*spec, each as "
-                           "the shading mode evaluates it; all: their sum)");
-    command.add_option(
-        "--perspective-matrix", o.perspectiveMatrix,
-        "Perspective matrix: " + joinNames(kPerspectiveMatrices) +
-            " (webgl: the lecture's matrix times -1, w > 0 in front of the eye; unnegated: before "
-            "the -1, w < 0 in front, so everything is clipped and the picture is empty, on purpose)");
-    command.add_option(
-        "--normal-matrix", o.normalMatrix,
-        "What transforms normals: " + joinNames(kNormalMatrixRules) +
-            " (inverse-transpose: (M^-1)^T, which keeps them perpendicular to the surface; model: "
-            "M itself, wrong wherever M scales unevenly, the lecture's wrong picture on purpose)");
-    command.add_option("--subdivisions", o.subdivisions,
-                       "Subdivision level of every object, 0.." + std::to_string(kMaxSubdivisions) +
-                           ", or auto: the smallest level whose silhouette error stays below --tolerance-px");
-    command.add_option("--tolerance-px", o.tolerancePx,
-                       "Silhouette error auto subdivision allows (default 0.5)");
-    command.add_option(
-        "--depth", o.depth,
-        "Depth mode: " + joinNames(kDepthModes) +
-            " (standard: DESIGN's [-1,1] convention; reversed: reversed-Z, 32-bit float depth; "
-            "reversed-infinite: reversed-Z with the far plane at infinity)");
-    command.add_option("--overlay", o.overlay,
-                       "Lines over the surface: " + joinNames(kOverlays) +
-                           " (wireframe: the mesh's edges; normals: edges, face and vertex normals)");
-    command.add_option("--view", o.view,
-                       "What the picture shows: scene, error (|mode - exact| heatmap), profile (intensity "
-                       "along a row) or split:A,B (A, B each shading[/lighting][@level], e.g. "
-                       "split:gouraud,phong or split:phong@4,phong@6)");
-    command.add_option("--size", o.size, "Image size WxH, e.g. 512x512 (overrides the scene)");
+    for (const SceneFlag& flag : sceneFlags())
+        command.add_option("--" + std::string(flag.name), o.*flag.value, flag.help);
 }
 
 // The context a command asks for: --backend, --api, --egl-device (each command has its own copy).
@@ -68,13 +31,16 @@ struct ContextArgs {
 };
 
 void addApiFlag(CLI::App& command, std::string& api) {
-    command.add_option("--api", api, "gl (desktop OpenGL 3.3 core) or gles (OpenGL ES 3.0)")
+    command
+        .add_option("--api", api,
+                    joinNames(kApis) + ": " + std::string(displayName(Api::Gl)) + " or " +
+                        std::string(displayName(Api::Gles)))
         ->capture_default_str();
 }
 
 // The headless commands' --backend, --api and --egl-device (a number, or list).
 void addHeadlessFlags(CLI::App& command, ContextArgs& context) {
-    command.add_option("--backend", context.backend, "Headless context: egl or osmesa")
+    command.add_option("--backend", context.backend, "Headless context: " + joinNames(kBackends))
         ->capture_default_str();
     addApiFlag(command, context.api);
     command.add_option("--egl-device", context.eglDevice,

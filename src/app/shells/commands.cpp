@@ -17,6 +17,7 @@
 #include "shadelab/image_file.h"
 #include "shadelab/reference.h"
 #include "shadelab/text.h"
+#include "shadelab/vocabulary.h"
 
 namespace shadelab::app {
 namespace {
@@ -33,19 +34,13 @@ void checkOutputPath(const std::filesystem::path& out, const char* argument) {
 }
 
 Api apiFromArgument(const std::string& name) {
-    const auto api = parseApi(name);
-    if (!api)
-        throw InputError("--api: unknown value " + quoted(name) +
-                         "; expected gl (desktop OpenGL 3.3 core) or gles (OpenGL ES 3.0)");
-    return *api;
+    return parseNameOrThrow(name, "--api", kApis);
 }
 
 ContextRequest contextFromArguments(const std::string& backend, const std::string& api,
                                     const std::string& eglDevice) {
     ContextRequest request;
-    const auto parsed = parseBackend(backend);
-    if (!parsed) throw InputError("--backend: unknown value " + quoted(backend) + "; expected egl or osmesa");
-    request.backend = *parsed;
+    request.backend = parseNameOrThrow(backend, "--backend", kBackends);
     request.api = apiFromArgument(api);
     if (!eglDevice.empty()) {
         const bool digits =
