@@ -4,17 +4,8 @@
 #include "shadelab/gl/loader.h"
 #include "shadelab/gl/render_target.h"
 #include "shadelab/gl/renderer.h"
-#include "shadelab/vocabulary.h"
 
 namespace shadelab {
-
-std::string_view toString(Backend backend) {
-    return backend == Backend::Egl ? "egl" : "osmesa";
-}
-
-std::optional<Backend> parseBackend(std::string_view text) {
-    return parseName(text, kBackends);
-}
 
 #if !SHADELAB_HAVE_OSMESA
 std::unique_ptr<HeadlessContext> makeOsmesaContext() {

@@ -4,23 +4,6 @@
 
 #include "shadelab/errors.h"
 #include "shadelab/gl/handles.h"
-#include "shadelab/vocabulary.h"
-
-namespace shadelab {
-
-std::string_view toString(Api api) {
-    return api == Api::Gl ? "gl" : "gles";
-}
-
-std::string_view displayName(Api api) {
-    return api == Api::Gl ? "OpenGL 3.3 core" : "OpenGL ES 3.0";
-}
-
-std::optional<Api> parseApi(std::string_view text) {
-    return parseName(text, kApis);
-}
-
-} // namespace shadelab
 
 namespace shadelab::gl {
 namespace {
