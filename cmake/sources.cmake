@@ -2,18 +2,23 @@
 # (CMakeLists.txt) and the browser build (web/CMakeLists.txt) read. Each reads them with its own root
 # prepended (shadelab_sources).
 
-# The core, no GL, in the lecture's order: the sphere, the camera, lighting, the scene and its files, the
-# lessons, text and images, the ray cast and what is drawn from it.
+# The core, no GL, a folder for each stage of the pipeline: geometry (the subdivided sphere and its
+# lines), scene (the camera and view volume, scene files, lessons), shading (the lighting equations, the
+# exact ray cast and the reference), image (pixels, PNG, the labels' font), io (atomic writes, printable
+# text), and the context names.
 set(SHADELAB_CORE_SOURCES
-  src/sphere.cpp src/sphere_limits.cpp src/subdivision.cpp src/mesh_layout.cpp
-  src/camera.cpp src/lighting.cpp
-  src/scene.cpp src/scene_check.cpp src/scene_json.cpp src/scene_parse.cpp src/scene_write.cpp src/view.cpp
-  src/lesson.cpp src/atomic_file.cpp src/text.cpp src/image.cpp src/font.cpp
-  src/ray_cast.cpp src/probe.cpp src/overlay.cpp src/outside_view.cpp
+  src/geometry/sphere.cpp src/geometry/sphere_limits.cpp src/geometry/subdivision.cpp
+  src/geometry/mesh_layout.cpp src/geometry/overlay.cpp
+  src/scene/camera.cpp src/scene/view.cpp src/scene/outside_view.cpp src/scene/scene.cpp
+  src/scene/scene_check.cpp src/scene/scene_json.cpp src/scene/scene_parse.cpp src/scene/scene_write.cpp
+  src/scene/lesson.cpp
+  src/shading/lighting.cpp src/shading/ray_cast.cpp src/shading/probe.cpp
+  src/image/image.cpp src/image/font.cpp
+  src/io/atomic_file.cpp src/io/text.cpp
   src/context/names.cpp)
 # What only the native program needs: PNG files (libpng; the page hands the browser its pixels) and the
 # analytic reference image (threads; the page checks against the native build instead).
-set(SHADELAB_CORE_NATIVE_SOURCES src/png.cpp src/reference.cpp)
+set(SHADELAB_CORE_NATIVE_SOURCES src/image/png.cpp src/shading/reference.cpp)
 # GL: the loader, the objects, programs, meshes, the renderer, render targets and the teaching views.
 set(SHADELAB_GL_SOURCES
   src/gl/loader.cpp src/gl/handles.cpp src/gl/program.cpp src/gl/program_variant.cpp src/gl/mesh.cpp

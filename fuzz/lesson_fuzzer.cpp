@@ -1,4 +1,4 @@
-// libFuzzer target for the lesson parser (shadelab/lesson.h). For any bytes, parseLesson either
+// libFuzzer target for the lesson parser (shadelab/scene/lesson.h). For any bytes, parseLesson either
 // returns a lesson or throws InputError; anything else (another exception, a sanitizer report, a hang) is a
 // crash. A lesson it returns keeps the limits lesson.h promises (1..kMaxLessonSteps steps, a one-line title
 // of at most kMaxStepTitleBytes, a caption of at most kMaxCaptionBytes and kMaxCaptionLines lines), every
@@ -13,7 +13,7 @@
 #include <string_view>
 
 #include "shadelab/errors.h"
-#include "shadelab/lesson.h"
+#include "shadelab/scene/lesson.h"
 
 namespace {
 

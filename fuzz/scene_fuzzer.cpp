@@ -17,7 +17,7 @@
 #include <string_view>
 
 #include "shadelab/errors.h"
-#include "shadelab/scene.h"
+#include "shadelab/scene/scene.h"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// The lighting equations of DESIGN §3: the GLSL mirror of src/lighting.cpp (change both together). The steps
+// The lighting equations of DESIGN §3: the GLSL mirror of src/shading/lighting.cpp (change both together). The steps
 // of a light's term have the C++ names — toViewer, toLight, attenuation, spotFactor, specular — and the
 // guards are C++'s constants. Prepended to both stages of every program. All vectors are in view space; the
 // viewer is at the origin.

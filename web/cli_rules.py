@@ -1,5 +1,5 @@
-"""The native command line's rules for a scene file and an output path (src/scene_json.cpp readSceneFile,
-src/atomic_file.cpp resolveOutput / PendingOutput), with its messages word for word, for web.sh render:
+"""The native command line's rules for a scene file and an output path (src/scene/scene_json.cpp readSceneFile,
+src/io/atomic_file.cpp resolveOutput / PendingOutput), with its messages word for word, for web.sh render:
 the browser's `shadelab render` reads and writes files as `shadelab render` does. Keep the two in step
 (tests/web/browser_test.cpp RenderScript* compare them).
 """

@@ -21,16 +21,16 @@
 #include "app/demo/demo_state.h"
 #include "app/demo/matrices_text.h"
 #include "app/demo/scene_flags.h"
+#include "shadelab/context/window.h"
 #include "shadelab/errors.h"
+#include "shadelab/geometry/sphere.h"
 #include "shadelab/gl/loader.h"
 #include "shadelab/gl/render_target.h"
 #include "shadelab/gl/renderer.h"
-#include "shadelab/image.h"
-#include "shadelab/lesson.h"
-#include "shadelab/scene.h"
-#include "shadelab/sphere.h"
-#include "shadelab/text.h"
-#include "shadelab/window.h"
+#include "shadelab/image/image.h"
+#include "shadelab/io/text.h"
+#include "shadelab/scene/lesson.h"
+#include "shadelab/scene/scene.h"
 
 namespace {
 

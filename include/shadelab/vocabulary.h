@@ -12,7 +12,7 @@
 #include <string_view>
 
 #include "shadelab/errors.h"
-#include "shadelab/text.h"
+#include "shadelab/io/text.h"
 
 namespace shadelab {
 

@@ -10,10 +10,10 @@
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 
-#include "shadelab/context.h"
+#include "shadelab/context/context.h"
 #include "shadelab/errors.h"
 #include "shadelab/gl/loader.h"
-#include "shadelab/text.h"
+#include "shadelab/io/text.h"
 
 namespace shadelab {
 namespace {

@@ -1,4 +1,4 @@
-#include "shadelab/window.h"
+#include "shadelab/context/window.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -17,7 +17,7 @@
 
 #include "shadelab/errors.h"
 #include "shadelab/gl/loader.h"
-#include "shadelab/text.h"
+#include "shadelab/io/text.h"
 
 namespace shadelab {
 

@@ -1,4 +1,4 @@
-#include "shadelab/headless.h"
+#include "shadelab/context/headless.h"
 
 #include "shadelab/errors.h"
 #include "shadelab/gl/loader.h"

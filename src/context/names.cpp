@@ -1,6 +1,6 @@
-// The spellings of the context vocabularies (shadelab/context.h, shadelab/gl/api.h): GL-free, so the
+// The spellings of the context vocabularies (shadelab/context/context.h, shadelab/gl/api.h): GL-free, so the
 // command line's help and parsing (and its fuzzer) need no GL library.
-#include "shadelab/context.h"
+#include "shadelab/context/context.h"
 #include "shadelab/vocabulary.h"
 
 namespace shadelab {

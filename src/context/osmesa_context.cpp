@@ -6,7 +6,7 @@
 
 #include <GL/osmesa.h>
 
-#include "shadelab/context.h"
+#include "shadelab/context/context.h"
 #include "shadelab/errors.h"
 #include "shadelab/gl/loader.h"
 

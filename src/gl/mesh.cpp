@@ -1,6 +1,6 @@
 #include "shadelab/gl/mesh.h"
 
-#include "shadelab/mesh_layout.h"
+#include "shadelab/geometry/mesh_layout.h"
 
 #include <cstddef>
 

@@ -7,7 +7,7 @@
 #include <tuple>
 
 #include "shadelab/errors.h"
-#include "shadelab/text.h"
+#include "shadelab/io/text.h"
 
 namespace shadelab::gl {
 namespace {
@@ -119,8 +119,8 @@ std::string ProgramVariant::name() const {
 }
 
 std::string ProgramVariant::defines() const {
-    // What src/lighting.cpp owns and shaders/lighting.glsl reads: the limits, DESIGN §3's guards, and the
-    // LightType codes of the uber program's uLights[i].type.
+    // What src/shading/lighting.cpp owns and shaders/lighting.glsl reads: the limits, DESIGN §3's guards, and
+    // the LightType codes of the uber program's uLights[i].type.
     std::string text = "#define MAX_LIGHTS " + std::to_string(kMaxLights) + "\n";
     text += "#define TOON_HIGHLIGHT " + glslFloat(float(kToonHighlight)) + "\n";
     text += "#define TINY_COMPONENT " + glslFloat(float(kTinyComponent)) + "\n";

@@ -10,10 +10,10 @@
 #include <glad/gl.h>
 
 #include "shadelab/errors.h"
+#include "shadelab/geometry/subdivision.h"
 #include "shadelab/gl/loader.h"
-#include "shadelab/outside_view.h"
-#include "shadelab/ray_cast.h"
-#include "shadelab/subdivision.h"
+#include "shadelab/scene/outside_view.h"
+#include "shadelab/shading/ray_cast.h"
 
 namespace shadelab::gl {
 namespace {

@@ -10,16 +10,16 @@
 #include <glad/gl.h>
 
 #include "shadelab/errors.h"
+#include "shadelab/geometry/subdivision.h"
 #include "shadelab/gl/loader.h"
 #include "shadelab/gl/program.h"
 #include "shadelab/gl/render_target.h"
 #include "shadelab/gl/renderer.h"
 #include "shadelab/gl/screen_pass.h"
-#include "shadelab/image.h"
-#include "shadelab/outside_view.h"
-#include "shadelab/reference.h"
-#include "shadelab/subdivision.h"
-#include "shadelab/text.h"
+#include "shadelab/image/image.h"
+#include "shadelab/io/text.h"
+#include "shadelab/scene/outside_view.h"
+#include "shadelab/shading/reference.h"
 
 namespace shadelab::gl {
 namespace {

@@ -22,13 +22,13 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
-#include "shadelab/camera.h"
+#include "shadelab/context/window.h"
 #include "shadelab/errors.h"
-#include "shadelab/scene.h"
-#include "shadelab/scene_values.h"
-#include "shadelab/sphere.h"
-#include "shadelab/subdivision.h"
-#include "shadelab/window.h"
+#include "shadelab/geometry/sphere.h"
+#include "shadelab/geometry/subdivision.h"
+#include "shadelab/scene/camera.h"
+#include "shadelab/scene/scene.h"
+#include "shadelab/scene/scene_values.h"
 
 namespace shadelab::app {
 namespace {

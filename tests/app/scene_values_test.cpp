@@ -1,4 +1,4 @@
-// One way in for every value (shadelab/scene_values.h): each bad value goes through both doors —
+// One way in for every value (shadelab/scene/scene_values.h): each bad value goes through both doors —
 // a scene file (parseScene) and the flag that sets the same value (applyOverrides, which the command line,
 // the demo and the page share) — and both must refuse it with the same words after the field's name. The
 // expected texts come from DESIGN §4's ranges, not from scene_check.cpp.
@@ -12,8 +12,8 @@
 #include <gtest/gtest.h>
 
 #include "shadelab/errors.h"
-#include "shadelab/scene.h"
-#include "shadelab/scene_values.h"
+#include "shadelab/scene/scene.h"
+#include "shadelab/scene/scene_values.h"
 
 namespace shadelab::app {
 namespace {

@@ -15,8 +15,8 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/run_process.h"
-#include "shadelab/image.h"
-#include "shadelab/image_file.h"
+#include "shadelab/image/image.h"
+#include "shadelab/image/image_file.h"
 
 namespace {
 

@@ -32,10 +32,10 @@
 #include <png.h>
 
 #include "cli/run_process.h"
-#include "shadelab/image.h"
-#include "shadelab/image_file.h"
-#include "shadelab/lighting.h"
-#include "shadelab/scene.h"
+#include "shadelab/image/image.h"
+#include "shadelab/image/image_file.h"
+#include "shadelab/scene/scene.h"
+#include "shadelab/shading/lighting.h"
 #include "shadelab/vocabulary.h"
 
 namespace {

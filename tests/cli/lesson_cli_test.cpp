@@ -16,8 +16,8 @@
 
 #include "app/demo/demo_state.h"
 #include "cli/run_process.h"
-#include "shadelab/image.h"
-#include "shadelab/image_file.h"
+#include "shadelab/image/image.h"
+#include "shadelab/image/image_file.h"
 
 namespace shadelab::cli_test {
 namespace {

@@ -12,7 +12,7 @@
 #include <numbers>
 
 #include "gl/gl_test_support.h"
-#include "shadelab/subdivision.h"
+#include "shadelab/geometry/subdivision.h"
 
 namespace shadelab::test {
 namespace {

@@ -6,7 +6,7 @@
 #include <filesystem>
 
 #include "gl/gl_test_support.h"
-#include "shadelab/scene_file.h"
+#include "shadelab/scene/scene_file.h"
 
 namespace shadelab::test {
 namespace {

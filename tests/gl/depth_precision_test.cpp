@@ -10,7 +10,7 @@
 
 #include "gl/gl_test_support.h"
 #include "shadelab/errors.h"
-#include "shadelab/scene.h"
+#include "shadelab/scene/scene.h"
 
 namespace shadelab::test {
 namespace {

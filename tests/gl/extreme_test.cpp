@@ -24,7 +24,7 @@
 
 #include "gl/gl_test_support.h"
 #include "shadelab/errors.h"
-#include "shadelab/subdivision.h"
+#include "shadelab/geometry/subdivision.h"
 
 // ---- allocation watch: the largest single operator-new request, to show that a refused subdivision level
 // allocates nothing for its mesh (GL's own buffers go through malloc and are not counted). Every

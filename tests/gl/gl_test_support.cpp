@@ -9,7 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "shadelab/errors.h"
-#include "shadelab/outside_view.h"
+#include "shadelab/scene/outside_view.h"
 
 namespace shadelab::test {
 

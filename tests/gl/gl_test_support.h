@@ -8,9 +8,9 @@
 
 #include <gtest/gtest.h>
 
+#include "shadelab/context/headless.h"
 #include "shadelab/gl/program.h"
-#include "shadelab/headless.h"
-#include "shadelab/reference.h"
+#include "shadelab/shading/reference.h"
 
 namespace shadelab::test {
 

@@ -12,11 +12,11 @@
 
 #include <gtest/gtest.h>
 
-#include "shadelab/camera.h"
-#include "shadelab/image.h"
-#include "shadelab/lighting.h"
-#include "shadelab/scene.h"
-#include "shadelab/sphere.h"
+#include "shadelab/geometry/sphere.h"
+#include "shadelab/image/image.h"
+#include "shadelab/scene/camera.h"
+#include "shadelab/scene/scene.h"
+#include "shadelab/shading/lighting.h"
 
 namespace shadelab::test {
 

@@ -9,8 +9,8 @@
 #include <functional>
 
 #include "gl/gl_test_support.h"
-#include "shadelab/image_file.h"
-#include "shadelab/scene_file.h"
+#include "shadelab/image/image_file.h"
+#include "shadelab/scene/scene_file.h"
 
 namespace shadelab::test {
 namespace {

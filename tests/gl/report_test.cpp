@@ -15,10 +15,10 @@
 #include "app/report/report.h"
 #include "gl/gl_test_support.h"
 #include "shadelab/errors.h"
-#include "shadelab/image_file.h"
-#include "shadelab/mesh_layout.h"
-#include "shadelab/scene_file.h"
-#include "shadelab/subdivision.h"
+#include "shadelab/geometry/mesh_layout.h"
+#include "shadelab/geometry/subdivision.h"
+#include "shadelab/image/image_file.h"
+#include "shadelab/scene/scene_file.h"
 
 namespace shadelab::test {
 namespace {

@@ -9,7 +9,7 @@
 #include "gl/gl_test_support.h"
 #include "shadelab/errors.h"
 #include "shadelab/gl/program.h"
-#include "shadelab/text.h"
+#include "shadelab/io/text.h"
 
 namespace shadelab::test {
 namespace {
@@ -239,8 +239,8 @@ TEST(SpecializationCache, ValuesBuildAProgramPerDistinctMaterial) {
     EXPECT_EQ(renderer->programsBuilt(), before + 2) << "values seen before";
 }
 
-// The constants shaders/lighting.glsl shares with src/lighting.cpp come from C++, each read back as C++'s
-// value rounded to float, in every variant.
+// The constants shaders/lighting.glsl shares with src/shading/lighting.cpp come from C++, each read back as
+// C++'s value rounded to float, in every variant.
 TEST(SpecializationKey, DefinesCarryLightingsConstants) {
     auto valueOf = [](const std::string& defines, const std::string& name) {
         const std::string key = "#define " + name + " ";

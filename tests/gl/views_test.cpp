@@ -11,8 +11,8 @@
 
 #include "gl/gl_test_support.h"
 #include "shadelab/gl/views.h"
-#include "shadelab/image_file.h"
-#include "shadelab/outside_view.h"
+#include "shadelab/image/image_file.h"
+#include "shadelab/scene/outside_view.h"
 
 namespace shadelab::test {
 namespace {

@@ -36,11 +36,11 @@
 #include "cli/run_process.h"
 #include "gl/gl_test_support.h"
 #include "gl/projected_mesh.h"
-#include "shadelab/image_file.h"
-#include "shadelab/lesson.h"
-#include "shadelab/probe.h"
-#include "shadelab/scene_file.h"
-#include "shadelab/window.h"
+#include "shadelab/context/window.h"
+#include "shadelab/image/image_file.h"
+#include "shadelab/scene/lesson.h"
+#include "shadelab/scene/scene_file.h"
+#include "shadelab/shading/probe.h"
 
 namespace shadelab::test {
 namespace {

@@ -27,10 +27,10 @@
 
 #include <gtest/gtest.h>
 
-#include "shadelab/image_file.h"
-#include "shadelab/scene.h"
-#include "shadelab/scene_file.h"
-#include "shadelab/subdivision.h"
+#include "shadelab/geometry/subdivision.h"
+#include "shadelab/image/image_file.h"
+#include "shadelab/scene/scene.h"
+#include "shadelab/scene/scene_file.h"
 #include "window/demo_process.h"
 
 namespace shadelab::window_test {

@@ -1,5 +1,5 @@
 #include "window/demo_process.h"
-#include "shadelab/image_file.h"
+#include "shadelab/image/image_file.h"
 
 #include <algorithm>
 #include <cstdio>

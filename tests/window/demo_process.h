@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "shadelab/image.h"
+#include "shadelab/image/image.h"
 #include "window/x_session.h"
 
 namespace shadelab::window_test {

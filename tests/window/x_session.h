@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "shadelab/image.h"
+#include "shadelab/image/image.h"
 #include "window/process.h"
 
 namespace shadelab::window_test {

@@ -5,8 +5,8 @@
 #include "shadelab/gl/handles.h"
 #include <span>
 
-#include "shadelab/overlay.h"
-#include "shadelab/sphere.h"
+#include "shadelab/geometry/overlay.h"
+#include "shadelab/geometry/sphere.h"
 
 namespace shadelab::gl {
 

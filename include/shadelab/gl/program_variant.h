@@ -4,13 +4,13 @@
 // where the scene has none (DESIGN §3 unchanged: the same equation with the absent terms left out) — and,
 // further, to one object's values (its material times the lights' colours, the lights' attenuation and
 // cones) as constants. A variant is the key of the renderer's program cache and gives the #define lines it
-// compiles with, the constants shaders/lighting.glsl shares with src/lighting.cpp among them.
+// compiles with, the constants shaders/lighting.glsl shares with src/shading/lighting.cpp among them.
 #pragma once
 
 #include <string>
 
-#include "shadelab/lighting.h"
-#include "shadelab/scene.h"
+#include "shadelab/scene/scene.h"
+#include "shadelab/shading/lighting.h"
 
 namespace shadelab::gl {
 

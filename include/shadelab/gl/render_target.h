@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "shadelab/gl/handles.h"
-#include "shadelab/image.h"
-#include "shadelab/scene.h"
+#include "shadelab/image/image.h"
+#include "shadelab/scene/scene.h"
 
 namespace shadelab::gl {
 

@@ -14,7 +14,7 @@
 #include "shadelab/gl/program.h"
 #include "shadelab/gl/screen_pass.h"
 #include "shadelab/gl/views.h"
-#include "shadelab/scene.h"
+#include "shadelab/scene/scene.h"
 
 namespace shadelab::gl {
 

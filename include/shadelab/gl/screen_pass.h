@@ -7,7 +7,7 @@
 
 #include "shadelab/gl/handles.h"
 #include "shadelab/gl/render_target.h"
-#include "shadelab/image.h"
+#include "shadelab/image/image.h"
 
 namespace shadelab::gl {
 

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "shadelab/gl/handles.h"
-#include "shadelab/outside_view.h"
-#include "shadelab/scene.h"
+#include "shadelab/scene/outside_view.h"
+#include "shadelab/scene/scene.h"
 
 namespace shadelab::gl {
 

@@ -20,14 +20,14 @@
 
 #include "app/bench/bench_gpu.h"
 #include "app/measure/bundled_scenes.h"
-#include "shadelab/atomic_file.h"
 #include "shadelab/errors.h"
+#include "shadelab/geometry/mesh_layout.h"
 #include "shadelab/gl/loader.h"
 #include "shadelab/gl/program.h"
 #include "shadelab/gl/render_target.h"
 #include "shadelab/gl/renderer.h"
-#include "shadelab/mesh_layout.h"
-#include "shadelab/text.h"
+#include "shadelab/io/atomic_file.h"
+#include "shadelab/io/text.h"
 
 namespace shadelab::app {
 namespace {

@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "shadelab/context.h"
+#include "shadelab/context/context.h"
 
 namespace shadelab::app {
 

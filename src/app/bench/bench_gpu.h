@@ -11,7 +11,7 @@
 
 #include "app/bench/bench.h"
 #include "app/measure/frame_timing.h"
-#include "shadelab/context.h"
+#include "shadelab/context/context.h"
 #include "shadelab/gl/render_target.h"
 #include "shadelab/gl/renderer.h"
 

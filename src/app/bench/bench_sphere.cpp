@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "app/bench/bench_costs.h"
-#include "shadelab/sphere.h"
+#include "shadelab/geometry/sphere.h"
 
 namespace shadelab::app {
 namespace {

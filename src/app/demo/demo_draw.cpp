@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "shadelab/overlay.h"
+#include "shadelab/geometry/overlay.h"
 
 namespace shadelab::app {
 

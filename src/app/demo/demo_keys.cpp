@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "shadelab/window.h"
+#include "shadelab/context/window.h"
 
 namespace shadelab::app {
 namespace {

@@ -9,7 +9,7 @@
 
 #include "app/demo/demo_format.h"
 #include "shadelab/errors.h"
-#include "shadelab/subdivision.h"
+#include "shadelab/geometry/subdivision.h"
 
 namespace shadelab::app {
 namespace {

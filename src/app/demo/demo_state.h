@@ -12,11 +12,11 @@
 #include <utility>
 #include <vector>
 
-#include "shadelab/image.h"
-#include "shadelab/lesson.h"
-#include "shadelab/probe.h"
-#include "shadelab/scene.h"
-#include "shadelab/sphere.h"
+#include "shadelab/geometry/sphere.h"
+#include "shadelab/image/image.h"
+#include "shadelab/scene/lesson.h"
+#include "shadelab/scene/scene.h"
+#include "shadelab/shading/probe.h"
 
 namespace shadelab::app {
 

@@ -6,7 +6,7 @@
 #include <cstdio>
 
 #include "app/demo/demo_format.h"
-#include "shadelab/text.h"
+#include "shadelab/io/text.h"
 
 namespace shadelab::app {
 

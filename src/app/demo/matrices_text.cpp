@@ -4,8 +4,8 @@
 #include <cstdio>
 #include <initializer_list>
 
-#include "shadelab/camera.h"
 #include "shadelab/errors.h"
+#include "shadelab/scene/camera.h"
 
 namespace shadelab::app {
 namespace {

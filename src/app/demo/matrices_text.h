@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "shadelab/scene.h"
+#include "shadelab/scene/scene.h"
 
 namespace shadelab::app {
 

@@ -7,10 +7,10 @@
 #include <string_view>
 
 #include "shadelab/errors.h"
-#include "shadelab/scene_file.h"
-#include "shadelab/scene_values.h"
-#include "shadelab/sphere.h"
-#include "shadelab/text.h"
+#include "shadelab/geometry/sphere.h"
+#include "shadelab/io/text.h"
+#include "shadelab/scene/scene_file.h"
+#include "shadelab/scene/scene_values.h"
 #include "shadelab/vocabulary.h"
 
 namespace shadelab::app {

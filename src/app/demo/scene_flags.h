@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-#include "shadelab/scene.h"
+#include "shadelab/scene/scene.h"
 
 namespace shadelab::app {
 

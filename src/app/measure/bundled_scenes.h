@@ -5,7 +5,7 @@
 #include <optional>
 #include <string_view>
 
-#include "shadelab/scene.h"
+#include "shadelab/scene/scene.h"
 
 namespace shadelab::app {
 

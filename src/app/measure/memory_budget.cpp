@@ -7,8 +7,8 @@
 #include <unistd.h>
 
 #include "shadelab/errors.h"
-#include "shadelab/mesh_layout.h"
-#include "shadelab/sphere.h"
+#include "shadelab/geometry/mesh_layout.h"
+#include "shadelab/geometry/sphere.h"
 
 namespace shadelab::app {
 

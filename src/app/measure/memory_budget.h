@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-#include "shadelab/scene.h"
+#include "shadelab/scene/scene.h"
 
 namespace shadelab::app {
 

@@ -20,11 +20,11 @@
 #include "app/measure/bundled_scenes.h"
 #include "app/measure/memory_budget.h"
 #include "app/report/report_files.h"
-#include "shadelab/atomic_file.h"
 #include "shadelab/errors.h"
 #include "shadelab/gl/loader.h"
-#include "shadelab/scene_file.h"
-#include "shadelab/text.h"
+#include "shadelab/io/atomic_file.h"
+#include "shadelab/io/text.h"
+#include "shadelab/scene/scene_file.h"
 
 namespace shadelab::app {
 

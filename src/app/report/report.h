@@ -14,9 +14,9 @@
 #include <string_view>
 #include <vector>
 
-#include "shadelab/context.h"
-#include "shadelab/reference.h"
-#include "shadelab/scene.h"
+#include "shadelab/context/context.h"
+#include "shadelab/scene/scene.h"
+#include "shadelab/shading/reference.h"
 
 namespace shadelab::app {
 

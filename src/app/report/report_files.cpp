@@ -13,7 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "shadelab/atomic_file.h"
+#include "shadelab/io/atomic_file.h"
 
 namespace shadelab::app {
 

@@ -13,13 +13,13 @@
 
 #include "app/measure/frame_timing.h"
 #include "shadelab/errors.h"
+#include "shadelab/geometry/mesh_layout.h"
+#include "shadelab/geometry/subdivision.h"
 #include "shadelab/gl/loader.h"
 #include "shadelab/gl/mesh.h"
 #include "shadelab/gl/program.h"
 #include "shadelab/gl/render_target.h"
 #include "shadelab/gl/renderer.h"
-#include "shadelab/mesh_layout.h"
-#include "shadelab/subdivision.h"
 
 namespace shadelab::app {
 

@@ -15,8 +15,8 @@
 
 #include "app/process/child_process.h"
 #include "shadelab/errors.h"
-#include "shadelab/image.h"
-#include "shadelab/text.h"
+#include "shadelab/image/image.h"
+#include "shadelab/io/text.h"
 
 namespace shadelab::app {
 

@@ -11,9 +11,9 @@
 #include <CLI/CLI.hpp>
 
 #include "app/demo/demo_state.h"
-#include "shadelab/lighting.h"
-#include "shadelab/scene.h"
-#include "shadelab/text.h"
+#include "shadelab/io/text.h"
+#include "shadelab/scene/scene.h"
+#include "shadelab/shading/lighting.h"
 #include "shadelab/vocabulary.h"
 
 namespace shadelab::app {

@@ -10,13 +10,13 @@
 
 #include "app/measure/memory_budget.h"
 #include "app/shells/commands.h"
-#include "shadelab/atomic_file.h"
+#include "shadelab/context/headless.h"
 #include "shadelab/errors.h"
 #include "shadelab/gl/program.h"
-#include "shadelab/headless.h"
-#include "shadelab/image_file.h"
-#include "shadelab/reference.h"
-#include "shadelab/text.h"
+#include "shadelab/image/image_file.h"
+#include "shadelab/io/atomic_file.h"
+#include "shadelab/io/text.h"
+#include "shadelab/shading/reference.h"
 #include "shadelab/vocabulary.h"
 
 namespace shadelab::app {

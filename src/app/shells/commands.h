@@ -8,9 +8,9 @@
 #include <string>
 
 #include "app/demo/scene_flags.h"
-#include "shadelab/context.h"
-#include "shadelab/lesson.h"
-#include "shadelab/scene.h"
+#include "shadelab/context/context.h"
+#include "shadelab/scene/lesson.h"
+#include "shadelab/scene/scene.h"
 
 namespace shadelab::app {
 

@@ -23,12 +23,12 @@
 #include "app/demo/demo_state.h"
 #include "app/shells/commands.h"
 #include "app/shells/panel.h"
+#include "shadelab/context/window.h"
 #include "shadelab/errors.h"
 #include "shadelab/gl/loader.h"
 #include "shadelab/gl/render_target.h"
 #include "shadelab/gl/renderer.h"
-#include "shadelab/text.h"
-#include "shadelab/window.h"
+#include "shadelab/io/text.h"
 
 namespace shadelab::app {
 namespace {

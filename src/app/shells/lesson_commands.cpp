@@ -6,13 +6,13 @@
 #include "app/demo/demo_state.h"
 #include "app/measure/memory_budget.h"
 #include "app/shells/commands.h"
-#include "shadelab/atomic_file.h"
+#include "shadelab/context/headless.h"
 #include "shadelab/errors.h"
 #include "shadelab/gl/renderer.h"
-#include "shadelab/headless.h"
-#include "shadelab/image_file.h"
-#include "shadelab/scene_file.h"
-#include "shadelab/text.h"
+#include "shadelab/image/image_file.h"
+#include "shadelab/io/atomic_file.h"
+#include "shadelab/io/text.h"
+#include "shadelab/scene/scene_file.h"
 
 namespace shadelab::app {
 namespace {

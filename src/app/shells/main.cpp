@@ -16,10 +16,10 @@
 #include "app/report/report.h"
 #include "app/shells/cli.h"
 #include "app/shells/commands.h"
-#include "shadelab/atomic_file.h"
 #include "shadelab/errors.h"
-#include "shadelab/scene_file.h"
-#include "shadelab/text.h"
+#include "shadelab/io/atomic_file.h"
+#include "shadelab/io/text.h"
+#include "shadelab/scene/scene_file.h"
 
 namespace {
 

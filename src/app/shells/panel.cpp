@@ -8,9 +8,9 @@
 #include <imgui_impl_opengl3.h>
 
 #include "app/demo/matrices_text.h"
+#include "shadelab/context/window.h"
 #include "shadelab/errors.h"
 #include "shadelab/gl/loader.h"
-#include "shadelab/window.h"
 
 namespace shadelab::app {
 namespace {

@@ -1,0 +1,45 @@
+// Lines drawn over the shaded picture for teaching: the mesh's edges and normals (Scene::overlay, the demo's
+// W key) and the probe's vectors l, n, v and r or h. Plain CPU data; the GL layer draws it (gl/renderer.h).
+#pragma once
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "shadelab/geometry/sphere.h"
+#include "shadelab/scene/scene.h"
+#include "shadelab/shading/probe.h"
+
+namespace shadelab {
+
+// Two of these make a line segment (GL_LINES). Colours are linear RGB, as everywhere in shadelab.
+struct LineVertex {
+    glm::vec3 position;
+    glm::vec3 color;
+};
+
+inline constexpr glm::vec3 kEdgeColor{0.85f, 0.85f, 0.85f};
+inline constexpr glm::vec3 kFaceNormalColor{1.0f, 0.75f, 0.1f};
+inline constexpr glm::vec3 kVertexNormalColor{0.1f, 0.8f, 1.0f};
+// The probe's vectors: l yellow, n white, v green, r or h magenta.
+inline constexpr glm::vec3 kToLightColor{1.0f, 0.95f, 0.1f};
+inline constexpr glm::vec3 kNormalColor{1.0f, 1.0f, 1.0f};
+inline constexpr glm::vec3 kToViewerColor{0.2f, 1.0f, 0.3f};
+inline constexpr glm::vec3 kSpecularVectorColor{1.0f, 0.2f, 1.0f};
+// An orange cross marks the point: n and v often face the camera and show as dots.
+inline constexpr glm::vec3 kProbeMarkColor{1.0f, 0.35f, 0.1f};
+
+// Edges are drawn this much outside the unit sphere's mesh, so that the depth test keeps the front ones
+// and hides those behind the object without fighting the faces they lie on.
+inline constexpr float kOverlayLift = 1.003f;
+
+// In object space: every edge once (Wireframe, Normals), and with Normals each face normal from its
+// centroid and each vertex normal (of the mesh's kind) from its vertex, a little longer than an edge.
+std::vector<LineVertex> overlayLines(const SphereMesh& mesh, Overlay overlay);
+
+// In view space: the probe's n, v, l and r/h from the point where the mode evaluates the lighting, each
+// `length` long (l and r/h only where a light is not ambient), then a cross of two segments across the
+// point in the view plane, `length`/5 wide.
+std::vector<LineVertex> probeLines(const ProbeReport& probe, double length);
+
+} // namespace shadelab

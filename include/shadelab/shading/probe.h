@@ -1,0 +1,55 @@
+// The demo's probe (click a surface point): the point shaded the way the current shading mode shades it and
+// exactly, term by term (DESIGN §3), with the vectors l, n, v and r or h the equation uses there. Pure CPU
+// code in double, the same lighting code as the analytic reference; the window and the page show it.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+
+#include <glm/glm.hpp>
+
+#include "shadelab/geometry/sphere.h"
+#include "shadelab/scene/scene.h"
+#include "shadelab/shading/lighting.h"
+
+namespace shadelab {
+
+// A point pinned to an object's surface, so that it stays put while the view orbits or the level changes:
+// a unit direction from the object's centre in object space. The exact point is that direction on the
+// unit sphere; the mesh point is where the ray from the centre along it meets the mesh.
+struct ProbePoint {
+    std::size_t object = 0;
+    glm::dvec3 directionObject{0, 0, 1};
+};
+
+// The surface point that pixel position (x, y) of the scene's image sees (pixel (i, j)'s centre is
+// (i + 0.5, j + 0.5), top row first): the nearest exact object on the ray, as the analytic reference casts
+// it. nullopt on the background.
+std::optional<ProbePoint> pickSurfacePoint(const Scene& scene, double x, double y);
+
+// One way of shading the probed point, all vectors in view space.
+struct ProbeSample {
+    // Where the lighting is evaluated and with which normal: flat, the triangle's centroid and face normal;
+    // Gouraud, Phong and toon, the mesh point with the interpolated vertex normal; exact, the sphere's point
+    // and its exact normal.
+    SurfacePoint pointView;
+    LightTerms terms; // unclamped; Gouraud: the three vertices' terms interpolated, as the rasterizer does
+    glm::dvec3 color; // what reaches the pixel: clamped (Gouraud: the clamped vertex colours interpolated)
+    // For the first light that is not ambient: l, and r (Phong lighting) or h (Blinn-Phong); 0 without one.
+    glm::dvec3 toLight{0.0}, specularVector{0.0};
+};
+
+struct ProbeReport {
+    ProbePoint point;
+    int level = 0;               // the drawn level of the object's mesh
+    std::size_t triangle = 0;    // the mesh triangle under the point
+    glm::dvec3 barycentric{0.0}; // of the mesh point in that triangle
+    int light = -1;              // the light whose l and r/h are given, −1 for none
+    ProbeSample mode, exact;
+};
+
+// `mesh` is the object's mesh at its drawn level (subdivisionLevel) with the scene's vertex normals.
+// Throws InputError when `point.object` is not an object of the scene.
+ProbeReport probeSurface(const Scene& scene, const ProbePoint& point, const SphereMesh& mesh);
+
+} // namespace shadelab

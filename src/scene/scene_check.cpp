@@ -1,0 +1,399 @@
+// The ranges of DESIGN §4 and the pieces of every scene message. One set of check* functions serves both
+// parseScene (per entity, as it is read) and validateScene (after flags or code change a scene), so the two
+// can never disagree about what a valid scene is; the checks a flag shares are public (scene_values.h).
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+#include "scene/scene_internal.h"
+#include "shadelab/geometry/sphere.h"
+#include "shadelab/geometry/subdivision.h"
+#include "shadelab/io/text.h"
+#include "shadelab/scene/camera.h"
+
+namespace shadelab::detail {
+
+// ---- message pieces ----
+
+// What std::to_chars(value) gives: the fewest significant digits that read back as `value`, in fixed or
+// scientific notation, whichever is shorter (fixed on a tie). Written out because the browser build's
+// libc++ has no floating-point to_chars, and the page must word a message exactly as the command line does.
+std::string formatNumber(double value) {
+    if (!std::isfinite(value)) return std::isnan(value) ? "nan" : value > 0 ? "inf" : "-inf";
+    std::array<char, 40> scientific{};
+    int digits = 1;
+    for (; digits < 17; ++digits) {
+        std::snprintf(scientific.data(), scientific.size(), "%.*e", digits - 1, value);
+        if (std::strtod(scientific.data(), nullptr) == value) break;
+    }
+    std::snprintf(scientific.data(), scientific.size(), "%.*e", digits - 1, value);
+    const int exponent = std::atoi(std::strchr(scientific.data(), 'e') + 1);
+    std::array<char, 400> fixed{}; // up to 309 integer digits
+    std::snprintf(fixed.data(), fixed.size(), "%.*f", std::max(0, digits - 1 - exponent), value);
+    const std::string a(fixed.data()), b(scientific.data());
+    return a.size() <= b.size() ? a : b;
+}
+
+std::string formatVec(const glm::dvec3& v) {
+    return "[" + formatNumber(v.x) + ", " + formatNumber(v.y) + ", " + formatNumber(v.z) + "]";
+}
+
+// ---- JSON paths: objects[0].material.diffuse[2] ----
+
+namespace {
+
+bool isPlainKey(std::string_view key) {
+    if (key.empty() || key.size() > kMaxQuotedChars) return false; // a long key is quoted, and so truncated
+    for (char c : key)
+        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-')) return false;
+    return true;
+}
+
+} // namespace
+
+std::string keyPath(std::string_view parent, std::string_view key) {
+    if (!isPlainKey(key)) return std::string(parent) + "[" + quotedValue(key) + "]";
+    return parent.empty() ? std::string(key) : std::string(parent) + "." + std::string(key);
+}
+
+std::string indexPath(std::string_view parent, std::size_t index) {
+    return std::string(parent) + "[" + std::to_string(index) + "]";
+}
+
+[[noreturn]] void fail(std::string_view path, std::string_view message) {
+    throw InputError(path.empty() ? std::string(message) : std::string(path) + ": " + std::string(message));
+}
+
+// Errors from camera.h and sphere.h may already name the field; add the path only where they don't.
+[[noreturn]] void failWithin(std::string_view path, const InputError& error) {
+    std::string_view message = error.what();
+    if (message.starts_with(path)) throw error;
+    fail(path, message);
+}
+
+[[noreturn]] void failOutOfRange(IntRange range, std::string_view shown, std::string_view path) {
+    fail(path, "must be between " + std::to_string(range.lo) + " and " + std::to_string(range.hi) + ", got " +
+                   std::string(shown));
+}
+
+// ---- range checks ----
+
+void checkFinite(double value, std::string_view path) {
+    if (!std::isfinite(value)) fail(path, "must be finite, got " + formatNumber(value));
+}
+
+void checkIntRange(int value, IntRange range, std::string_view path) {
+    if (value < range.lo || value > range.hi) failOutOfRange(range, std::to_string(value), path);
+}
+
+namespace {
+
+void checkGreater(double value, double min, std::string_view path) {
+    checkFinite(value, path);
+    if (!(value > min)) fail(path, "must be > " + formatNumber(min) + ", got " + formatNumber(value));
+}
+
+void checkAtLeast(double value, double min, std::string_view path) {
+    checkFinite(value, path);
+    if (!(value >= min)) fail(path, "must be >= " + formatNumber(min) + ", got " + formatNumber(value));
+}
+
+void checkFiniteVec(const glm::dvec3& v, std::string_view path) {
+    for (int i = 0; i < 3; ++i) checkFinite(v[i], indexPath(path, i));
+}
+
+void checkColor(const glm::dvec3& color, std::string_view path) {
+    for (int i = 0; i < 3; ++i) checkAtLeast(color[i], 0, indexPath(path, i));
+}
+
+void checkNonZeroVec(const glm::dvec3& v, std::string_view path) {
+    checkFiniteVec(v, path);
+    if (v == glm::dvec3(0)) fail(path, "must be non-zero, got " + formatVec(v));
+}
+
+void checkDistinct(double value, double other, std::string_view otherName, std::string_view path) {
+    checkFinite(value, path);
+    if (value == other)
+        fail(path, "must differ from " + std::string(otherName) + " (" + formatNumber(other) + "), got " +
+                       formatNumber(value));
+}
+
+void checkMaterial(const Material& m, const std::string& path) {
+    checkColor(m.ambient, keyPath(path, "ambient"));
+    checkColor(m.diffuse, keyPath(path, "diffuse"));
+    checkColor(m.specular, keyPath(path, "specular"));
+    // pow(0, 0) is undefined in GLSL (DESIGN §3).
+    checkAtLeast(m.shininess, 1, keyPath(path, "shininess"));
+}
+
+// The work a scene asks for, bounded before any of it is done (README "Limits"): the triangles drawn per
+// frame, and the ray-object tests of the analytic reference (pixels × objects), which render and reference
+// share as one notion of a valid scene.
+void checkWork(const Scene& scene) {
+    // A split view draws every object once per side, each side at its own level where it sets one.
+    const bool split = scene.view.kind == ViewKind::Split;
+    double triangles = 0;
+    for (const SceneObject& object : scene.objects) {
+        const int level = subdivisionLevel(scene, object);
+        if (!split) {
+            triangles += double(sphereTriangleCount(level));
+            continue;
+        }
+        for (const SplitSide* side : {&scene.view.left, &scene.view.right})
+            triangles += double(sphereTriangleCount(side->level.value_or(level)));
+    }
+    if (triangles > double(kMaxTrianglesPerFrame))
+        fail(split ? "view" : "objects",
+             "the scene draws " + formatNumber(triangles) + " triangles per frame (each object 4^(level+1)" +
+                 (split ? ", once per side of the split" : "") + "); at most " +
+                 std::to_string(kMaxTrianglesPerFrame) + " are allowed: lower the subdivisions" +
+                 (split ? " (the sides' @levels included)" : "") + " or draw fewer objects");
+    const double rayTests = double(scene.width) * scene.height * double(scene.objects.size());
+    if (rayTests > double(kMaxReferenceRayTests))
+        fail("objects", "the analytic reference would test " + formatNumber(rayTests) +
+                            " rays against objects (width x height x objects); at most " +
+                            std::to_string(kMaxReferenceRayTests) +
+                            " are allowed: use a smaller image or fewer objects");
+}
+
+// Standard depth (DESIGN's [-1, 1] mapping, near → +1) puts a point at distance d at NDC z ≈ 1 − 2·near/d
+// in 32-bit float, whose spacing just below 1 is 6e-8: past d ≈ 3e7·near whole objects round onto the near
+// plane and are clipped (measured: the default sphere at d = 3 loses a third of its pixels with near 1e-7
+// and vanishes with near 1e-10, while the reversed modes draw it whole). Refuse before that, with a margin.
+void checkStandardDepthRange(const Scene& scene) {
+    if (scene.depth != DepthMode::Standard || scene.projection.type != ProjectionType::Perspective) return;
+    const double near = scene.projection.near;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const SceneObject& o = scene.objects[i];
+        const double extent =
+            std::abs(o.radius) * std::max({std::abs(o.scale.x), std::abs(o.scale.y), std::abs(o.scale.z)});
+        const double farthest = std::min(glm::length(o.center - scene.eye) + extent, scene.projection.far);
+        if (farthest / near > kMaxStandardDepthRatio)
+            fail("projection.near",
+                 "with \"depth\": \"standard\", " + indexPath("objects", i) + " reaches " +
+                     formatNumber(farthest / near) +
+                     " x near from the eye; 32-bit depth rounds points beyond " +
+                     formatNumber(kMaxStandardDepthRatio) +
+                     " x near onto the near plane and clips them: raise near to at least " +
+                     formatNumber(farthest / kMaxStandardDepthRatio) + " or use \"depth\": \"reversed\"");
+    }
+}
+
+void checkAttenuation(const glm::dvec3& a, const std::string& path) {
+    for (int i = 0; i < 3; ++i) checkAtLeast(a[i], 0, indexPath(path, i));
+    if (!(a.x + a.y + a.z > 0)) fail(path, "components must have a positive sum, got " + formatVec(a));
+}
+
+} // namespace
+
+// The level's one check is the mesh builder's (sphere.h): above the maximum it names the memory the level
+// would take, which is the useful part.
+void checkSubdivisions(int level, std::string_view path) {
+    if (level != kAutoSubdivisions) checkSubdivisionLevel(level, path);
+}
+
+void checkViewAt(double at) {
+    checkFinite(at, "view_at");
+    if (!(at >= 0 && at <= 1))
+        fail("view_at", "must be between 0 and 1 (a fraction of the picture), got " + formatNumber(at));
+}
+
+void checkObserver(const Observer& observer) {
+    checkFinite(observer.azimuthDeg, "view_observer[0]");
+    checkFinite(observer.elevationDeg, "view_observer[1]");
+    if (!(std::abs(observer.elevationDeg) <= kMaxObserverElevationDeg))
+        fail("view_observer[1]", "the observer's elevation must be between -85 and 85 degrees, got " +
+                                     formatNumber(observer.elevationDeg));
+    if (!(observer.zoom >= kMinObserverZoom && observer.zoom <= kMaxObserverZoom))
+        fail("view_observer[2]",
+             "the observer's zoom must be between 0.05 and 20 (1: everything framed), got " +
+                 formatNumber(observer.zoom));
+}
+
+void checkSceneSize(const Scene& scene) {
+    shadelab::checkImageSize(scene.width, "image.width");
+    shadelab::checkImageSize(scene.height, "image.height");
+}
+
+void checkImage(const Scene& scene) {
+    checkSceneSize(scene);
+    checkColor(scene.background, "image.background");
+}
+
+void checkCamera(const Scene& scene) {
+    checkFiniteVec(scene.eye, "camera.eye");
+    checkFiniteVec(scene.target, "camera.target");
+    checkFiniteVec(scene.up, "camera.up");
+    try {
+        cameraFrame(scene.eye, scene.target, scene.up);
+    } catch (const InputError& e) {
+        failWithin("camera", e);
+    }
+}
+
+void checkProjection(const Projection& p) {
+    if (p.type == ProjectionType::Perspective) {
+        checkGreater(p.fovyDeg, 0, "projection.fovy_deg");
+        if (!(p.fovyDeg < 180)) fail("projection.fovy_deg", "must be < 180, got " + formatNumber(p.fovyDeg));
+        // The projection holds cot(fovy/2) in 32-bit float and scales depth by it: narrower views lose the
+        // picture (4.9e-324 made the window zero-wide). 1e-6 degrees keeps it near 1e8.
+        if (p.fovyDeg < kMinFovyDeg)
+            fail("projection.fovy_deg",
+                 "must be at least " + formatNumber(kMinFovyDeg) +
+                     " degrees (a narrower view does not fit 32-bit float matrices), got " +
+                     formatNumber(p.fovyDeg));
+    } else {
+        checkFinite(p.left, "projection.left");
+        checkDistinct(p.right, p.left, "left", "projection.right");
+        checkFinite(p.bottom, "projection.bottom");
+        checkDistinct(p.top, p.bottom, "bottom", "projection.top");
+    }
+    checkGreater(p.near, 0, "projection.near");
+    checkFinite(p.far, "projection.far");
+    if (!(p.far > p.near))
+        fail("projection.far", "must be > near (" + formatNumber(p.near) + "), got " + formatNumber(p.far));
+    // The projection matrix reaches the GPU as 32-bit float (normal range 1.2e-38..3.4e38, and its entries
+    // are products and quotients of these values): near 1e-300 or a window of ±1e-300 became 0 there and
+    // drew nothing. Refuse what float cannot carry instead of drawing a wrong picture; a scene that needs
+    // more can change its units.
+    auto inFloatRange = [](double magnitude, std::string_view path) {
+        if (magnitude != 0 && (magnitude < kMinProjectionExtent || magnitude > kMaxProjectionExtent))
+            fail(path, "must be 0 or between " + formatNumber(kMinProjectionExtent) + " and " +
+                           formatNumber(kMaxProjectionExtent) +
+                           " in magnitude (the projection is 32-bit float on the GPU), got " +
+                           formatNumber(magnitude) + "; change the scene's units");
+    };
+    inFloatRange(p.near, "projection.near");
+    inFloatRange(p.far, "projection.far");
+    if (p.type == ProjectionType::Orthographic) {
+        inFloatRange(std::abs(p.left), "projection.left");
+        inFloatRange(std::abs(p.right), "projection.right");
+        inFloatRange(std::abs(p.bottom), "projection.bottom");
+        inFloatRange(std::abs(p.top), "projection.top");
+        inFloatRange(std::abs(p.right - p.left), "projection.right");
+        inFloatRange(std::abs(p.top - p.bottom), "projection.top");
+    }
+    inFloatRange(p.far - p.near, "projection.far");
+}
+
+void checkObject(const SceneObject& object, const std::string& path) {
+    checkFiniteVec(object.center, keyPath(path, "center"));
+    checkGreater(object.radius, 0, keyPath(path, "radius"));
+    std::string scalePath = keyPath(path, "scale");
+    checkFiniteVec(object.scale, scalePath);
+    // Negative components mirror (allowed); zero flattens the ellipsoid and its normal matrix.
+    for (int i = 0; i < 3; ++i)
+        if (object.scale[i] == 0) fail(indexPath(scalePath, i), "must be non-zero, got 0");
+    checkSubdivisions(object.subdivisions, keyPath(path, "subdivisions"));
+    checkMaterial(object.material, keyPath(path, "material"));
+}
+
+void checkObjectCount(std::size_t count) {
+    if (count > kMaxObjects)
+        fail("objects", "at most " + std::to_string(kMaxObjects) + " objects are supported, got " +
+                            std::to_string(count) + "; draw fewer objects");
+}
+
+void checkLightCount(std::size_t count) {
+    if (count > static_cast<std::size_t>(kMaxLights))
+        fail("lights",
+             "at most " + std::to_string(kMaxLights) + " lights are supported, got " + std::to_string(count));
+}
+
+bool hasPosition(LightType type) {
+    return type == LightType::Point || type == LightType::Spot;
+}
+bool hasDirection(LightType type) {
+    return type == LightType::Directional || type == LightType::Spot;
+}
+
+// Only the fields the light's type uses are checked: the others are ignored by the lighting code.
+void checkLight(const Light& light, const std::string& path) {
+    checkColor(light.ambient, keyPath(path, "ambient"));
+    checkColor(light.diffuse, keyPath(path, "diffuse"));
+    checkColor(light.specular, keyPath(path, "specular"));
+    if (hasPosition(light.type)) {
+        checkFiniteVec(light.position, keyPath(path, "position"));
+        checkAttenuation(light.attenuation, keyPath(path, "attenuation"));
+    }
+    if (hasDirection(light.type)) checkNonZeroVec(light.direction, keyPath(path, "direction"));
+    if (light.type == LightType::Spot) {
+        std::string cutoffPath = keyPath(path, "cutoff_deg");
+        checkAtLeast(light.cutoffDeg, 0, cutoffPath);
+        if (!(light.cutoffDeg <= 90)) fail(cutoffPath, "must be <= 90, got " + formatNumber(light.cutoffDeg));
+        checkAtLeast(light.exponent, 0, keyPath(path, "exponent"));
+    }
+}
+
+} // namespace shadelab::detail
+
+namespace shadelab {
+
+using namespace detail;
+
+std::string toString(IntRange range) {
+    return std::to_string(range.lo) + ".." + std::to_string(range.hi);
+}
+
+void checkImageSize(int pixels, std::string_view field) {
+    checkIntRange(pixels, kImageSizeRange, field);
+}
+
+void checkTolerancePx(double pixels, std::string_view field) {
+    checkGreater(pixels, 0, field);
+}
+
+View parseViewOrThrow(std::string_view text, std::string_view field) {
+    ViewParse parsed = parseView(text);
+    if (!parsed.view) fail(field, quotedValue(text) + ": " + parsed.error);
+    return *parsed.view;
+}
+
+void failNotFinite(std::string_view field, std::string_view written) {
+    const std::string shown = written.size() > kMaxQuotedChars
+                                  ? std::string(written.substr(0, kMaxQuotedChars)) + "..."
+                                  : std::string(written);
+    fail(field, "must be finite, got " + shown);
+}
+
+void validateScene(const Scene& scene) {
+    validateSceneValues(scene);
+    checkSceneLimits(scene);
+}
+
+void validateSceneValues(const Scene& scene) {
+    checkImage(scene);
+    checkIntRange(scene.toonBands, kToonBandRange, "toon_bands");
+    checkTolerancePx(scene.tolerancePx, "tolerance_px");
+    checkCamera(scene);
+    checkProjection(scene.projection);
+    for (std::size_t i = 0; i < scene.objects.size(); ++i)
+        checkObject(scene.objects[i], indexPath("objects", i));
+    checkLightCount(scene.lights.size());
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) checkLight(scene.lights[i], indexPath("lights", i));
+    if (scene.view.at) checkViewAt(*scene.view.at);
+    checkObserver(scene.view.observer);
+    // The NDC view transforms the mesh; exact shading has none (also as a split's side).
+    auto exactNdc = [&](const SplitSide& side) {
+        return side.view == ViewKind::Ndc && side.shading.value_or(scene.shading) == ShadingMode::Exact;
+    };
+    const View& view = scene.view;
+    if ((view.kind == ViewKind::Ndc && scene.shading == ShadingMode::Exact) ||
+        (view.kind == ViewKind::Split && (exactNdc(view.left) || exactNdc(view.right))))
+        fail("view",
+             "ndc draws the mesh through M_proj·M_cam, and exact shading ray-casts the sphere without "
+             "one; choose flat, gouraud, phong or toon shading for the NDC view");
+    (void)sceneView(scene); // the derived matrices must be finite too
+    checkObjectCount(scene.objects.size());
+}
+
+void checkSceneLimits(const Scene& scene) {
+    checkWork(scene);
+    checkStandardDepthRange(scene);
+}
+
+} // namespace shadelab

@@ -1,0 +1,226 @@
+// Lesson files (shadelab/scene/lesson.h): steps, their scenes and changes, and every refusal naming its JSON
+// path.
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "shadelab/errors.h"
+#include "shadelab/scene/lesson.h"
+#include "shadelab/scene/scene.h"
+#include "shadelab/scene/scene_file.h"
+
+namespace shadelab {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Scene files by the path a step names; anything else cannot be read.
+SceneTextReader filesOf(std::map<std::string, std::string> files) {
+    return [files = std::move(files)](const std::string& path) {
+        auto it = files.find(path);
+        if (it == files.end()) throw InputError("cannot read scene file: No such file or directory");
+        return it->second;
+    };
+}
+
+const SceneTextReader kNoFiles = filesOf({});
+
+// The message parseLesson gives, or "" when it accepts the text.
+std::string refusal(const std::string& text, const SceneTextReader& read = kNoFiles) {
+    try {
+        parseLesson(text, "lesson.json", read);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(Lesson, StepsKeepThePreviousSceneAndApplyTheirChanges) {
+    const Lesson lesson = parseLesson(R"({"title": "Shading", "steps": [
+        {"title": "Flat", "caption": "One normal\nper face.", "scene": {"shading": "flat",
+         "camera": {"eye": [0, 0, 5], "target": [0, 0, 0], "up": [0, 1, 0]}}},
+        {"title": "Gouraud", "shading": "gouraud", "camera": {"eye": [0, 0, 7]}},
+        {"title": "Level 2", "subdivisions": 2},
+        {"title": "New scene", "scene": {"lighting": "blinn-phong"}}]})",
+                                      "lesson.json", kNoFiles);
+    ASSERT_EQ(lesson.steps.size(), 4u);
+    EXPECT_EQ(lesson.title, "Shading");
+    EXPECT_EQ(lesson.steps[0].caption, "One normal\nper face.");
+    EXPECT_EQ(lesson.steps[0].scene.shading, ShadingMode::Flat);
+    // The change is merged: the eye moves, the target and up stay what step 1 wrote.
+    EXPECT_EQ(lesson.steps[1].scene.shading, ShadingMode::Gouraud);
+    EXPECT_EQ(lesson.steps[1].scene.eye, glm::dvec3(0, 0, 7));
+    EXPECT_EQ(lesson.steps[1].scene.up, glm::dvec3(0, 1, 0));
+    EXPECT_EQ(lesson.steps[1].caption, "");
+    // A step without a scene keeps the previous step's, changes included.
+    EXPECT_EQ(lesson.steps[2].scene.shading, ShadingMode::Gouraud);
+    EXPECT_EQ(lesson.steps[2].scene.objects.at(0).subdivisions, 2);
+    // A new scene starts again from the defaults.
+    const Scene defaults;
+    EXPECT_EQ(lesson.steps[3].scene.shading, defaults.shading);
+    EXPECT_EQ(lesson.steps[3].scene.lighting, LightingModel::BlinnPhong);
+    EXPECT_EQ(lesson.steps[3].scene.eye, defaults.eye);
+}
+
+TEST(Lesson, AFirstStepWithoutASceneDrawsTheDefaults) {
+    const Lesson lesson = parseLesson(R"({"title": "T", "steps": [{"title": "Only"}]})", "l", kNoFiles);
+    ASSERT_EQ(lesson.steps.size(), 1u);
+    EXPECT_EQ(lesson.steps[0].scene, Scene{});
+}
+
+TEST(Lesson, SubdivisionsSetEveryObjectsLevelOrAuto) {
+    const Lesson lesson = parseLesson(R"({"title": "T", "steps": [
+        {"title": "Two", "scene": {"objects": [{"center": [-1, 0, 0]}, {"center": [1, 0, 0]}]},
+         "subdivisions": 5},
+        {"title": "Auto", "subdivisions": "auto"}]})",
+                                      "l", kNoFiles);
+    for (const SceneObject& object : lesson.steps[0].scene.objects) EXPECT_EQ(object.subdivisions, 5);
+    for (const SceneObject& object : lesson.steps[1].scene.objects)
+        EXPECT_EQ(object.subdivisions, kAutoSubdivisions);
+    EXPECT_EQ(lesson.steps[1].scene.objects.at(1).center, glm::dvec3(1, 0, 0));
+}
+
+TEST(Lesson, ASceneFileIsReadByThePathAsWritten) {
+    const std::string text = R"({"shading": "toon", "toon_bands": 3})";
+    const Lesson lesson = parseLesson(
+        R"({"title": "T", "steps": [{"title": "A", "scene": "../scenes/x.json", "term": "diffuse"}]})", "l",
+        filesOf({{"../scenes/x.json", text}}));
+    Scene expected = parseScene(text);
+    expected.term = LightingTerm::Diffuse;
+    EXPECT_EQ(lesson.steps[0].scene, expected);
+}
+
+TEST(Lesson, AMissingSceneFileNamesTheLessonTheStepAndTheFile) {
+    const std::string message =
+        refusal(R"({"title": "T", "steps": [{"title": "A"}, {"title": "B", "scene": "gone.json"}]})");
+    EXPECT_EQ(message, "lesson.json: steps[1].scene (\"gone.json\"): cannot read scene file: No such file or "
+                       "directory");
+}
+
+TEST(Lesson, ABadSceneFileIsRefusedWithItsOwnPath) {
+    const std::string message =
+        refusal(R"({"title": "T", "steps": [{"title": "A", "scene": "x.json"}]})",
+                filesOf({{"x.json", R"({"lights": [{"type": "point", "position": 1}]})"}}));
+    EXPECT_EQ(
+        message.rfind("lesson.json: steps[0].scene (\"x.json\"): lights[0].position: must be an array of 3 "
+                      "numbers",
+                      0),
+        0u)
+        << message;
+}
+
+// The same value, refused by a scene and by a lesson's change, in the same words after the step's path.
+TEST(Lesson, AChangeIsRefusedInTheScenesOwnWords) {
+    for (const std::string change :
+         {R"("shading": "glossy")", R"("lighting": 3)", R"("view": "split:flat")", R"("toon_bands": 99)",
+          R"("camera": {"eye": [0, 0, 0]})", R"("subdivisions": 11)", R"("overlay": "edges")"}) {
+        std::string sceneMessage;
+        try {
+            const std::string key = change.substr(1, change.find('"', 1) - 1);
+            std::string sceneText = "{" + change + "}";
+            if (key == "subdivisions") sceneText = R"({"objects": [{"subdivisions": 11}]})";
+            parseScene(sceneText, "scene.json");
+            ADD_FAILURE() << "the scene accepted " << change;
+            continue;
+        } catch (const InputError& e) {
+            sceneMessage = e.what();
+        }
+        const std::string message =
+            refusal(R"({"title": "T", "steps": [{"title": "A"}, {"title": "B", )" + change + "}]}");
+        const std::string sceneReason = sceneMessage.substr(std::string("scene.json: ").size());
+        EXPECT_EQ(message, "lesson.json: steps[1]: " + sceneReason) << change;
+    }
+}
+
+TEST(Lesson, EveryRefusalNamesItsJsonPath) {
+    const std::map<std::string, std::string> cases = {
+        {R"([])", "lesson.json: the top level: must be an object, got array of 0 elements"},
+        {R"({"steps": [{"title": "A"}]})", "lesson.json: title: missing; a lesson has a title"},
+        {R"({"title": "T"})", "lesson.json: steps: must be an array of at least one step, got nothing"},
+        {R"({"title": "T", "steps": []})",
+         "lesson.json: steps: must be an array of at least one step, got array of 0 elements"},
+        {R"({"title": "T", "steps": [{"title": "A"}], "step": 1})",
+         "lesson.json: step: unknown key; expected one of title, steps"},
+        {R"({"title": "T", "steps": [{"caption": "no title"}]})",
+         "lesson.json: steps[0].title: missing; every step has a title"},
+        {R"({"title": "T", "steps": [{"title": ""}]})", "lesson.json: steps[0].title: must not be empty"},
+        {R"({"title": "T", "steps": [{"title": 7}]})",
+         "lesson.json: steps[0].title: must be a string, got number 7"},
+        {R"({"title": "T", "steps": [{"title": "A", "shadng": "flat"}]})",
+         "lesson.json: steps[0].shadng: unknown key; expected one of title, caption, scene, image, camera, "
+         "projection, perspective_matrix, shading, lighting, term, toon_bands, tolerance_px, depth, "
+         "vertex_normals, normal_matrix, overlay, view, view_at, view_observer, objects, lights, "
+         "subdivisions"},
+        {R"({"title": "T", "steps": [{"title": "A", "shading": null}]})",
+         "lesson.json: steps[0].shading: must be a value, got null"},
+        {R"({"title": "T", "steps": [{"title": "A", "scene": 3}]})",
+         "lesson.json: steps[0].scene: must be a scene (an object) or the path of a scene file (a string), "
+         "got "
+         "number 3"},
+        {R"({"title": "T", "steps": [{"title": "A", "scene": "/etc/passwd"}]})",
+         "lesson.json: steps[0].scene: must be a path relative to the lesson's folder, got \"/etc/passwd\""},
+        {R"({"title": "T", "steps": [{"title": "A", "scene": {"shading": "glossy"}}]})",
+         "lesson.json: steps[0].scene: shading: unknown value \"glossy\"; expected one of flat, gouraud, "
+         "phong, toon, exact"},
+        {R"({"title": "T", "steps": [{"title": "A\u0007"}]})",
+         "lesson.json: steps[0].title: must be printable text, got \"A\\u0007\""},
+        {R"({"title": "T", "steps": [{"title": "A", "caption": "1\n2\n3\n4\n5\n6\n7\n8\n9"}]})",
+         "lesson.json: steps[0].caption: must be at most 8 lines, got 9"},
+        {R"({"title": "T", "steps": [{"title": "A", "subdivisions": [1]}]})",
+         "lesson.json: steps[0].subdivisions: must be a level (a number) or \"auto\", got array of 1 "
+         "element"},
+    };
+    for (const auto& [text, expected] : cases) EXPECT_EQ(refusal(text), expected) << text;
+}
+
+TEST(Lesson, SizesAreBounded) {
+    std::string steps;
+    for (std::size_t i = 0; i <= kMaxLessonSteps; ++i)
+        steps += std::string(i ? "," : "") + R"({"title": "S"})";
+    EXPECT_EQ(refusal(R"({"title": "T", "steps": [)" + steps + "]}"),
+              "lesson.json: steps: must hold at most 500 steps, got 501");
+    const std::string longTitle(kMaxStepTitleBytes + 1, 'x');
+    EXPECT_EQ(refusal(R"({"title": "T", "steps": [{"title": ")" + longTitle + R"("}]})"),
+              "lesson.json: steps[0].title: must be at most 120 bytes, got 121");
+}
+
+TEST(Lesson, TellsALessonFromAScene) {
+    EXPECT_TRUE(isLessonText(R"({"title": "T", "steps": []})"));
+    EXPECT_FALSE(isLessonText(R"({"shading": "flat"})"));
+    EXPECT_FALSE(isLessonText("not json"));
+    EXPECT_FALSE(isLessonText(R"(["steps"])"));
+}
+
+TEST(Lesson, SlideNamesSortInStepOrderAndAreSafe) {
+    EXPECT_EQ(slideFileName(2, 14, "The view volume"), "03-the-view-volume.png");
+    EXPECT_EQ(slideFileName(0, 100, "Phong vs. Blinn-Phong (α = 8)"), "001-phong-vs-blinn-phong-8.png");
+    EXPECT_EQ(slideFileName(9, 9, "../../etc/passwd"), "10-etc-passwd.png");
+    EXPECT_EQ(slideFileName(0, 1, "ααα"), "01-step.png");
+    EXPECT_EQ(slideFileName(0, 1, std::string(300, 'a')).size(), std::string("01-").size() + 48 + 4);
+}
+
+TEST(Lesson, LoadLessonReadsItsScenesBesideIt) {
+    const fs::path folder = fs::temp_directory_path() / ("shadelab-lesson-" + std::to_string(::getpid()));
+    fs::create_directories(folder / "scenes");
+    std::ofstream(folder / "scenes" / "a.json") << R"({"shading": "flat"})";
+    std::ofstream(folder / "lesson.json")
+        << R"({"title": "T", "steps": [{"title": "A", "scene": "scenes/a.json"}]})";
+    const Lesson lesson = loadLesson(folder / "lesson.json");
+    EXPECT_EQ(lesson.steps.at(0).scene.shading, ShadingMode::Flat);
+    std::ofstream(folder / "bad.json") << R"({"title": "T", "steps": [{"title": "A", "scene": "scenes"}]})";
+    try {
+        loadLesson(folder / "bad.json");
+        ADD_FAILURE() << "a folder was read as a scene";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("bad.json: steps[0].scene (\"scenes\"): "), std::string::npos)
+            << e.what();
+        EXPECT_NE(std::string(e.what()).find("it is a directory"), std::string::npos) << e.what();
+    }
+    fs::remove_all(folder);
+}
+
+} // namespace
+} // namespace shadelab
