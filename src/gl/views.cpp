@@ -21,31 +21,19 @@
 #include "shadelab/scene/outside_view.h"
 #include "shadelab/shading/reference.h"
 
+#include "gl/views_internal.h"
+
 namespace shadelab::gl {
 namespace {
+
+using detail::labelImage;
+using detail::textScale;
 
 constexpr glm::u8vec4 kLabelText{240, 240, 240, 255};
 constexpr glm::u8vec4 kLabelBox{0, 0, 0, 170};
 constexpr glm::u8vec4 kModeCurve{255, 150, 40, 255};   // orange: the current mode
 constexpr glm::u8vec4 kExactCurve{255, 255, 255, 255}; // white: exact
 constexpr glm::u8vec4 kEdgeTick{80, 220, 255, 255};    // cyan: a mesh edge crosses the row
-
-// The labels' font scale: lines of 11 px (textLineHeight(1)), twice that from a 400-pixel picture on.
-int textScale(int width, int height) {
-    return std::min(width, height) >= 400 ? 2 : 1;
-}
-
-// `lines` of text on a translucent box, as an image to draw over the picture.
-Image labelImage(const std::vector<std::string>& lines, int scale) {
-    int width = 0;
-    for (const std::string& line : lines) width = std::max(width, textWidth(line, scale));
-    const int lineHeight = textLineHeight(scale), pad = 3 * scale;
-    Image image(width + 2 * pad, int(lines.size()) * lineHeight + 2 * pad);
-    fillRect(image, 0, 0, image.width, image.height, kLabelBox);
-    for (std::size_t i = 0; i < lines.size(); ++i)
-        drawText(image, pad, pad + int(i) * lineHeight, lines[i], scale, kLabelText);
-    return image;
-}
 
 // 1, 2 or 5 times a power of ten, at least `value`: the heatmap's top (at least 0.5/255).
 double niceCeiling(double value) {
@@ -80,35 +68,26 @@ void drawLine(Image& image, int x0, int y0, int x1, int y1, glm::u8vec4 color) {
 
 } // namespace
 
-struct Views::Targets {
-    RenderTarget mode, exact, edges, error; // RGBA32F: unrounded colours, sampled and read back
-    std::vector<RenderTarget> reduce;
-};
+namespace detail {
 
-namespace {
-// The error view's passes (shaders/error, reduce and heatmap.frag.glsl), their samplers' units set once.
-struct ErrorPass : ScreenPass {
-    ErrorPass() : ScreenPass("error.frag.glsl") {
-        setSampler("uMode", 0);
-        setSampler("uExact", 1);
-    }
-};
-struct ReducePass : ScreenPass {
-    ReducePass() : ScreenPass("reduce.frag.glsl") { setSampler("uInput", 0); }
-};
-struct HeatmapPass : ScreenPass {
-    HeatmapPass() : ScreenPass("heatmap.frag.glsl") { setSampler("uError", 0); }
-    int origin = location("uOrigin"), scale = location("uScale"), background = location("uBackground"),
-        legend = location("uLegend");
-};
-} // namespace
+// Lines of 11 px (textLineHeight(1)), twice that from a 400-pixel picture on.
+int textScale(int width, int height) {
+    return std::min(width, height) >= 400 ? 2 : 1;
+}
 
-struct Views::Programs {
-    ErrorPass error;
-    ReducePass reduce;
-    HeatmapPass heatmap;
-    ImagePass images;
-};
+// `lines` of text on a translucent box, as an image to draw over the picture.
+Image labelImage(const std::vector<std::string>& lines, int scale) {
+    int width = 0;
+    for (const std::string& line : lines) width = std::max(width, textWidth(line, scale));
+    const int lineHeight = textLineHeight(scale), pad = 3 * scale;
+    Image image(width + 2 * pad, int(lines.size()) * lineHeight + 2 * pad);
+    fillRect(image, 0, 0, image.width, image.height, kLabelBox);
+    for (std::size_t i = 0; i < lines.size(); ++i)
+        drawText(image, pad, pad + int(i) * lineHeight, lines[i], scale, kLabelText);
+    return image;
+}
+
+} // namespace detail
 
 Views::Views(Renderer& renderer)
     : renderer_(renderer), targets_(std::make_unique<Targets>()), programs_(std::make_unique<Programs>()) {}
@@ -389,71 +368,6 @@ void Views::drawProfile(const Scene& scene, int width, int height, int x, unsign
         fillRect(marker, i, 0, 1, 1, (i / 4) % 2 ? glm::u8vec4(255, 230, 0, 255) : glm::u8vec4(0, 0, 0, 0));
     programs_->images.draw(marker, 0, row, x, width, height);
     glEnable(GL_DEPTH_TEST);
-}
-
-void Views::drawOutside(const Scene& scene, int width, int height, int x) {
-    figures_ = ViewFigures{};
-    const Scene sized = atSize(scene, width, height);
-    const Scene observer = observerScene(sized);
-    renderer_.renderScene(observer, width, height, x);
-    drawObserved(outsideDrawing(sized), observer,
-                 leavesOutTheMinusOne(scene) ? "OUTSIDE VIEW, UNNEGATED MATRIX" : "OUTSIDE VIEW", width,
-                 height, x);
-}
-
-void Views::drawObserved(const OutsideDrawing& drawing, const Scene& observer, const std::string& title,
-                         int width, int height, int x) {
-    renderer_.drawWorld(observer, {}, drawing.faces, kFaceAlpha, width, height, x);
-    // The labels, then the lines over them, so that no label hides a corner of the view volume.
-    drawLabels(drawing.labels, observer, width, height, x);
-    const int scale = textScale(width, height);
-    programs_->images.draw(labelImage({title, "DRAG: OBSERVER  WHEEL: ZOOM"}, scale), scale * 4, scale * 4, x,
-                           width, height);
-    renderer_.drawWorld(observer, drawing.lines, {}, kFaceAlpha, width, height, x);
-    glEnable(GL_DEPTH_TEST);
-}
-
-void Views::drawLabels(const std::vector<OutsideLabel>& labels, const Scene& observer, int width, int height,
-                       int x) {
-    glDisable(GL_DEPTH_TEST);
-    glViewport(x, 0, width, height);
-    glBindVertexArray(programs_->images.emptyVertexArray().get());
-    const int scale = textScale(width, height);
-    const Scene sized = atSize(observer, width, height);
-    const SceneView view = sceneView(sized);
-    const glm::dmat4 clipFromWorld = view.clipFromView * view.viewFromWorld;
-    for (const OutsideLabel& label : labels) {
-        const glm::dvec4 clip = clipFromWorld * glm::dvec4(label.positionWorld, 1);
-        if (!(clip.w > 0)) continue;
-        const double px = (clip.x / clip.w + 1) / 2 * width, py = (1 - clip.y / clip.w) / 2 * height;
-        if (!(px >= 0 && px < width && py >= 0 && py < height)) continue;
-        const Image image = labelImage({label.text}, scale);
-        const int left = label.leftOfPoint ? int(px) - 3 * scale - image.width : int(px) + 3 * scale;
-        programs_->images.draw(image, std::clamp(left, 0, std::max(0, width - image.width)),
-                               std::clamp(int(py) - image.height / 2, 0, std::max(0, height - image.height)),
-                               x, width, height);
-    }
-}
-
-void Views::drawNdc(const Scene& scene, int width, int height, int x) {
-    figures_ = ViewFigures{};
-    const Scene sized = atSize(scene, width, height);
-    const Scene observer = ndcObserverScene(sized);
-    const SceneView observerView = sceneView(observer);
-    Scene objects = sized;
-    objects.view = View{};
-    renderer_.setNdcObserver(observerView.clipFromView * observerView.viewFromWorld);
-    try {
-        renderer_.renderScene(objects, width, height, x);
-    } catch (...) {
-        renderer_.setNdcObserver(std::nullopt);
-        throw;
-    }
-    renderer_.setNdcObserver(std::nullopt);
-    const std::string projection =
-        scene.projection.type == ProjectionType::Orthographic ? "M_ORTH" : "M_PROJ";
-    drawObserved(ndcCubeDrawing(), observer, "NDC VIEW: AFTER " + projection + " M_CAM AND THE DIVIDE", width,
-                 height, x);
 }
 
 } // namespace shadelab::gl
