@@ -27,7 +27,8 @@ set(SHADELAB_GL_SOURCES
 # The demo's state, keys and texts and the scene flags (no GL), shared by the window and the page.
 set(SHADELAB_DEMO_STATE_SOURCES
   src/app/demo/demo_state.cpp src/app/demo/demo_camera.cpp src/app/demo/demo_keys.cpp
-  src/app/demo/demo_text.cpp src/app/demo/matrices_text.cpp src/app/demo/scene_flags.cpp)
+  src/app/demo/demo_text.cpp src/app/demo/matrices_text.cpp src/app/demo/scene_flags.cpp
+  src/app/demo/demo_presets.cpp src/app/demo/demo_edits.cpp)
 # Drawing the demo's picture (GL), also shared by the window and the page.
 set(SHADELAB_DEMO_DRAW_SOURCES src/app/demo/demo_draw.cpp)
 

@@ -1,6 +1,6 @@
-// DemoState: what the demo shows and how commands and the mouse change it, and the presets M and L cycle
-// through. The camera and the scene it draws are demo_camera.cpp's, the keys demo_keys.cpp's, the words
-// (title, status, probe table) demo_text.cpp's.
+// DemoState: what the demo shows and how commands and the mouse change it. The camera and the scene it
+// draws are demo_camera.cpp's, the keys demo_keys.cpp's, the words (title, status, probe table)
+// demo_text.cpp's, the presets M and L cycle through demo_presets.cpp's, the panel's edits demo_edits.cpp's.
 #include "app/demo/demo_state.h"
 
 #include <algorithm>
@@ -24,14 +24,6 @@ std::string overLimits(const Scene& scene) {
     return "";
 }
 
-Light pointLight(glm::dvec3 position, glm::dvec3 color) {
-    Light light;
-    light.position = position;
-    light.ambient = {0.1, 0.1, 0.1};
-    light.diffuse = light.specular = color;
-    return light;
-}
-
 // `v` turned by the rotation that takes unit `from` to unit `to` (about their common perpendicular).
 glm::dvec3 rotateLike(const glm::dvec3& v, const glm::dvec3& from, const glm::dvec3& to) {
     const glm::dvec3 axis = glm::cross(from, to);
@@ -42,38 +34,6 @@ glm::dvec3 rotateLike(const glm::dvec3& v, const glm::dvec3& from, const glm::dv
 }
 
 } // namespace
-
-std::span<const MaterialPreset> materialPresets() {
-    static const MaterialPreset kPresets[] = {
-        {"matte", {{0.1, 0.1, 0.1}, {0.2, 0.55, 0.25}, {0, 0, 0}, 1}},
-        {"plastic", {{0.1, 0.1, 0.1}, {0.15, 0.3, 0.75}, {0.8, 0.8, 0.8}, 8}},
-        {"metal", {{0.12, 0.1, 0.05}, {0.35, 0.28, 0.12}, {0.95, 0.8, 0.45}, 150}},
-    };
-    return kPresets;
-}
-
-std::span<const LightPreset> lightPresets() {
-    static const std::vector<LightPreset> kPresets = [] {
-        Light directional;
-        directional.type = LightType::Directional;
-        directional.direction = {-1, -1, -1.5};
-        directional.ambient = {0.1, 0.1, 0.1};
-        Light spot = pointLight({1.5, 1.5, 3}, {1, 1, 1});
-        spot.type = LightType::Spot;
-        spot.direction = {-1.5, -1.5, -3};
-        spot.cutoffDeg = 18;
-        spot.exponent = 10;
-        return std::vector<LightPreset>{
-            {"point", {pointLight({3, 3, 5}, {1, 1, 1})}},
-            {"directional", {directional}},
-            {"spot", {spot}},
-            {"three coloured",
-             {pointLight({3, 2, 4}, {0.9, 0.3, 0.3}), pointLight({-3, 2, 4}, {0.3, 0.9, 0.3}),
-              pointLight({0, -3, 4}, {0.3, 0.4, 1.0})}},
-        };
-    }();
-    return kPresets;
-}
 
 DemoState::DemoState(Scene scene)
     : initial_(scene), scene_(std::move(scene)),
@@ -458,106 +418,6 @@ void DemoState::toggleLighting() {
             exponents_[i] = scene_.objects[i].material.shininess;
         setShininess(i, toBlinn ? exponents_[i] * 4 : exponents_[i] / 4);
     }
-}
-
-void DemoState::setShininess(std::size_t object, double exponent) {
-    exponents_[object] = exponent;
-    scene_.objects[object].material.shininess = std::max(1.0, exponent); // DESIGN §3: exponents >= 1
-}
-
-double DemoState::presetExponent(double alpha) const {
-    return matchHighlight && scene_.lighting == LightingModel::BlinnPhong ? 4 * alpha : alpha;
-}
-
-int DemoState::level() const {
-    return scene_.objects.empty() ? 0 : subdivisionLevel(drawn(), scene_.objects[0]);
-}
-
-bool DemoState::autoLevel() const {
-    return !scene_.objects.empty() && scene_.objects[0].subdivisions == kAutoSubdivisions;
-}
-
-std::string DemoState::materialName() const {
-    const std::string name =
-        material_ == 0 ? "scene's own" : std::string(materialPresets()[std::size_t(material_ - 1)].name);
-    return materialEdited_ ? name + ", edited in the panel" : name;
-}
-
-std::string DemoState::editedObjectName() const {
-    const std::size_t count = scene_.objects.size();
-    if (count == 1) return "the object";
-    if (editedObject == kAllObjects || editedObject < 0 || std::size_t(editedObject) >= count)
-        return "all " + std::to_string(count) + " objects";
-    return "object " + std::to_string(editedObject + 1) + " of " + std::to_string(count);
-}
-
-void DemoState::chooseEditedObject(int number) {
-    const int count = int(scene_.objects.size());
-    editedObject = number <= 0 || count == 0 ? kAllObjects : std::min(number, count) - 1;
-}
-
-std::optional<std::size_t> DemoState::shownObject() const {
-    if (scene_.objects.empty()) return std::nullopt;
-    return std::size_t(std::clamp(editedObject, 0, int(scene_.objects.size()) - 1)); // all: the first
-}
-
-void DemoState::editMaterial(const Material& edited) {
-    const auto shown = shownObject();
-    if (!shown) return;
-    const Material before = scene_.objects[*shown].material;
-    if (editedObject != kAllObjects) {
-        scene_.objects[*shown].material = edited;
-    } else {
-        for (SceneObject& o : scene_.objects) {
-            Material& m = o.material;
-            if (edited.ambient != before.ambient) m.ambient = edited.ambient;
-            if (edited.diffuse != before.diffuse) m.diffuse = edited.diffuse;
-            if (edited.specular != before.specular) m.specular = edited.specular;
-            if (edited.shininess != before.shininess) m.shininess = edited.shininess;
-        }
-    }
-    materialEdited_ = true;
-}
-
-void DemoState::editScale(const glm::dvec3& scale) {
-    const auto shown = shownObject();
-    if (!shown) return;
-    for (int i = 0; i < 3; ++i)
-        if (!std::isfinite(scale[i]) || scale[i] == 0) {
-            char value[32];
-            std::snprintf(value, sizeof value, "%g", scale[i]);
-            throw InputError("objects[" + std::to_string(*shown) + "].scale[" + std::to_string(i) +
-                             "]: must be finite and non-zero, got " + value);
-        }
-    const glm::dvec3 before = scene_.objects[*shown].scale;
-    if (editedObject != kAllObjects) {
-        scene_.objects[*shown].scale = scale;
-    } else { // as editMaterial: only the component that changed, on every object
-        for (SceneObject& o : scene_.objects)
-            for (int i = 0; i < 3; ++i)
-                if (scale[i] != before[i]) o.scale[i] = scale[i];
-    }
-}
-
-void DemoState::editViewVolume(const Projection& edited) {
-    Scene check = drawn();
-    check.projection = edited;
-    validateSceneValues(check);
-    initial_.projection = edited;
-    scene_.projection = edited;
-    orthographic_ = edited.type == ProjectionType::Orthographic;
-    volumeDistance_ = glm::length(check.eye - check.target);
-}
-
-std::string DemoState::lightsName() const {
-    return lights_ == 0 ? "scene's own" : std::string(lightPresets()[std::size_t(lights_ - 1)].name);
-}
-
-std::size_t DemoState::triangleCount() const {
-    const Scene scene = drawn();
-    std::size_t total = 0;
-    for (const SceneObject& o : scene.objects) total += sphereTriangleCount(subdivisionLevel(scene, o));
-    return total;
 }
 
 } // namespace shadelab::app
