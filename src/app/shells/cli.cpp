@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 #include <string_view>
 #include <vector>
@@ -11,6 +12,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/demo/demo_state.h"
+#include "shadelab/geometry/sphere.h"
 #include "shadelab/io/text.h"
 #include "shadelab/scene/scene.h"
 #include "shadelab/shading/lighting.h"
@@ -102,6 +104,246 @@ std::string withoutTrailingNewlines(std::string text) {
     return text;
 }
 
+// Each form of the command line is a struct of its own: its options' storage, add() to declare them bound
+// to it, and finish() to give the ParsedCommand its kind and values when it is the form parsed.
+
+// Without a subcommand: the demo window (its scene, the scene flags, its own options).
+struct DemoCommand {
+    std::string scene;
+    DemoOptions demo;
+    SceneOverrides flags;
+    std::string api = "gl";
+    void add(CLI::App& cli) {
+        cli.add_option("scene", scene, "Scene file (JSON) for the demo; the defaults if omitted");
+        addSceneFlags(cli, flags);
+        cli.add_option("--showcase-out", demo.showcaseOut, "Where the showcase goes when there is no display")
+            ->capture_default_str();
+        cli.add_option("--screenshot-dir", demo.screenshotDir, "Where S saves shadelab-NNN.png and .json")
+            ->capture_default_str(); // checked in main.cpp, with a message as helpful as --out's
+        cli.add_flag("--hide-panel", demo.hidePanel, "Start with the control panel hidden (C shows it)");
+        cli.add_flag("--present", demo.present,
+                     "For a class: the large label of mode, lighting, level and exponent (F2), larger text");
+        cli.add_option("--ui-scale", demo.uiScale, "Scale of the panel, help and label text, 0.5..4")
+            ->check(CLI::Range(0.5, 4.0));
+        cli.add_flag("--gl-debug", demo.glDebug, "Ask for a KHR_debug context and print every GL message");
+        addApiFlag(cli, api);
+    }
+    void finish(ParsedCommand& c) const {
+        c.kind = ParsedCommand::Kind::Demo;
+        c.scene = scene;
+        c.overrides = flags;
+        c.demo = demo;
+        c.api = api;
+    }
+};
+
+struct RenderCommand {
+    SceneOverrides flags;
+    std::string scene, out;
+    ContextArgs context;
+    bool verbose = false, specialize = true, printMatrices = false;
+    CLI::App* add(CLI::App& cli) {
+        CLI::App* render = cli.add_subcommand("render", "Render a scene headless to a PNG");
+        render->add_option("scene", scene, "Scene file (JSON); the defaults of DESIGN §4 if omitted");
+        addSceneFlags(*render, flags);
+        addHeadlessFlags(*render, context);
+        render->add_flag("--verbose", verbose,
+                         "Say which context and renderer drew the picture (standard error)");
+        render
+            ->add_option("--specialize", specialize,
+                         "on: programs specialized to the scene's lights and terms, each object's values "
+                         "compiled in; off: the uber program")
+            ->transform(CLI::IsMember({"on", "off", "true", "false", "1", "0"}, CLI::ignore_case))
+            ->capture_default_str();
+        render->add_option("--out", out,
+                           "Output PNG, or - for standard output (required unless --print-matrices)");
+        render->add_flag(
+            "--print-matrices", printMatrices,
+            "Print the camera frame e, u, v, w, M_cam, the projection matrix and each object's M "
+            "and normal matrix (standard output); with --out FILE it renders too");
+        return render;
+    }
+    void finish(ParsedCommand& c) const {
+        c.kind = ParsedCommand::Kind::Render;
+        c.scene = scene;
+        c.overrides = flags;
+        c.out = out;
+        setContext(c, context);
+        c.verbose = verbose;
+        c.specialize = specialize;
+        c.printMatrices = printMatrices;
+    }
+};
+
+struct ReferenceCommand {
+    std::string scene, out;
+    SceneOverrides flags;
+    std::string backend = "egl", api = "gl";
+    bool specialize = true;
+    CLI::App* add(CLI::App& cli) {
+        CLI::App* reference =
+            cli.add_subcommand("reference", "Ray-cast the exact spheres on the CPU to a PNG");
+        reference->add_option("scene", scene, "Scene file (JSON)");
+        addSceneFlags(*reference, flags);
+        reference->add_option("--out", out, "Output PNG, or - for standard output")->required();
+        // render's context flags, so one command line switches between the two: checked, then unused (the
+        // reference is computed on the CPU).
+        reference->add_option("--backend", backend, "Accepted as render takes it; no effect (CPU)");
+        reference->add_option("--api", api, "Accepted as render takes it; no effect (CPU)");
+        reference->add_option("--specialize", specialize, "Accepted as render takes it; no effect (CPU)")
+            ->transform(CLI::IsMember({"on", "off", "true", "false", "1", "0"}, CLI::ignore_case));
+        return reference;
+    }
+    void finish(ParsedCommand& c) const {
+        c.kind = ParsedCommand::Kind::Reference;
+        setContext(c, {backend, api, ""});
+        c.scene = scene;
+        c.overrides = flags;
+        c.out = out;
+    }
+};
+
+struct BenchCommand {
+    BenchOptions bench;
+    std::string size = ParsedCommand{}.benchSize, json;
+    ContextArgs context;
+    CLI::App* add(CLI::App& cli) {
+        CLI::App* command = cli.add_subcommand("bench", "Benchmarks, reported as ratios measured in one run");
+        addHeadlessFlags(*command, context);
+        command->add_option("--size", size, "Frame size WxH")->capture_default_str();
+        command->add_option("--frames", bench.frames, "Timed frames per configuration")
+            ->capture_default_str()
+            ->check(CLI::Range(3, 100000));
+        command->add_option("--warmup", bench.warmupFrames, "Untimed frames first")
+            ->capture_default_str()
+            ->check(CLI::Range(0, 1000));
+        command->add_option("--filter", bench.filter, "Regular expression: run only matching benchmarks");
+        command->add_option("--json", json, "Also write every figure and ratio to this JSON file");
+        return command;
+    }
+    void finish(ParsedCommand& c) const {
+        c.kind = ParsedCommand::Kind::Bench;
+        c.bench = bench;
+        setContext(c, context);
+        c.benchSize = size;
+        c.benchJson = json;
+    }
+};
+
+struct CompareCommand {
+    CompareOptions o;
+    CLI::App* add(CLI::App& cli) {
+        CLI::App* compare = cli.add_subcommand(
+            "compare", "Compare two PNGs as the image tests do: exit 0 within the tolerance, 1 beyond it");
+        compare->add_option("actual", o.actual, "The image under test (PNG)")->required();
+        compare->add_option("expected", o.expected, "The reference (PNG)")->required();
+        compare->add_option("--max", o.maxDelta, "Largest per-channel difference, 0..255")
+            ->capture_default_str();
+        compare
+            ->add_option("--mean", o.meanDelta,
+                         "Largest mean per-channel difference, over the compared pixels")
+            ->capture_default_str();
+        compare->add_option("--outliers", o.outliers, "Pixels allowed over --max")->capture_default_str();
+        compare->add_option("--mask", o.mask,
+                            "PNG of ACTUAL's size: black pixels are not compared, nor counted in the mean");
+        compare->add_option("--diff", o.diff,
+                            "Where to write the difference ×8 on failure (a file; never an input)");
+        compare->add_flag("--json", o.json,
+                          "Print the result as one JSON object (sizes, max, mean over the compared pixels, "
+                          "outliers, limits, passed, diff) instead of the summary line");
+        return compare;
+    }
+    void finish(ParsedCommand& c) const {
+        c.kind = ParsedCommand::Kind::Compare;
+        c.compare = o;
+    }
+};
+
+struct ReportCommand {
+    static inline const ParsedCommand kDefaults{}; // the defaults are ParsedCommand's
+    std::string scene, out = kDefaults.reportOut, levels = kDefaults.reportLevels;
+    ContextArgs context;
+    bool noAuto = kDefaults.reportNoAuto, noPlot = kDefaults.reportNoPlot;
+    int frames = kDefaults.reportFrames, warmup = kDefaults.reportWarmup;
+    CLI::App* add(CLI::App& cli) {
+        CLI::App* report = cli.add_subcommand(
+            "report",
+            "Error against run time of every shading mode, lighting model and level: CSV, JSON, a plot");
+        report->add_option("scene", scene, "Scene file (JSON); the bundled scenes/report.json if omitted");
+        report->add_option("--out", out, "Output folder (created if missing)")->capture_default_str();
+        report
+            ->add_option("--levels", levels, "Levels N or A..B within 0.." + std::to_string(kMaxSubdivisions))
+            ->capture_default_str();
+        report->add_flag("--no-auto", noAuto, "Leave out the auto-subdivision rows");
+        report->add_flag("--no-plot", noPlot, "Write report.csv and report.json only (no gnuplot needed)");
+        addHeadlessFlags(*report, context);
+        report->add_option("--frames", frames, "Timed frames per configuration")
+            ->capture_default_str()
+            ->check(CLI::Range(1, 100000));
+        report->add_option("--warmup", warmup, "Untimed frames first")
+            ->capture_default_str()
+            ->check(CLI::Range(1, 1000));
+        return report;
+    }
+    void finish(ParsedCommand& c) const {
+        c.kind = ParsedCommand::Kind::Report;
+        c.scene = scene;
+        setContext(c, context);
+        c.reportOut = out;
+        c.reportLevels = levels;
+        c.reportNoAuto = noAuto;
+        c.reportNoPlot = noPlot;
+        c.reportFrames = frames;
+        c.reportWarmup = warmup;
+    }
+};
+
+struct CheckCommand {
+    std::string file;
+    CLI::App* add(CLI::App& cli) {
+        CLI::App* check = cli.add_subcommand("check", "Read a lesson or a scene file as the other commands "
+                                                      "would and say what is wrong, drawing nothing");
+        check->add_option("file", file, "Lesson or scene file (JSON)")->required();
+        return check;
+    }
+    void finish(ParsedCommand& c) const {
+        c.kind = ParsedCommand::Kind::Check;
+        c.scene = file;
+    }
+};
+
+struct SlidesCommand {
+    std::string lesson, outDir;
+    std::optional<std::string> size;
+    bool captions = true;
+    ContextArgs context;
+    CLI::App* add(CLI::App& cli) {
+        CLI::App* slides = cli.add_subcommand(
+            "slides",
+            "Export a lesson as slides: one PNG per step, its title and caption in a band at the bottom");
+        slides->add_option("lesson", lesson, "Lesson file (JSON)")->required();
+        slides
+            ->add_option("--out-dir", outDir,
+                         "Folder for 01-title.png, 02-... (created if missing; not the lesson's own folder)")
+            ->required();
+        slides->add_option("--size", size,
+                           "Slide size WxH for every step, e.g. 1920x1080 (default: each step's image size)");
+        slides->add_flag(
+            "--no-captions", [this](std::int64_t) { captions = false; },
+            "No band: each slide is exactly what render makes of the step's scene");
+        addHeadlessFlags(*slides, context);
+        return slides;
+    }
+    void finish(ParsedCommand& c) const {
+        c.kind = ParsedCommand::Kind::Slides;
+        c.scene = lesson;
+        setContext(c, context);
+        c.slidesOutDir = outDir;
+        c.slidesSize = size;
+        c.slidesCaptions = captions;
+    }
+};
+
 } // namespace
 
 ParsedCommand parseCommandLine(int argc, char** argv) {
@@ -110,151 +352,27 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
                  "display, the showcase PNG).",
                  "shadelab"};
     cli.set_help_all_flag("--help-all", "Help for every subcommand");
-    std::string demoScene;
-    DemoOptions demo;
-    SceneOverrides demoFlags;
-    cli.add_option("scene", demoScene, "Scene file (JSON) for the demo; the defaults if omitted");
-    addSceneFlags(cli, demoFlags);
-    cli.add_option("--showcase-out", demo.showcaseOut, "Where the showcase goes when there is no display")
-        ->capture_default_str();
-    cli.add_option("--screenshot-dir", demo.screenshotDir, "Where S saves shadelab-NNN.png and .json")
-        ->capture_default_str(); // checked in main.cpp, with a message as helpful as --out's
-    cli.add_flag("--hide-panel", demo.hidePanel, "Start with the control panel hidden (C shows it)");
-    cli.add_flag("--present", demo.present,
-                 "For a class: the large label of mode, lighting, level and exponent (F2), larger text");
-    cli.add_option("--ui-scale", demo.uiScale, "Scale of the panel, help and label text, 0.5..4")
-        ->check(CLI::Range(0.5, 4.0));
-    cli.add_flag("--gl-debug", demo.glDebug, "Ask for a KHR_debug context and print every GL message");
-    std::string demoApi = "gl";
-    addApiFlag(cli, demoApi);
-
-    SceneOverrides renderFlags;
-    std::string renderScene, renderOut;
-    ContextArgs renderContext;
-    CLI::App* render = cli.add_subcommand("render", "Render a scene headless to a PNG");
-    render->add_option("scene", renderScene, "Scene file (JSON); the defaults of DESIGN §4 if omitted");
-    addSceneFlags(*render, renderFlags);
-    addHeadlessFlags(*render, renderContext);
-    bool verbose = false;
-    render->add_flag("--verbose", verbose,
-                     "Say which context and renderer drew the picture (standard error)");
-    bool specialize = true;
-    render
-        ->add_option("--specialize", specialize,
-                     "on: programs specialized to the scene's lights and terms, each object's values "
-                     "compiled in; off: the uber program")
-        ->transform(CLI::IsMember({"on", "off", "true", "false", "1", "0"}, CLI::ignore_case))
-        ->capture_default_str();
-    render->add_option("--out", renderOut,
-                       "Output PNG, or - for standard output (required unless --print-matrices)");
-    bool printMatrices = false;
-    render->add_flag(
-        "--print-matrices", printMatrices,
-        "Print the camera frame e, u, v, w, M_cam, the projection matrix and each object's M and "
-        "normal matrix (standard output); with --out FILE it renders too");
-
-    std::string referenceScene, referenceOut;
-    SceneOverrides referenceFlags;
-    CLI::App* reference = cli.add_subcommand("reference", "Ray-cast the exact spheres on the CPU to a PNG");
-    reference->add_option("scene", referenceScene, "Scene file (JSON)");
-    addSceneFlags(*reference, referenceFlags);
-    reference->add_option("--out", referenceOut, "Output PNG, or - for standard output")->required();
-    // render's context flags, so one command line switches between the two: checked, then unused (the
-    // reference is computed on the CPU).
-    std::string referenceBackend = "egl", referenceApi = "gl";
-    bool referenceSpecialize = true;
-    reference->add_option("--backend", referenceBackend, "Accepted as render takes it; no effect (CPU)");
-    reference->add_option("--api", referenceApi, "Accepted as render takes it; no effect (CPU)");
-    reference->add_option("--specialize", referenceSpecialize, "Accepted as render takes it; no effect (CPU)")
-        ->transform(CLI::IsMember({"on", "off", "true", "false", "1", "0"}, CLI::ignore_case));
-
-    BenchOptions bench;
-    std::string benchSize = "800x600", benchJson;
-    ContextArgs benchContext;
-    CLI::App* benchCommand =
-        cli.add_subcommand("bench", "Benchmarks, reported as ratios measured in one run");
-    addHeadlessFlags(*benchCommand, benchContext);
-    benchCommand->add_option("--size", benchSize, "Frame size WxH")->capture_default_str();
-    benchCommand->add_option("--frames", bench.frames, "Timed frames per configuration")
-        ->capture_default_str()
-        ->check(CLI::Range(3, 100000));
-    benchCommand->add_option("--warmup", bench.warmupFrames, "Untimed frames first")
-        ->capture_default_str()
-        ->check(CLI::Range(0, 1000));
-    benchCommand->add_option("--filter", bench.filter, "Regular expression: run only matching benchmarks");
-    benchCommand->add_option("--json", benchJson, "Also write every figure and ratio to this JSON file");
-
-    ParsedCommand command;
-    CLI::App* compareCommand = cli.add_subcommand(
-        "compare", "Compare two PNGs as the image tests do: exit 0 within the tolerance, 1 beyond it");
-    compareCommand->add_option("actual", command.compare.actual, "The image under test (PNG)")->required();
-    compareCommand->add_option("expected", command.compare.expected, "The reference (PNG)")->required();
-    compareCommand->add_option("--max", command.compare.maxDelta, "Largest per-channel difference, 0..255")
-        ->capture_default_str();
-    compareCommand
-        ->add_option("--mean", command.compare.meanDelta,
-                     "Largest mean per-channel difference, over the compared pixels")
-        ->capture_default_str();
-    compareCommand->add_option("--outliers", command.compare.outliers, "Pixels allowed over --max")
-        ->capture_default_str();
-    compareCommand->add_option(
-        "--mask", command.compare.mask,
-        "PNG of ACTUAL's size: black pixels are not compared, nor counted in the mean");
-    compareCommand->add_option("--diff", command.compare.diff,
-                               "Where to write the difference ×8 on failure (a file; never an input)");
-    compareCommand->add_flag(
-        "--json", command.compare.json,
-        "Print the result as one JSON object (sizes, max, mean over the compared pixels, "
-        "outliers, limits, passed, diff) instead of the summary line");
-
-    std::string reportScene;
-    ContextArgs reportContext;
-    CLI::App* reportCommand = cli.add_subcommand(
-        "report",
-        "Error against run time of every shading mode, lighting model and level: CSV, JSON, a plot");
-    reportCommand->add_option("scene", reportScene,
-                              "Scene file (JSON); the bundled scenes/report.json if omitted");
-    reportCommand->add_option("--out", command.reportOut, "Output folder (created if missing)")
-        ->capture_default_str();
-    reportCommand->add_option("--levels", command.reportLevels, "Levels N or A..B within 0..10")
-        ->capture_default_str();
-    reportCommand->add_flag("--no-auto", command.reportNoAuto, "Leave out the auto-subdivision rows");
-    reportCommand->add_flag("--no-plot", command.reportNoPlot,
-                            "Write report.csv and report.json only (no gnuplot needed)");
-    addHeadlessFlags(*reportCommand, reportContext);
-    reportCommand->add_option("--frames", command.reportFrames, "Timed frames per configuration")
-        ->capture_default_str()
-        ->check(CLI::Range(1, 100000));
-    reportCommand->add_option("--warmup", command.reportWarmup, "Untimed frames first")
-        ->capture_default_str()
-        ->check(CLI::Range(1, 1000));
-
-    std::string checkFile;
-    CLI::App* checkCommand = cli.add_subcommand(
-        "check",
-        "Read a lesson or a scene file as the other commands would and say what is wrong, drawing nothing");
-    checkCommand->add_option("file", checkFile, "Lesson or scene file (JSON)")->required();
-
-    std::string slidesLesson;
-    ContextArgs slidesContext;
-    CLI::App* slidesCommand = cli.add_subcommand(
-        "slides",
-        "Export a lesson as slides: one PNG per step, its title and caption in a band at the bottom");
-    slidesCommand->add_option("lesson", slidesLesson, "Lesson file (JSON)")->required();
-    slidesCommand
-        ->add_option("--out-dir", command.slidesOutDir,
-                     "Folder for 01-title.png, 02-... (created if missing; not the lesson's own folder)")
-        ->required();
-    slidesCommand->add_option(
-        "--size", command.slidesSize,
-        "Slide size WxH for every step, e.g. 1920x1080 (default: each step's image size)");
-    slidesCommand->add_flag(
-        "--no-captions", [&command](std::int64_t) { command.slidesCaptions = false; },
-        "No band: each slide is exactly what render makes of the step's scene");
-    addHeadlessFlags(*slidesCommand, slidesContext);
+    DemoCommand demo;
+    demo.add(cli);
+    // In --help's order.
+    RenderCommand render;
+    ReferenceCommand reference;
+    BenchCommand bench;
+    CompareCommand compare;
+    ReportCommand report;
+    CheckCommand check;
+    SlidesCommand slides;
+    CLI::App* const renderApp = render.add(cli);
+    CLI::App* const referenceApp = reference.add(cli);
+    CLI::App* const benchApp = bench.add(cli);
+    CLI::App* const compareApp = compare.add(cli);
+    CLI::App* const reportApp = report.add(cli);
+    CLI::App* const checkApp = check.add(cli);
+    CLI::App* const slidesApp = slides.add(cli);
 
     // Set last: subcommands made before it would inherit it, and their --help is not about the demo's keys.
     cli.footer("Demo keys:\n" + keyHelpText());
+    ParsedCommand command;
     try {
         cli.parse(argc, argv);
     } catch (const CLI::Success& e) {
@@ -268,9 +386,9 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
         // The error_code overload: a name too long to stat is not a scene file either, not a run-time error.
         const std::string hints = didYouMean(cli, argc, argv);
         std::error_code ec;
-        if (hints.empty() && !demoScene.empty() && !std::filesystem::exists(demoScene, ec))
+        if (hints.empty() && !demo.scene.empty() && !std::filesystem::exists(demo.scene, ec))
             throw InputError(
-                "\"" + demoScene +
+                "\"" + demo.scene +
                 "\" is neither a subcommand (render, reference, report, bench, compare, check, slides) nor a "
                 "scene or lesson file");
         std::ostringstream out, err;
@@ -278,55 +396,31 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
         throw InputError(withoutTrailingNewlines(err.str()) + hints);
     }
 
-    if (*render) {
-        command.kind = ParsedCommand::Kind::Render;
-        command.scene = renderScene;
-        command.overrides = renderFlags;
-        command.out = renderOut;
-        setContext(command, renderContext);
-        command.verbose = verbose;
-        command.specialize = specialize;
-        command.printMatrices = printMatrices;
-    } else if (*benchCommand) {
-        command.kind = ParsedCommand::Kind::Bench;
-        command.bench = bench;
-        setContext(command, benchContext);
-        command.benchSize = benchSize;
-        command.benchJson = benchJson;
-    } else if (*reportCommand) {
-        command.kind = ParsedCommand::Kind::Report;
-        command.scene = reportScene;
-        setContext(command, reportContext);
-    } else if (*compareCommand) {
-        command.kind = ParsedCommand::Kind::Compare;
-    } else if (*checkCommand) {
-        command.kind = ParsedCommand::Kind::Check;
-        command.scene = checkFile;
-    } else if (*slidesCommand) {
-        command.kind = ParsedCommand::Kind::Slides;
-        command.scene = slidesLesson;
-        setContext(command, slidesContext);
-    } else if (*reference) {
-        command.kind = ParsedCommand::Kind::Reference;
-        setContext(command, {referenceBackend, referenceApi, ""});
-        command.scene = referenceScene;
-        command.overrides = referenceFlags;
-        command.out = referenceOut;
+    if (*renderApp) {
+        render.finish(command);
+    } else if (*referenceApp) {
+        reference.finish(command);
+    } else if (*benchApp) {
+        bench.finish(command);
+    } else if (*compareApp) {
+        compare.finish(command);
+    } else if (*reportApp) {
+        report.finish(command);
+    } else if (*checkApp) {
+        check.finish(command);
+    } else if (*slidesApp) {
+        slides.finish(command);
     } else {
-        command.kind = ParsedCommand::Kind::Demo;
-        command.scene = demoScene;
-        command.overrides = demoFlags;
-        command.demo = demo;
-        command.api = demoApi;
+        demo.finish(command);
     }
     if (command.eglDevice == "list") {
         command.kind = ParsedCommand::Kind::EglDevices;
         return command;
     }
-    if (command.kind == ParsedCommand::Kind::Render && renderOut.empty() && !printMatrices)
+    if (command.kind == ParsedCommand::Kind::Render && command.out.empty() && !command.printMatrices)
         throw InputError("--out is required: the PNG to write, or - for standard output (or --print-matrices "
                          "alone to print the matrices)\nRun with --help for more information.");
-    if (command.kind == ParsedCommand::Kind::Render && printMatrices && renderOut == "-")
+    if (command.kind == ParsedCommand::Kind::Render && command.printMatrices && command.out == "-")
         throw InputError(
             "--print-matrices: the matrices go to standard output, and so would the PNG of --out "
             "-; write the PNG to a file (--out FILE.png) or leave --out out");
