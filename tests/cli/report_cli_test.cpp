@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstdlib>
@@ -255,15 +256,21 @@ TEST_F(ReportCli, InterruptedRunLeavesTheOldOrTheNewSet) {
     writeFile(dir_ / "s.json", R"({"image": {"width": 128, "height": 128}})");
     const std::vector<std::string> reportArgs = {"report",   "s.json", "--levels", "0..5",
                                                  "--frames", "10",     "--warmup", "2"};
-    std::vector<std::string> timedArgs = reportArgs;
-    timedArgs.insert(timedArgs.end(), {"--out", (dir_ / "timed").string()});
-    const auto timedStart = std::chrono::steady_clock::now();
-    const Outcome timed = runWith(timedArgs, dir_);
-    ASSERT_EQ(timed.exitCode, 0) << describe(timed);
-    const auto uninterrupted = std::chrono::steady_clock::now() - timedStart;
+    // The shorter of two uninterrupted runs: the first may pay what later ones do not (a cold cache, a
+    // busy neighbour under ctest -j), and a run that ends before its signal fails the test (seen in a fresh
+    // root: "the condition for sending the signal never came").
+    auto uninterrupted = std::chrono::steady_clock::duration::max();
+    for (int i = 0; i < 2; ++i) {
+        std::vector<std::string> timedArgs = reportArgs;
+        timedArgs.insert(timedArgs.end(), {"--out", (dir_ / ("timed" + std::to_string(i))).string()});
+        const auto timedStart = std::chrono::steady_clock::now();
+        const Outcome timed = runWith(timedArgs, dir_);
+        ASSERT_EQ(timed.exitCode, 0) << describe(timed);
+        uninterrupted = std::min(uninterrupted, std::chrono::steady_clock::now() - timedStart);
+    }
     struct Case {
         int signal;
-        bool onTemp; // when a temporary file appears (or at 3/4 of the run); otherwise at 1/3, mid-measure
+        bool onTemp; // when a temporary file appears (or at 2/3 of the run); otherwise at 1/4, mid-measure
     };
     int run = 0;
     for (const Case& c : {Case{SIGINT, false}, Case{SIGTERM, true}, Case{SIGHUP, true}, Case{SIGINT, true}}) {
@@ -274,8 +281,8 @@ TEST_F(ReportCli, InterruptedRunLeavesTheOldOrTheNewSet) {
         const auto start = std::chrono::steady_clock::now();
         options.signalWhen = [&] {
             const auto elapsed = std::chrono::steady_clock::now() - start;
-            if (!c.onTemp) return elapsed > uninterrupted / 3;
-            if (elapsed > uninterrupted * 3 / 4) return true;
+            if (!c.onTemp) return elapsed > uninterrupted / 4;
+            if (elapsed > uninterrupted * 2 / 3) return true;
             std::error_code error;
             for (fs::directory_iterator it(folder, error), end; !error && it != end; it.increment(error))
                 if (it->path().filename().string().starts_with(".shadelab-")) return true;
