@@ -1,0 +1,118 @@
+// What Renderer draws over a scene it rendered: the overlay's edges and normals, lines given in view space
+// (the probe's vectors), the outside view's world-space faces and lines, and CPU-made images (labels), with
+// the line program they share.
+#include <span>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <glad/gl.h>
+
+#include "shadelab/errors.h"
+#include "shadelab/geometry/overlay.h"
+#include "shadelab/geometry/subdivision.h"
+#include "shadelab/gl/loader.h"
+#include "shadelab/gl/renderer.h"
+
+namespace shadelab::gl {
+
+const Renderer::LineProgram& Renderer::lineProgram() {
+    if (!lineProgram_) {
+        Program program = buildLineProgram();
+        const GLint clipFromSpace = glGetUniformLocation(program.get(), "uClipFromSpace");
+        if (clipFromSpace < 0) throw RuntimeError("the line program has no uniform uClipFromSpace");
+        const GLint translucency = glGetUniformLocation(program.get(), "uTranslucency");
+        lineProgram_ =
+            std::make_unique<LineProgram>(LineProgram{std::move(program), clipFromSpace, translucency});
+    }
+    return *lineProgram_;
+}
+
+void Renderer::drawOverlay(const Scene& sized, const SceneView& view) {
+    const LineProgram& lines = lineProgram();
+    glUseProgram(lines.program.get());
+    for (const SceneObject& object : sized.objects) {
+        const int level = subdivisionLevel(sized, object);
+        auto& edges = overlays_[{level, sized.vertexNormals, sized.overlay}];
+        if (!edges)
+            edges = std::make_unique<GpuLines>(
+                overlayLines(buildSphere(level, sized.vertexNormals), sized.overlay));
+        const glm::mat4 clipFromObject(ndcObserver_.value_or(glm::dmat4(1)) * view.clipFromView *
+                                       view.viewFromWorld * worldFromObject(object));
+        glUniformMatrix4fv(lines.clipFromSpace, 1, GL_FALSE, glm::value_ptr(clipFromObject));
+        edges->draw();
+    }
+    glUseProgram(0);
+}
+
+void Renderer::drawImageOver(const Image& image, int left, int top, int width, int height, int x) {
+    if (width <= 0 || height <= 0 || image.width <= 0 || image.height <= 0) return;
+    if (!imagePass_) imagePass_ = std::make_unique<ImagePass>();
+    glViewport(x, 0, width, height);
+    glDisable(GL_DEPTH_TEST);
+    imagePass_->draw(image, left, top, x, width, height);
+    glBindVertexArray(0);
+    glUseProgram(0);
+    glEnable(GL_DEPTH_TEST);
+    checkGlError("drawing an image over the scene");
+}
+
+// The matrices of the scene at the viewport's size, with the viewport and the clip range of its depth mode
+// set, for lines drawn over what renderScene drew there.
+static SceneView viewportOver(const Scene& scene, int width, int height, int x) {
+    const SceneView view = sceneView(atSize(scene, width, height));
+    glViewport(x, 0, width, height);
+    setClipDepthZeroToOne(view.depth != DepthMode::Standard, toString(view.depth));
+    return view;
+}
+
+void Renderer::drawLinesOver(const Scene& scene, std::span<const LineVertex> linesView, int width, int height,
+                             int x) {
+    if (width <= 0 || height <= 0 || linesView.empty()) return;
+    const SceneView view = viewportOver(scene, width, height, x);
+    glDisable(GL_DEPTH_TEST);
+    if (!streamedLines_) streamedLines_ = std::make_unique<GpuLines>();
+    streamedLines_->set(linesView);
+    const LineProgram& lines = lineProgram();
+    glUseProgram(lines.program.get());
+    const glm::mat4 clipFromView(view.clipFromView);
+    glUniformMatrix4fv(lines.clipFromSpace, 1, GL_FALSE, glm::value_ptr(clipFromView));
+    streamedLines_->draw();
+    glUseProgram(0);
+    glEnable(GL_DEPTH_TEST);
+    checkGlError("drawing lines over the scene");
+}
+
+void Renderer::drawWorld(const Scene& scene, std::span<const LineVertex> linesWorld,
+                         std::span<const LineVertex> trianglesWorld, float faceAlpha, int width, int height,
+                         int x) {
+    if (width <= 0 || height <= 0) return;
+    const SceneView view = viewportOver(scene, width, height, x);
+    glEnable(GL_DEPTH_TEST); // GL_GREATER, as renderScene left it (DESIGN §2)
+    const LineProgram& lines = lineProgram();
+    glUseProgram(lines.program.get());
+    const glm::mat4 clipFromWorld(view.clipFromView * view.viewFromWorld);
+    glUniformMatrix4fv(lines.clipFromSpace, 1, GL_FALSE, glm::value_ptr(clipFromWorld));
+    // The translucent faces first, without writing depth, so that every line is drawn whole over them.
+    if (!trianglesWorld.empty()) {
+        if (!streamedTriangles_) streamedTriangles_ = std::make_unique<GpuLines>();
+        streamedTriangles_->set(trianglesWorld);
+        glUniform1f(lines.translucency, 1.0f - faceAlpha);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glDepthMask(GL_FALSE);
+        const GLboolean culling = glIsEnabled(GL_CULL_FACE); // a face is seen from either side
+        glDisable(GL_CULL_FACE);
+        streamedTriangles_->drawTriangles();
+        if (culling) glEnable(GL_CULL_FACE);
+        glDepthMask(GL_TRUE);
+        glDisable(GL_BLEND);
+    }
+    glUniform1f(lines.translucency, 0.0f);
+    if (!streamedLines_) streamedLines_ = std::make_unique<GpuLines>();
+    streamedLines_->set(linesWorld);
+    streamedLines_->draw();
+    glUseProgram(0);
+    checkGlError("drawing the outside view's lines");
+}
+
+} // namespace shadelab::gl
