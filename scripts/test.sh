@@ -194,7 +194,8 @@ stage "browser build (what the release build left)"
 finish "browser build"
 
 stage "format check (clang-format) and the shell scripts' check (shellcheck)"
-git ls-files 'src/*.cpp' 'src/*.h' 'include/*.h' 'tests/*.cpp' 'tests/*.h' 'web/*.cpp' | xargs clang-format --dry-run --Werror
+git ls-files 'src/*.cpp' 'src/*.h' 'include/*.h' 'tests/*.cpp' 'tests/*.h' 'web/*.cpp' 'web/*.h' 'fuzz/*.cpp' |
+  xargs clang-format --dry-run --Werror
 git ls-files '*.sh' .ci/run | xargs shellcheck
 
 stage "tests (release build)"
