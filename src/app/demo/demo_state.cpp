@@ -1,6 +1,7 @@
 // DemoState: what the demo shows and how commands and the mouse change it. The camera and the scene it
 // draws are demo_camera.cpp's, the keys demo_keys.cpp's, the words (title, status, probe table)
-// demo_text.cpp's, the presets M and L cycle through demo_presets.cpp's, the panel's edits demo_edits.cpp's.
+// demo_text.cpp's (what a key changed among them), the presets M and L cycle through demo_presets.cpp's,
+// the panel's edits demo_edits.cpp's.
 #include "app/demo/demo_state.h"
 
 #include <algorithm>
@@ -260,68 +261,6 @@ bool DemoState::apply(Command command) {
     }
     lastChange_ = describeChange(command);
     return true;
-}
-
-// What a key changed, in words: on a sphere orthographic and perspective, or exact and averaged normals,
-// look alike, so the title says it.
-std::string DemoState::describeChange(Command command) const {
-    const Scene scene = drawn();
-    switch (command) {
-    case Command::Flat:
-    case Command::Gouraud:
-    case Command::Phong:
-    case Command::Toon:
-    case Command::Exact:
-        if (scene.view.kind == ViewKind::Split)
-            return "split: " + toString(scene.view.left) + " | " + toString(scene.view.right);
-        return std::string(toString(scene.shading)) + " shading";
-    case Command::ToggleErrorView:
-    case Command::ToggleSplitView:
-    case Command::ToggleProfileView:
-    case Command::ToggleOutsideView:
-    case Command::ToggleNdcView:
-        return scene.view.kind == ViewKind::Scene ? "view: scene" : "view: " + toString(scene.view);
-    case Command::ToggleLighting:
-        return std::string(toString(scene.lighting)) + " lighting";
-    case Command::NextTerm:
-        return scene.term == LightingTerm::All ? "every term of the lighting sum"
-                                               : "the " + std::string(toString(scene.term)) + " term alone";
-    case Command::TogglePerspectiveMatrix:
-        if (scene.perspectiveMatrix == PerspectiveMatrix::WebGl)
-            return "the WebGL perspective matrix (times -1)";
-        return leavesOutTheMinusOne(scene)
-                   ? "the unnegated perspective matrix: w < 0 in front of the eye, everything clipped"
-                   : "the unnegated perspective matrix: no effect on an orthographic projection";
-    case Command::ToggleNormalMatrix:
-        return scene.normalMatrix == NormalMatrixRule::Model
-                   ? "normals transformed by M: wrong wherever M scales unevenly"
-                   : "normals transformed by (M^-1)^T";
-    case Command::LevelUp:
-    case Command::LevelDown:
-        return "level " + std::to_string(level());
-    case Command::AutoLevel:
-        return (autoLevel() ? "automatic level on: level " : "automatic level off: level ") +
-               std::to_string(level());
-    case Command::ToggleProjection:
-        return orthographic_ ? "orthographic projection" : "perspective projection";
-    case Command::ToggleNormals:
-        return scene.vertexNormals == VertexNormals::Exact ? "exact vertex normals"
-                                                           : "averaged vertex normals";
-    case Command::ToggleOverlay:
-        return scene.overlay == Overlay::None        ? "overlay off"
-               : scene.overlay == Overlay::Wireframe ? "overlay: wireframe"
-               : scene.overlay == Overlay::Normals
-                   ? "overlay: wireframe, face normals (amber), vertex normals (cyan)"
-                   : "overlay: the lights (point: sphere, directional: arrows, spot: cone)";
-    case Command::NextMaterial:
-        return "material: " + materialName();
-    case Command::NextLights:
-        return "lights: " + lightsName();
-    case Command::ResetView:
-        return "view reset";
-    default: // the panel and the help show themselves
-        return lastChange_;
-    }
 }
 
 void DemoState::dragLight(double dxPixels, double dyPixels) {

@@ -1,4 +1,5 @@
-// The demo's words: the window title, the panel's status and probe tables, and the presentation label.
+// The demo's words: the window title, what a key changed, the panel's status and probe tables, and the
+// presentation label.
 #include "app/demo/demo_state.h"
 
 #include <algorithm>
@@ -257,6 +258,68 @@ Image lessonBandImage(const std::string& title, const std::string& caption, int 
         y += textLineHeight(captionScale);
     }
     return image;
+}
+
+// What a key changed, in words: on a sphere orthographic and perspective, or exact and averaged normals,
+// look alike, so the title says it.
+std::string DemoState::describeChange(Command command) const {
+    const Scene scene = drawn();
+    switch (command) {
+    case Command::Flat:
+    case Command::Gouraud:
+    case Command::Phong:
+    case Command::Toon:
+    case Command::Exact:
+        if (scene.view.kind == ViewKind::Split)
+            return "split: " + toString(scene.view.left) + " | " + toString(scene.view.right);
+        return std::string(toString(scene.shading)) + " shading";
+    case Command::ToggleErrorView:
+    case Command::ToggleSplitView:
+    case Command::ToggleProfileView:
+    case Command::ToggleOutsideView:
+    case Command::ToggleNdcView:
+        return scene.view.kind == ViewKind::Scene ? "view: scene" : "view: " + toString(scene.view);
+    case Command::ToggleLighting:
+        return std::string(toString(scene.lighting)) + " lighting";
+    case Command::NextTerm:
+        return scene.term == LightingTerm::All ? "every term of the lighting sum"
+                                               : "the " + std::string(toString(scene.term)) + " term alone";
+    case Command::TogglePerspectiveMatrix:
+        if (scene.perspectiveMatrix == PerspectiveMatrix::WebGl)
+            return "the WebGL perspective matrix (times -1)";
+        return leavesOutTheMinusOne(scene)
+                   ? "the unnegated perspective matrix: w < 0 in front of the eye, everything clipped"
+                   : "the unnegated perspective matrix: no effect on an orthographic projection";
+    case Command::ToggleNormalMatrix:
+        return scene.normalMatrix == NormalMatrixRule::Model
+                   ? "normals transformed by M: wrong wherever M scales unevenly"
+                   : "normals transformed by (M^-1)^T";
+    case Command::LevelUp:
+    case Command::LevelDown:
+        return "level " + std::to_string(level());
+    case Command::AutoLevel:
+        return (autoLevel() ? "automatic level on: level " : "automatic level off: level ") +
+               std::to_string(level());
+    case Command::ToggleProjection:
+        return orthographic_ ? "orthographic projection" : "perspective projection";
+    case Command::ToggleNormals:
+        return scene.vertexNormals == VertexNormals::Exact ? "exact vertex normals"
+                                                           : "averaged vertex normals";
+    case Command::ToggleOverlay:
+        return scene.overlay == Overlay::None        ? "overlay off"
+               : scene.overlay == Overlay::Wireframe ? "overlay: wireframe"
+               : scene.overlay == Overlay::Normals
+                   ? "overlay: wireframe, face normals (amber), vertex normals (cyan)"
+                   : "overlay: the lights (point: sphere, directional: arrows, spot: cone)";
+    case Command::NextMaterial:
+        return "material: " + materialName();
+    case Command::NextLights:
+        return "lights: " + lightsName();
+    case Command::ResetView:
+        return "view reset";
+    default: // the panel and the help show themselves
+        return lastChange_;
+    }
 }
 
 } // namespace shadelab::app
