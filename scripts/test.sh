@@ -8,7 +8,8 @@
 #      (clang; -O1, the tests' own sources -O0)
 #   2. from the release build on, beside the rest at the lowest priority: clang-tidy (.clang-tidy) on src/,
 #      the fuzzers' build
-#   3. formatting (.clang-format) of src/, include/, tests/, web/; every shell script checked by shellcheck
+#   3. formatting (.clang-format) of src/, include/, tests/, web/, fuzz/; every shell script put through
+#      the shellcheck linter
 #   4. the whole test suite on the release build: CPU tests, GL tests on every headless backend (EGL with
 #      OpenGL and with OpenGL ES, OSMesa), the command line end to end, the demo window under Xvfb, the page
 #      in headless Chromium
