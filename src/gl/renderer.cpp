@@ -158,17 +158,17 @@ const Renderer::DrawPlan& Renderer::drawPlan(const Scene& sized, const ProgramVa
     }
     DrawPlan plan{sized, variant, specialization_, {}, {}};
     plan.programs.reserve(sized.objects.size());
-    const SurfaceProgram* previous = nullptr; // objects of one material in a row share a program
+    // One program for all, or (values compiled in) one per material, found again for the next object of
+    // the same material in a row.
+    const SurfaceProgram* shared = specialization_ == Specialization::Values ? nullptr : &program(variant);
     for (std::size_t i = 0; i < sized.objects.size(); ++i) {
         const Material& material = sized.objects[i].material;
-        if (specialization_ != Specialization::Values) {
-            plan.programs.push_back(&program(variant));
-        } else if (previous && material == sized.objects[i - 1].material) {
-            plan.programs.push_back(previous);
-        } else {
+        if (shared)
+            plan.programs.push_back(shared);
+        else if (i > 0 && material == sized.objects[i - 1].material)
+            plan.programs.push_back(plan.programs.back());
+        else
             plan.programs.push_back(&program(variant.withValues(sized, material)));
-        }
-        previous = plan.programs.back();
     }
     if (sized.shading != ShadingMode::Exact) {
         const MeshLayout layout = sized.shading == ShadingMode::Flat && !variant.flatGeometryShader

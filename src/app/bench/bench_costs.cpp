@@ -13,8 +13,9 @@ namespace shadelab::app {
 
 std::vector<RatioSpec> registerCostBenchmarks(Gpu& gpu) {
     std::vector<RatioSpec> ratios = registerSphereCosts();
-    for (RatioSpec& r : registerFrameCosts(gpu)) ratios.push_back(std::move(r));
-    for (RatioSpec& r : registerObjectCosts(gpu)) ratios.push_back(std::move(r));
+    const std::shared_ptr<Limits> limits = makeLimits();
+    for (RatioSpec& r : registerFrameCosts(gpu, limits)) ratios.push_back(std::move(r));
+    for (RatioSpec& r : registerObjectCosts(gpu, limits)) ratios.push_back(std::move(r));
     for (RatioSpec& r : registerProcessCosts(gpu.options)) ratios.push_back(std::move(r));
     return ratios;
 }

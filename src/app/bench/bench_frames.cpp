@@ -86,16 +86,20 @@ void registerFrame(Gpu& gpu, const std::string& name, const std::function<void()
         ->Unit(benchmark::kMillisecond);
 }
 
+} // namespace
+
 // The limits are built on the first frame of the benchmark that uses them (a current context is needed)
 // and kept for the run: the context outlives every benchmark.
 struct Limits {
     gl::Program fill{gl::NoCreate}, sphere{gl::NoCreate};
+    int sphereClipFromObject = -1; // uClipFromObject, found once
     gl::VertexArray empty{gl::NoCreate};
     std::map<int, std::unique_ptr<gl::GpuMesh>> meshes;
     void build() {
         if (fill) return;
         fill = oneColourProgram(kFullScreenVertex, "full-screen fill");
         sphere = oneColourProgram(kSphereVertex, "one-colour sphere");
+        sphereClipFromObject = glGetUniformLocation(sphere.get(), "uClipFromObject");
         empty = gl::VertexArray();
     }
     const gl::GpuMesh& mesh(int level) {
@@ -104,6 +108,12 @@ struct Limits {
         return *slot;
     }
 };
+
+std::shared_ptr<Limits> makeLimits() {
+    return std::make_shared<Limits>();
+}
+
+namespace {
 
 void drawFill(Limits& limits, int width, int height) {
     limits.build();
@@ -116,14 +126,11 @@ void drawFill(Limits& limits, int width, int height) {
     glUseProgram(0);
 }
 
-// The scene's first object, with the renderer's depth set-up and clip matrix, in one colour. The renderer
-// culls back faces except where the near plane cuts an object open (its inside then shows, as in the
-// reference); drawing them (`cullBackFaces` false) measures what that exception costs on a closed sphere.
+} // namespace
+
 void drawOneColour(Limits& limits, const Scene& scene, bool cullBackFaces) {
     limits.build();
     const SceneView view = sceneView(scene);
-    const SceneObject& object = scene.objects[0];
-    const glm::mat4 clipFromObject(view.clipFromView * view.viewFromWorld * worldFromObject(object));
     beginFrame(scene.width, scene.height);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_GREATER);
@@ -132,11 +139,16 @@ void drawOneColour(Limits& limits, const Scene& scene, bool cullBackFaces) {
         glCullFace(GL_BACK); // triangles are counter-clockwise seen from outside
     }
     glUseProgram(limits.sphere.get());
-    glUniformMatrix4fv(glGetUniformLocation(limits.sphere.get(), "uClipFromObject"), 1, GL_FALSE,
-                       glm::value_ptr(clipFromObject));
-    gl::drawWith(limits.sphere, limits.mesh(object.subdivisions));
+    for (const SceneObject& object : scene.objects) {
+        const glm::mat4 clipFromObject(view.clipFromView * view.viewFromWorld * worldFromObject(object));
+        glUniformMatrix4fv(limits.sphereClipFromObject, 1, GL_FALSE, glm::value_ptr(clipFromObject));
+        limits.mesh(object.subdivisions).draw();
+    }
+    glUseProgram(0);
     glDisable(GL_CULL_FACE);
 }
+
+namespace {
 
 Scene sized(Scene scene, const BenchOptions& o, int level) {
     scene.width = o.width;
@@ -262,8 +274,7 @@ void registerGlmark2Equivalents(Gpu& gpu, const std::shared_ptr<Limits>& limits)
 
 } // namespace
 
-std::vector<RatioSpec> registerFrameCosts(Gpu& gpu) {
-    auto limits = std::make_shared<Limits>();
+std::vector<RatioSpec> registerFrameCosts(Gpu& gpu, const std::shared_ptr<Limits>& limits) {
     std::vector<RatioSpec> ratios = registerModes(gpu, limits);
     registerGlmark2Equivalents(gpu, limits);
     return ratios;

@@ -7,18 +7,13 @@
 // are not counted).
 #include <time.h>
 
-#include <algorithm>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include <glad/gl.h>
-#include <glm/gtc/type_ptr.hpp>
-
 #include "app/bench/bench_costs.h"
 #include "shadelab/gl/loader.h"
-#include "shadelab/gl/mesh.h"
-#include "shadelab/gl/program.h"
 
 namespace shadelab::app {
 namespace {
@@ -53,76 +48,37 @@ double threadCpuSeconds() {
 // CPU time of the drawing thread in `draw` (before the GPU finishes), each divided by the object count.
 void registerObjects(Gpu& gpu, const std::string& name, std::size_t objects,
                      const std::function<void()>& draw) {
-    benchmark::RegisterBenchmark(
-        name.c_str(),
-        [&gpu, objects, draw](benchmark::State& state) {
-            gpu.renderer.setSpecialization(gl::Specialization::Values);
-            gpu.renderer.setFlatGeometryShader(false);
-            auto cpu = std::make_shared<std::vector<double>>();
-            gpu.timeFrames(state, [cpu, draw] {
-                const double start = threadCpuSeconds();
-                draw();
-                cpu->push_back(threadCpuSeconds() - start);
-            });
-            gl::checkGlError("bench: a timed frame of many objects");
-            auto median = [](std::vector<double> v) {
-                std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
-                return v.empty() ? 0.0 : v[v.size() / 2];
-            };
-            state.counters["objects"] = double(objects);
-            state.counters["cpu_us_per_object"] = median(*cpu) * 1e6 / double(objects);
-            state.counters["frame_us_per_object"] = state.counters["median_ms"] * 1e3 / double(objects);
-        })
+    benchmark::RegisterBenchmark(name.c_str(),
+                                 [&gpu, objects, draw](benchmark::State& state) {
+                                     gpu.renderer.setSpecialization(gl::Specialization::Values);
+                                     gpu.renderer.setFlatGeometryShader(false);
+                                     auto cpu = std::make_shared<std::vector<double>>();
+                                     gpu.timeFrames(state, [cpu, draw] {
+                                         const double start = threadCpuSeconds();
+                                         draw();
+                                         cpu->push_back(threadCpuSeconds() - start);
+                                     });
+                                     gl::checkGlError("bench: a timed frame of many objects");
+                                     state.counters["objects"] = double(objects);
+                                     state.counters["cpu_us_per_object"] =
+                                         percentile(*cpu, 0.5) * 1e6 / double(objects);
+                                     state.counters["frame_us_per_object"] =
+                                         state.counters["median_ms"] * 1e3 / double(objects);
+                                 })
         ->UseManualTime()
         ->Iterations(gpu.options.frames)
         ->Unit(benchmark::kMillisecond);
 }
 
-// The limit: what any GL program pays to draw these objects one by one, with the renderer's depth and cull
-// set-up: per object one clip matrix and one draw of the shared level-0 mesh, in one colour.
-struct BareLoop {
-    gl::Program program{gl::NoCreate};
-    GLint clipFromObject = -1;
-    std::unique_ptr<gl::GpuMesh> mesh;
-    void draw(const Scene& scene) {
-        if (!program) {
-            program = gl::buildProgramFromBodies(
-                "bench many objects, one colour",
-                "layout(location = 0) in vec3 aPositionObject; // gl::kPositionAttribute\n"
-                "uniform mat4 uClipFromObject;\n"
-                "void main() { gl_Position = uClipFromObject * vec4(aPositionObject, 1.0); }\n",
-                "out vec4 fragColor;\nvoid main() { fragColor = vec4(1.0); }\n");
-            clipFromObject = glGetUniformLocation(program.get(), "uClipFromObject");
-            mesh = std::make_unique<gl::GpuMesh>(buildSphere(0), gl::MeshLayout::Smooth);
-        }
-        const SceneView view = sceneView(scene);
-        glViewport(0, 0, scene.width, scene.height);
-        glClearColor(0, 0, 0, 0);
-        gl::setClipDepthZeroToOne(false, "standard");
-        gl::clearDepth(0.0f);
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        glEnable(GL_DEPTH_TEST);
-        glDepthFunc(GL_GREATER);
-        glEnable(GL_CULL_FACE);
-        glUseProgram(program.get());
-        for (const SceneObject& object : scene.objects) {
-            const glm::mat4 m(view.clipFromView * view.viewFromWorld * worldFromObject(object));
-            glUniformMatrix4fv(clipFromObject, 1, GL_FALSE, glm::value_ptr(m));
-            mesh->draw();
-        }
-        glUseProgram(0);
-        glDisable(GL_CULL_FACE);
-    }
-};
-
 } // namespace
 
-std::vector<RatioSpec> registerObjectCosts(Gpu& gpu) {
+// The limit: the bare loop any GL program needs to draw these objects one by one (drawOneColour, back
+// faces culled as the renderer culls them): per object one clip matrix and one draw of the level-0 mesh.
+std::vector<RatioSpec> registerObjectCosts(Gpu& gpu, const std::shared_ptr<Limits>& limits) {
     std::vector<RatioSpec> ratios;
     const Scene bare = manyObjects(gpu.options, ShadingMode::Gouraud);
-    auto loop = std::make_shared<BareLoop>();
     const std::string limit = "frame/objects/limits/one-colour-level0";
-    registerObjects(gpu, limit, bare.objects.size(), [loop, bare] { loop->draw(bare); });
+    registerObjects(gpu, limit, bare.objects.size(), [limits, bare] { drawOneColour(*limits, bare, true); });
     for (const ShadingMode mode : kShadingModes) {
         const Scene scene = manyObjects(gpu.options, mode);
         const std::string name = "frame/objects/" + std::string(toString(mode)) + "-level0";
