@@ -206,9 +206,58 @@ const ViewFigures& Renderer::viewFigures() const {
     return views_ ? views_->figures() : kNone;
 }
 
+// A program keeps its uniforms: the frame's (the lights' geometry, the projection's kind, toon's bands) are
+// set when it is bound, and the light values again only for an object of another material than the last.
+class Renderer::ObjectBinder {
+public:
+    ObjectBinder(const DrawPlan& plan, const Scene& sized, const ProgramVariant& variant,
+                 const SceneView& view, const std::vector<Light>& lightsView)
+        : plan_(plan), sized_(sized), variant_(variant), view_(view), lightsView_(lightsView) {}
+
+    // Binds the program that draws the object of that index, with the frame's and the object's uniforms
+    // set; returns where the program keeps the rest.
+    const SurfaceLocations& operator()(std::size_t index) {
+        const SurfaceProgram& surface = *plan_.programs[index];
+        const Material& material = sized_.objects[index].material;
+        if (&surface != bound_) {
+            glUseProgram(surface.program.get());
+            setFrameUniforms(surface.at);
+            bound_ = &surface;
+            valuesOf_ = nullptr;
+        }
+        if (!valuesOf_ || *valuesOf_ != material) {
+            setLightValues(surface.at, variant_.specialized, lightsView_, material);
+            valuesOf_ = &material;
+        }
+        return surface.at;
+    }
+
+private:
+    void setFrameUniforms(const SurfaceLocations& at) const {
+        setLightGeometry(at, variant_.specialized, lightsView_);
+        glUniform1i(at.orthographic, view_.orthographic ? 1 : 0); // uber programs (specialized: a define)
+        if (sized_.shading == ShadingMode::Toon || variant_.exactToon) {
+            glUniform1f(at.toonBands, float(sized_.toonBands));
+            glUniform1f(at.toonBandWidth, float(1.0 / sized_.toonBands));
+        }
+    }
+
+    const DrawPlan& plan_;
+    const Scene& sized_;
+    const ProgramVariant& variant_;
+    const SceneView& view_;
+    const std::vector<Light>& lightsView_;
+    const SurfaceProgram* bound_ = nullptr;
+    const Material* valuesOf_ = nullptr;
+};
+
 void Renderer::renderScene(const Scene& scene, int width, int height, int x) {
     if (width <= 0 || height <= 0) return; // a minimized window: nothing to draw, no NaN aspect
-    Scene sized = atSize(scene, width, height);
+    // Assigned, not copied: the vectors keep their storage from frame to frame.
+    sized_ = scene;
+    Scene& sized = sized_;
+    sized.width = width;
+    sized.height = height;
     // One term of the lighting sum: the other terms' coefficients are 0, and every shader's one equation
     // (lighting.glsl) draws that term alone, as its shading mode evaluates it.
     if (scene.term != LightingTerm::All)
@@ -234,42 +283,14 @@ void Renderer::renderScene(const Scene& scene, int width, int height, int x) {
     variant.exactToon = exactToon_ && scene.shading == ShadingMode::Exact;
     variant.ndcView = ndcObserver_.has_value();
     if (variant.ndcView) variant.flatGeometryShader = false; // its gl_Position is the camera's
-    std::vector<Light> lightsView;
-    lightsView.reserve(scene.lights.size());
-    for (const Light& light : scene.lights) lightsView.push_back(transformLight(light, view.viewFromWorld));
-    // What every program the frame binds needs, set again whenever another program is bound.
-    const FrameUniforms setFrameUniforms = [&](const SurfaceLocations& at) {
-        setLightGeometry(at, variant.specialized, lightsView);
-        glUniform1i(at.orthographic, view.orthographic ? 1 : 0); // uber programs (specialized: a define)
-        if (scene.shading == ShadingMode::Toon || variant.exactToon) {
-            glUniform1f(at.toonBands, float(scene.toonBands));
-            glUniform1f(at.toonBandWidth, float(1.0 / scene.toonBands));
-        }
-    };
+    lightsView_.clear();
+    for (const Light& light : scene.lights) lightsView_.push_back(transformLight(light, view.viewFromWorld));
     const DrawPlan& plan = drawPlan(sized, variant);
-    // A program keeps its uniforms: the light values are set when it is bound and again only for an
-    // object of another material.
-    const ObjectProgram objectProgram = [&, bound = static_cast<const SurfaceProgram*>(nullptr),
-                                         valuesOf = static_cast<const Material*>(nullptr)](
-                                            std::size_t index) mutable -> const SurfaceLocations& {
-        const SurfaceProgram& surface = *plan.programs[index];
-        const Material& material = sized.objects[index].material;
-        if (&surface != bound) {
-            glUseProgram(surface.program.get());
-            setFrameUniforms(surface.at);
-            bound = &surface;
-            valuesOf = nullptr;
-        }
-        if (!valuesOf || *valuesOf != material) {
-            setLightValues(surface.at, variant.specialized, lightsView, material);
-            valuesOf = &material;
-        }
-        return surface.at;
-    };
+    ObjectBinder bind(plan, sized, variant, view, lightsView_);
     if (scene.shading == ShadingMode::Exact) {
-        drawExact(sized, view, objectProgram, x);
+        drawExact(sized, view, bind, x);
     } else {
-        drawMeshes(sized, view, variant, plan, objectProgram);
+        drawMeshes(sized, view, variant, plan, bind);
     }
     glUseProgram(0);
     glDisable(GL_CULL_FACE);
@@ -280,10 +301,10 @@ void Renderer::renderScene(const Scene& scene, int width, int height, int x) {
 }
 
 void Renderer::drawMeshes(const Scene& sized, const SceneView& view, const ProgramVariant& variant,
-                          const DrawPlan& plan, const ObjectProgram& objectProgram) {
+                          const DrawPlan& plan, ObjectBinder& bind) {
     for (std::size_t index = 0; index < sized.objects.size(); ++index) {
         const SceneObject& object = sized.objects[index];
-        const SurfaceLocations& at = objectProgram(index);
+        const SurfaceLocations& at = bind(index);
         const glm::dmat4 viewFromObject = view.viewFromWorld * worldFromObject(object);
         if (ndcObserver_) {
             // Both faces: the observer may look at the inside of an object the near plane cuts open.
@@ -303,8 +324,7 @@ void Renderer::drawMeshes(const Scene& sized, const SceneView& view, const Progr
 
 // Exact shading: one proxy rectangle per object, its rays cast in shaders/exact.frag.glsl with what
 // ray_cast.cpp's prepareObject and PixelRays give the analytic reference.
-void Renderer::drawExact(const Scene& sized, const SceneView& view, const ObjectProgram& objectProgram,
-                         int x) {
+void Renderer::drawExact(const Scene& sized, const SceneView& view, ObjectBinder& bind, int x) {
     // The core profile draws only with a vertex array bound, even an empty one.
     if (!emptyVertexArray_) emptyVertexArray_ = VertexArray();
     glDisable(GL_CULL_FACE);
@@ -316,7 +336,7 @@ void Renderer::drawExact(const Scene& sized, const SceneView& view, const Object
         const glm::vec4 rect = proxyRectangle(view.clipFromView, viewFromObject, v.near, view.orthographic,
                                               sized.width, sized.height);
         if (!(rect.x < rect.z)) continue;
-        const SurfaceLocations& at = objectProgram(index);
+        const SurfaceLocations& at = bind(index);
         glUniform4f(at.viewport, float(x), 0.0f, float(sized.width), float(sized.height));
         glUniform4f(at.nearRect, float(v.left), float(v.right), float(v.bottom), float(v.top));
         // An infinite far plane clips nothing behind (as the reference): the largest float's order stands

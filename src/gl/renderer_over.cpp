@@ -45,11 +45,18 @@ void Renderer::drawOverlay(const Scene& sized, const SceneView& view) {
 }
 
 void Renderer::drawImageOver(const Image& image, int left, int top, int width, int height, int x) {
-    if (width <= 0 || height <= 0 || image.width <= 0 || image.height <= 0) return;
+    if (!imagePass_) imagePass_ = std::make_unique<ImagePass>();
+    Sprite& scratch = imagePass_->scratch();
+    scratch.set(image);
+    drawSpriteOver(scratch, left, top, width, height, x);
+}
+
+void Renderer::drawSpriteOver(const Sprite& sprite, int left, int top, int width, int height, int x) {
+    if (width <= 0 || height <= 0 || sprite.width() <= 0 || sprite.height() <= 0) return;
     if (!imagePass_) imagePass_ = std::make_unique<ImagePass>();
     glViewport(x, 0, width, height);
     glDisable(GL_DEPTH_TEST);
-    imagePass_->draw(image, left, top, x, width, height);
+    imagePass_->draw(sprite, left, top, x, width, height);
     glBindVertexArray(0);
     glUseProgram(0);
     glEnable(GL_DEPTH_TEST);

@@ -1,5 +1,6 @@
 #include "shadelab/gl/screen_pass.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -50,26 +51,41 @@ void bindTexture(int unit, const Texture& texture) {
     glBindTexture(GL_TEXTURE_2D, texture.get());
 }
 
-ImagePass::ImagePass() = default;
-
-void ImagePass::draw(const Image& image, int left, int top, int viewportX, int viewportWidth,
-                     int viewportHeight) const {
-    if (image.width <= 0 || image.height <= 0) return;
+void Sprite::set(const Image& image) {
+    width_ = std::max(image.width, 0);
+    height_ = std::max(image.height, 0);
+    if (width_ == 0 || height_ == 0) return;
+    if (!texture_) texture_ = Texture();
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, texture_.get());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width_, height_, 0, GL_RGBA, GL_UNSIGNED_BYTE,
                  image.rgba.data());
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+}
+
+ImagePass::ImagePass() = default;
+
+void ImagePass::draw(const Sprite& sprite, int left, int top, int viewportX, int viewportWidth,
+                     int viewportHeight) const {
+    if (sprite.width() <= 0 || sprite.height() <= 0) return;
+    bindTexture(0, sprite.texture());
     glUseProgram(sprite_.program.get());
     glBindVertexArray(empty_.get());
-    const int bottom = viewportHeight - top - image.height;
+    const int bottom = viewportHeight - top - sprite.height();
     glUniform2f(sprite_.origin, float(viewportX + left), float(bottom));
     glEnable(GL_BLEND);
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
-    sprite_.draw(left, bottom, left + image.width, bottom + image.height, viewportWidth, viewportHeight);
+    sprite_.draw(left, bottom, left + sprite.width(), bottom + sprite.height(), viewportWidth,
+                 viewportHeight);
     glDisable(GL_BLEND);
+}
+
+void ImagePass::draw(const Image& image, int left, int top, int viewportX, int viewportWidth,
+                     int viewportHeight) const {
+    scratch_.set(image);
+    draw(scratch_, left, top, viewportX, viewportWidth, viewportHeight);
 }
 
 } // namespace shadelab::gl

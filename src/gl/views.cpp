@@ -29,12 +29,6 @@ namespace {
 using detail::labelImage;
 using detail::textScale;
 
-constexpr glm::u8vec4 kLabelText{240, 240, 240, 255};
-constexpr glm::u8vec4 kLabelBox{0, 0, 0, 170};
-constexpr glm::u8vec4 kModeCurve{255, 150, 40, 255};   // orange: the current mode
-constexpr glm::u8vec4 kExactCurve{255, 255, 255, 255}; // white: exact
-constexpr glm::u8vec4 kEdgeTick{80, 220, 255, 255};    // cyan: a mesh edge crosses the row
-
 // 1, 2 or 5 times a power of ten, at least `value`: the heatmap's top (at least 0.5/255).
 double niceCeiling(double value) {
     if (!(value > 0.5)) return 0.5;
@@ -56,20 +50,9 @@ std::string formatScale(double value) {
     return text;
 }
 
-// A straight line of pixels from (x0, y0) to (x1, y1) into the image (rows from the top).
-void drawLine(Image& image, int x0, int y0, int x1, int y1, glm::u8vec4 color) {
-    const int steps = std::max(std::abs(x1 - x0), std::abs(y1 - y0));
-    for (int i = 0; i <= steps; ++i) {
-        const double t = steps ? double(i) / steps : 0;
-        fillRect(image, int(std::lround(x0 + t * (x1 - x0))), int(std::lround(y0 + t * (y1 - y0))), 1, 1,
-                 color);
-    }
-}
-
 } // namespace
 
 namespace detail {
-
 // Lines of 11 px (textLineHeight(1)), twice that from a 400-pixel picture on.
 int textScale(int width, int height) {
     return std::min(width, height) >= 400 ? 2 : 1;
@@ -90,7 +73,8 @@ Image labelImage(const std::vector<std::string>& lines, int scale) {
 } // namespace detail
 
 Views::Views(Renderer& renderer)
-    : renderer_(renderer), targets_(std::make_unique<Targets>()), programs_(std::make_unique<Programs>()) {}
+    : renderer_(renderer), targets_(std::make_unique<Targets>()), programs_(std::make_unique<Programs>()),
+      labels_(std::make_unique<Labels>()) {}
 
 Views::~Views() = default;
 
@@ -141,12 +125,14 @@ void Views::renderModeAndExact(const Scene& scene, int width, int height) {
     const DepthFormat depth = depthFormatFor(scene.depth);
     targets_->mode.fit(width, height, ColorFormat::Rgba32F, depth);
     targets_->exact.fit(width, height, ColorFormat::Rgba32F, depth);
-    Scene mode = scene;
+    Scene& mode = targets_->modeScene;
+    mode = scene;
     mode.view = View{};
-    mode.overlay = Overlay::None;        // the lines are no part of the shading's error
-    Scene exact = withTrueNormals(mode); // with normals by M, the error is what the wrong matrix costs
+    mode.overlay = Overlay::None; // the lines are no part of the shading's error
+    Scene& exact = targets_->exactScene;
+    exact = mode;
+    setTrueNormals(exact); // with normals by M, the error is what the wrong matrix costs
     exact.shading = ShadingMode::Exact;
-    exact.overlay = Overlay::None;
     targets_->mode.bind();
     renderer_.renderScene(mode, width, height, 0);
     targets_->exact.bind();
@@ -220,25 +206,31 @@ void Views::drawError(const Scene& scene, int width, int height, int x, unsigned
     if (barBottom - barTop > 8) {
         glUniform1i(p.heatmap.legend, 1);
         p.heatmap.draw(barLeft, height - barBottom, barLeft + barWidth, height - barTop, width, height);
-        const Image top = labelImage({formatScale(figures_.scale) + "/255"}, scale);
-        const Image bottom = labelImage({"0"}, scale);
-        p.images.draw(top, std::max(0, barLeft + barWidth - top.width), barTop - top.height - scale, x, width,
-                      height);
-        p.images.draw(bottom, std::max(0, barLeft + barWidth - bottom.width), barBottom + scale, x, width,
+        Labels& l = *labels_;
+        const Sprite& top = l.legendTop.update(glm::dvec2(figures_.scale, scale), [&] {
+            return labelImage({formatScale(figures_.scale) + "/255"}, scale);
+        });
+        const Sprite& bottom = l.legendBottom.update(scale, [&] { return labelImage({"0"}, scale); });
+        p.images.draw(top, std::max(0, barLeft + barWidth - top.width()), barTop - top.height() - scale, x,
+                      width, height);
+        p.images.draw(bottom, std::max(0, barLeft + barWidth - bottom.width()), barBottom + scale, x, width,
                       height);
     }
-    std::string mode = upperAscii(toString(scene.shading));
-    if (scene.shading != ShadingMode::Exact && !scene.objects.empty())
-        mode += " L" + std::to_string(subdivisionLevel(scene, scene.objects[0]));
-    p.images.draw(
-        labelImage({"ERROR: " + mode + " - EXACT", "MEAN " + formatError(figures_.interiorMean) + "  MAX " +
-                                                       formatError(figures_.interiorMax) + " (1/255)"},
-                   scale),
-        scale * 4, scale * 4, x, width, height);
+    const bool levelled = scene.shading != ShadingMode::Exact && !scene.objects.empty();
+    const detail::ErrorFigures shown{scene.shading, levelled ? subdivisionLevel(scene, scene.objects[0]) : -1,
+                                     figures_.interiorMean, figures_.interiorMax, scale};
+    const Sprite& label = labels_->errorFigures.update(shown, [&] {
+        std::string mode = upperAscii(toString(shown.shading));
+        if (shown.level >= 0) mode += " L" + std::to_string(shown.level);
+        return labelImage({"ERROR: " + mode + " - EXACT", "MEAN " + formatError(shown.mean) + "  MAX " +
+                                                              formatError(shown.max) + " (1/255)"},
+                          scale);
+    });
+    p.images.draw(label, scale * 4, scale * 4, x, width, height);
 }
 
-Scene splitSideScene(const Scene& scene, const SplitSide& side) {
-    Scene out = scene;
+void assignSplitSide(Scene& out, const Scene& scene, const SplitSide& side) {
+    out = scene;
     out.view = View{};
     if (side.shading) out.shading = *side.shading;
     if (side.lighting) out.lighting = *side.lighting;
@@ -250,29 +242,54 @@ Scene splitSideScene(const Scene& scene, const SplitSide& side) {
     }
     // The exact side is the truth, as the error view's exact: beside a picture with normals by M it shows
     // what the right matrix draws.
-    return side.shading == ShadingMode::Exact ? withTrueNormals(out) : out;
+    if (side.shading == ShadingMode::Exact) setTrueNormals(out);
 }
 
-std::string sideLabel(const Scene& scene, const SplitSide& side) {
-    if (side.view) return upperAscii(toString(side));
-    const Scene s = splitSideScene(scene, side);
-    std::string label = upperAscii(toString(s.shading));
-    if (s.shading != ShadingMode::Exact && !s.objects.empty())
-        label += " L" + std::to_string(subdivisionLevel(s, s.objects[0]));
-    if (side.lighting || (!side.shading && !side.level)) label += " " + upperAscii(toString(s.lighting));
+Scene splitSideScene(const Scene& scene, const SplitSide& side) {
+    Scene out;
+    assignSplitSide(out, scene, side);
+    return out;
+}
+
+namespace {
+
+// What a split side's label says, for the side's own scene (splitSideScene).
+detail::SideFacts sideFacts(const Scene& sideScene, const SplitSide& side, int scale) {
+    const bool levelled = sideScene.shading != ShadingMode::Exact && !sideScene.objects.empty();
+    return {side, sideScene.shading, sideScene.lighting,
+            levelled ? subdivisionLevel(sideScene, sideScene.objects[0]) : -1, scale};
+}
+
+std::string sideWords(const detail::SideFacts& facts) {
+    if (facts.side.view) return upperAscii(toString(facts.side));
+    std::string label = upperAscii(toString(facts.shading));
+    if (facts.level >= 0) label += " L" + std::to_string(facts.level);
+    if (facts.side.lighting || (!facts.side.shading && !facts.side.level))
+        label += " " + upperAscii(toString(facts.lighting));
     return label;
+}
+
+} // namespace
+
+std::string sideLabel(const Scene& scene, const SplitSide& side) {
+    return sideWords(sideFacts(splitSideScene(scene, side), side, 1));
 }
 
 void Views::drawSplit(const Scene& scene, int width, int height, int x) {
     figures_ = ViewFigures{};
     const int divider = std::clamp(int(std::lround(scene.view.at.value_or(0.5) * width)), 0, width);
+    const int scale = textScale(width, height);
     // Each side clears and draws only its own pixels: the left side is a plain render of A there.
     glEnable(GL_SCISSOR_TEST);
     glScissor(x, 0, divider, height);
-    renderer_.render(splitSideScene(scene, scene.view.left), width, height, x); // a side may be a view
+    Scene& left = targets_->leftScene;
+    assignSplitSide(left, scene, scene.view.left);
+    renderer_.render(left, width, height, x); // a side may be a view
     glEnable(GL_SCISSOR_TEST);
     glScissor(x + divider, 0, width - divider, height);
-    renderer_.render(splitSideScene(scene, scene.view.right), width, height, x);
+    Scene& right = targets_->rightScene;
+    assignSplitSide(right, scene, scene.view.right);
+    renderer_.render(right, width, height, x);
     // The divider: two pixels of white straddling it.
     glEnable(GL_SCISSOR_TEST);
     glScissor(x + divider - 1, 0, 2, height);
@@ -282,91 +299,17 @@ void Views::drawSplit(const Scene& scene, int width, int height, int x) {
     glDisable(GL_DEPTH_TEST);
     glViewport(x, 0, width, height);
     glBindVertexArray(programs_->images.emptyVertexArray().get());
-    const int scale = textScale(width, height);
-    const Image left = labelImage({sideLabel(scene, scene.view.left)}, scale);
-    const Image right = labelImage({sideLabel(scene, scene.view.right)}, scale);
-    programs_->images.draw(left, std::max(0, divider - left.width - 4 * scale), 4 * scale, x, width, height);
-    programs_->images.draw(right, std::min(divider + 4 * scale, std::max(0, width - right.width)), 4 * scale,
-                           x, width, height);
-    glEnable(GL_DEPTH_TEST);
-}
-
-int profileRow(const Scene& scene, int height) {
-    if (scene.view.at) return std::clamp(int(*scene.view.at * height), 0, height - 1);
-    if (scene.objects.empty()) return height / 2;
-    Scene sized = scene;
-    sized.height = height;
-    const SceneView view = sceneView(sized);
-    const glm::dvec4 clip = view.clipFromView * view.viewFromWorld * glm::dvec4(scene.objects[0].center, 1);
-    if (!(clip.w > 0)) return height / 2;
-    const double yFromTop = (1 - clip.y / clip.w) / 2 * height;
-    if (!(yFromTop >= 0 && yFromTop < height)) return height / 2;
-    return int(yFromTop);
-}
-
-void Views::drawProfile(const Scene& scene, int width, int height, int x, unsigned destination) {
-    renderModeAndExact(scene, width, height);
-    Targets& t = *targets_;
-    Scene mode = scene;
-    mode.view = View{};
-    Scene edges = mode; // the same render with the mesh's edges over it: where they differ, an edge crosses
-    edges.overlay = Overlay::Wireframe;
-    t.edges.fit(width, height, ColorFormat::Rgba32F, depthFormatFor(scene.depth));
-    t.edges.bind();
-    renderer_.renderScene(edges, width, height, 0);
-
-    figures_ = ViewFigures{};
-    const int row = profileRow(scene, height);
-    figures_.row = row;
-    const int glRow = height - 1 - row;
-    const std::vector<float> m = t.mode.readFloatRow(glRow), e = t.exact.readFloatRow(glRow),
-                             w = t.edges.readFloatRow(glRow);
-    figures_.modeRow.resize(std::size_t(width));
-    figures_.exactRow.resize(std::size_t(width));
-    for (int i = 0; i < width; ++i) {
-        const std::size_t k = std::size_t(i) * 4;
-        figures_.modeRow[std::size_t(i)] = (m[k] + m[k + 1] + m[k + 2]) / 3;
-        figures_.exactRow[std::size_t(i)] = (e[k] + e[k + 1] + e[k + 2]) / 3;
-        if (scene.shading != ShadingMode::Exact && m[k + 3] > 0.5f &&
-            (w[k] != m[k] || w[k + 1] != m[k + 1] || w[k + 2] != m[k + 2]))
-            figures_.edgeColumns.push_back(i);
-    }
-
-    // The picture itself, then the plot over a third of it (below the row, or above it when the row is in
-    // the lower half), the row marked across the picture.
-    glBindFramebuffer(GL_FRAMEBUFFER, destination);
-    renderer_.renderScene(mode, width, height, x);
-    glDisable(GL_DEPTH_TEST);
-    glViewport(x, 0, width, height);
-    glBindVertexArray(programs_->images.emptyVertexArray().get());
-    const int scale = textScale(width, height);
-    const int plotHeight = std::max(height / 3, 24);
-    const int plotTop = row < height / 2 ? height - plotHeight : 0;
-    Image plot(width, plotHeight);
-    fillRect(plot, 0, 0, width, plotHeight, kLabelBox);
-    const int margin = 3 * scale, textHeight = textLineHeight(scale);
-    const int y0 = plotHeight - margin - 4 * scale, y1 = std::min(margin + textHeight, y0); // intensity 0, 1
-    auto yOf = [&](float v) { return int(std::lround(y0 + (y1 - y0) * std::clamp(double(v), 0.0, 1.0))); };
-    for (int column : figures_.edgeColumns) drawLine(plot, column, y0 + 1, column, y0 + 4 * scale, kEdgeTick);
-    for (int i = 1; i < width; ++i) {
-        const std::size_t a = std::size_t(i - 1), b = std::size_t(i);
-        drawLine(plot, i - 1, yOf(figures_.exactRow[a]), i, yOf(figures_.exactRow[b]), kExactCurve);
-        drawLine(plot, i - 1, yOf(figures_.modeRow[a]), i, yOf(figures_.modeRow[b]), kModeCurve);
-    }
-    // The key: each name in its curve's colour.
-    int textX = margin;
-    for (const auto& [word, colour] :
-         {std::pair{"ROW " + std::to_string(row), kLabelText},
-          std::pair{upperAscii(toString(scene.shading)), kModeCurve},
-          std::pair{std::string("EXACT"), kExactCurve}, std::pair{std::string("EDGES"), kEdgeTick}}) {
-        drawText(plot, textX, margin, word, scale, colour);
-        textX += textWidth(word + "  ", scale);
-    }
-    programs_->images.draw(plot, 0, plotTop, x, width, height);
-    Image marker(width, 1);
-    for (int i = 0; i < width; ++i)
-        fillRect(marker, i, 0, 1, 1, (i / 4) % 2 ? glm::u8vec4(255, 230, 0, 255) : glm::u8vec4(0, 0, 0, 0));
-    programs_->images.draw(marker, 0, row, x, width, height);
+    const auto sprite = [&](KeyedSprite<detail::SideFacts>& label, const Scene& side,
+                            const SplitSide& split) -> const Sprite& {
+        const detail::SideFacts facts = sideFacts(side, split, scale);
+        return label.update(facts, [&] { return labelImage({sideWords(facts)}, scale); });
+    };
+    const Sprite& leftLabel = sprite(labels_->left, left, scene.view.left);
+    const Sprite& rightLabel = sprite(labels_->right, right, scene.view.right);
+    programs_->images.draw(leftLabel, std::max(0, divider - leftLabel.width() - 4 * scale), 4 * scale, x,
+                           width, height);
+    programs_->images.draw(rightLabel, std::min(divider + 4 * scale, std::max(0, width - rightLabel.width())),
+                           4 * scale, x, width, height);
     glEnable(GL_DEPTH_TEST);
 }
 

@@ -1,23 +1,34 @@
-// What the teaching views' two files share (views.cpp: the dispatch, error, split and profile views;
-// views_observed.cpp: the outside and NDC views): the GL objects they draw with and the labels' layout.
+// What the teaching views' three files share (views.cpp: the dispatch, the error and split views;
+// views_profile.cpp: the profile; views_observed.cpp: the outside and NDC views): the GL objects they
+// draw with, the labels' layout and the sprites that keep each label until what it shows changes.
 #pragma once
 
+#include <optional>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "shadelab/gl/render_target.h"
 #include "shadelab/gl/screen_pass.h"
 #include "shadelab/gl/views.h"
 #include "shadelab/image/image.h"
+#include "shadelab/scene/outside_view.h"
 
 namespace shadelab::gl {
 
 struct Views::Targets {
     RenderTarget mode, exact, edges, error; // RGBA32F: unrounded colours, sampled and read back
     std::vector<RenderTarget> reduce;
+    // The scenes drawn into them, and the split view's sides: assigned every frame into the same storage,
+    // so that an unchanged view's frame allocates nothing.
+    Scene modeScene, exactScene, leftScene, rightScene;
 };
 
 namespace detail {
+inline constexpr glm::u8vec4 kLabelText{240, 240, 240, 255};
+inline constexpr glm::u8vec4 kLabelBox{0, 0, 0, 170}; // translucent: the picture shows through
+
 // The error view's passes (shaders/error, reduce and heatmap.frag.glsl), their samplers' units set once.
 struct ErrorPass : ScreenPass {
     ErrorPass() : ScreenPass("error.frag.glsl") {
@@ -45,6 +56,49 @@ struct Views::Programs {
     detail::ReducePass reduce;
     detail::HeatmapPass heatmap;
     ImagePass images;
+};
+
+namespace detail {
+// What the views' labels and plots show: the keys of their sprites (gl/screen_pass.h).
+struct ErrorFigures {
+    ShadingMode shading;
+    int level; // -1: exact shading, no level
+    double mean, max;
+    int scale;
+    bool operator==(const ErrorFigures&) const = default;
+};
+struct SideFacts { // one side of the split view
+    SplitSide side;
+    ShadingMode shading;
+    LightingModel lighting;
+    int level; // -1: exact shading, no level
+    int scale;
+    bool operator==(const SideFacts&) const = default;
+};
+struct ProfilePlot {
+    int row, width, height, scale;
+    ShadingMode shading;
+    std::vector<float> modeRow, exactRow;
+    std::vector<int> edgeColumns;
+    bool operator==(const ProfilePlot&) const = default;
+};
+} // namespace detail
+
+// The views' labels and plots as sprites, each keyed by the values it shows: a frame that shows the same
+// figures, sides and titles as the last builds no text and uploads nothing.
+struct Views::Labels {
+    KeyedSprite<detail::ErrorFigures> errorFigures;
+    KeyedSprite<glm::dvec2> legendTop; // (the heatmap's top in 1/255, text scale)
+    KeyedSprite<int> legendBottom;     // "0", at a text scale
+    KeyedSprite<detail::SideFacts> left, right;
+    KeyedSprite<detail::ProfilePlot> profilePlot;
+    KeyedSprite<int> profileMarker; // its width
+    // The outside and NDC views: the title (a literal), the drawing of the last scene and its labels.
+    KeyedSprite<std::pair<std::string_view, int>> title;
+    std::optional<Scene> drawnScene; // what `drawing` was made for (nullopt with a drawing: the NDC cube)
+    std::optional<OutsideDrawing> drawing;
+    // One per label of `drawing`, keyed by a view of its text: cleared whenever the drawing is made again.
+    std::vector<KeyedSprite<std::pair<std::string_view, int>>> observed;
 };
 
 } // namespace shadelab::gl

@@ -21,19 +21,28 @@ void Views::drawOutside(const Scene& scene, int width, int height, int x) {
     const Scene sized = atSize(scene, width, height);
     const Scene observer = observerScene(sized);
     renderer_.renderScene(observer, width, height, x);
-    drawObserved(outsideDrawing(sized), observer,
+    // The drawing is in world space: made again only for another scene, not as the observer orbits.
+    Labels& l = *labels_;
+    if (!l.drawing || !l.drawnScene || !(*l.drawnScene == sized)) {
+        l.observed.clear();
+        l.drawing = outsideDrawing(sized);
+        l.drawnScene = sized;
+    }
+    drawObserved(*l.drawing, observer,
                  leavesOutTheMinusOne(scene) ? "OUTSIDE VIEW, UNNEGATED MATRIX" : "OUTSIDE VIEW", width,
                  height, x);
 }
 
-void Views::drawObserved(const OutsideDrawing& drawing, const Scene& observer, const std::string& title,
+void Views::drawObserved(const OutsideDrawing& drawing, const Scene& observer, std::string_view title,
                          int width, int height, int x) {
     renderer_.drawWorld(observer, {}, drawing.faces, kFaceAlpha, width, height, x);
     // The labels, then the lines over them, so that no label hides a corner of the view volume.
     drawLabels(drawing.labels, observer, width, height, x);
     const int scale = textScale(width, height);
-    programs_->images.draw(labelImage({title, "DRAG: OBSERVER  WHEEL: ZOOM"}, scale), scale * 4, scale * 4, x,
-                           width, height);
+    const Sprite& titleLabel = labels_->title.update(std::pair{title, scale}, [&] {
+        return labelImage({std::string(title), "DRAG: OBSERVER  WHEEL: ZOOM"}, scale);
+    });
+    programs_->images.draw(titleLabel, scale * 4, scale * 4, x, width, height);
     renderer_.drawWorld(observer, drawing.lines, {}, kFaceAlpha, width, height, x);
     glEnable(GL_DEPTH_TEST);
 }
@@ -47,16 +56,20 @@ void Views::drawLabels(const std::vector<OutsideLabel>& labels, const Scene& obs
     const Scene sized = atSize(observer, width, height);
     const SceneView view = sceneView(sized);
     const glm::dmat4 clipFromWorld = view.clipFromView * view.viewFromWorld;
-    for (const OutsideLabel& label : labels) {
+    if (labels_->observed.size() < labels.size()) labels_->observed.resize(labels.size());
+    for (std::size_t i = 0; i < labels.size(); ++i) {
+        const OutsideLabel& label = labels[i];
         const glm::dvec4 clip = clipFromWorld * glm::dvec4(label.positionWorld, 1);
         if (!(clip.w > 0)) continue;
         const double px = (clip.x / clip.w + 1) / 2 * width, py = (1 - clip.y / clip.w) / 2 * height;
         if (!(px >= 0 && px < width && py >= 0 && py < height)) continue;
-        const Image image = labelImage({label.text}, scale);
-        const int left = label.leftOfPoint ? int(px) - 3 * scale - image.width : int(px) + 3 * scale;
-        programs_->images.draw(image, std::clamp(left, 0, std::max(0, width - image.width)),
-                               std::clamp(int(py) - image.height / 2, 0, std::max(0, height - image.height)),
-                               x, width, height);
+        const Sprite& image = labels_->observed[i].update(std::pair{std::string_view(label.text), scale},
+                                                          [&] { return labelImage({label.text}, scale); });
+        const int left = label.leftOfPoint ? int(px) - 3 * scale - image.width() : int(px) + 3 * scale;
+        programs_->images.draw(
+            image, std::clamp(left, 0, std::max(0, width - image.width())),
+            std::clamp(int(py) - image.height() / 2, 0, std::max(0, height - image.height())), x, width,
+            height);
     }
 }
 
@@ -75,10 +88,17 @@ void Views::drawNdc(const Scene& scene, int width, int height, int x) {
         throw;
     }
     renderer_.setNdcObserver(std::nullopt);
-    const std::string projection =
-        scene.projection.type == ProjectionType::Orthographic ? "M_ORTH" : "M_PROJ";
-    drawObserved(ndcCubeDrawing(), observer, "NDC VIEW: AFTER " + projection + " M_CAM AND THE DIVIDE", width,
-                 height, x);
+    Labels& l = *labels_;
+    if (!l.drawing || l.drawnScene) {
+        l.observed.clear();
+        l.drawing = ndcCubeDrawing();
+        l.drawnScene.reset();
+    }
+    drawObserved(*l.drawing, observer,
+                 scene.projection.type == ProjectionType::Orthographic
+                     ? "NDC VIEW: AFTER M_ORTH M_CAM AND THE DIVIDE"
+                     : "NDC VIEW: AFTER M_PROJ M_CAM AND THE DIVIDE",
+                 width, height, x);
 }
 
 } // namespace shadelab::gl

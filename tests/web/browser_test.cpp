@@ -839,7 +839,7 @@ TEST_F(Browser, PresentationLabelShowsAndF2HidesIt) {
     if (!session.run(dir_)) return;
     const std::string label = session.answer(ui).at("ui").at("presentation");
     EXPECT_TRUE(label.starts_with("PHONG SHADING\nBLINN-PHONG LIGHTING\nLEVEL 3")) << label;
-    // The label is drawn into the picture by the same code as the window's (drawDemo with
+    // The label is drawn into the picture by the same code as the window's (FramedPicture with
     // presentationLabelImage), so the page shows it where and as large as that layout says: the pixels
     // that F2 changes are those of the label's box at the bottom left of the picture (the scene's framing
     // in the canvas, between bars), and most of the box.

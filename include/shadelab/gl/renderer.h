@@ -2,7 +2,6 @@
 // Scene into whatever framebuffer is bound. Programs and meshes are built on first use and cached.
 #pragma once
 
-#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -47,6 +46,8 @@ public:
     // A CPU-made image (a label) blended over what render() drew into the viewport (x, 0, width, height),
     // its top left corner at (left, top) pixels from the viewport's top left.
     void drawImageOver(const Image& image, int left, int top, int width, int height, int x = 0);
+    // The same for an image kept as a texture (gl/screen_pass.h), uploaded only when it changes.
+    void drawSpriteOver(const Sprite& sprite, int left, int top, int width, int height, int x = 0);
     void drawLinesOver(const Scene& scene, std::span<const LineVertex> linesView, int width, int height,
                        int x = 0);
     // World-space triangles and lines (GL_LINES pairs), depth-tested against what scene's render left in
@@ -88,13 +89,11 @@ private:
         std::vector<const GpuMesh*> meshes;          // one per object (none in exact shading)
     };
     const DrawPlan& drawPlan(const Scene& sized, const ProgramVariant& variant);
-    // Binds the program that draws the object of that index, with the frame's and the object's uniforms
-    // set; returns where the program keeps the rest.
-    using ObjectProgram = std::function<const SurfaceLocations&(std::size_t index)>;
-    using FrameUniforms = std::function<void(const SurfaceLocations&)>;
+    // Binds, for a frame, the program that draws each object (renderer.cpp).
+    class ObjectBinder;
     void drawMeshes(const Scene& sized, const SceneView& view, const ProgramVariant& variant,
-                    const DrawPlan& plan, const ObjectProgram& objectProgram);
-    void drawExact(const Scene& sized, const SceneView& view, const ObjectProgram& objectProgram, int x);
+                    const DrawPlan& plan, ObjectBinder& bind);
+    void drawExact(const Scene& sized, const SceneView& view, ObjectBinder& bind, int x);
 
     Specialization specialization_ = Specialization::Values;
     bool flatGeometryShader_ = false;
@@ -110,6 +109,10 @@ private:
     std::optional<glm::dmat4> ndcObserver_;
     std::unique_ptr<Views> views_;
     std::vector<DrawPlan> plans_; // drawPlan's, the latest first
+    // renderScene's scene at the viewport's size and its lights in view space, assigned every frame into
+    // the same storage: an unchanged scene's frame allocates nothing.
+    Scene sized_;
+    std::vector<Light> lightsView_;
 };
 
 } // namespace shadelab::gl

@@ -8,6 +8,7 @@
 #include "shadelab/gl/handles.h"
 #include "shadelab/gl/render_target.h"
 #include "shadelab/image/image.h"
+#include "shadelab/last_key.h"
 
 namespace shadelab::gl {
 
@@ -28,16 +29,48 @@ struct ScreenPass {
 
 void bindTexture(int unit, const Texture& texture);
 
+// An image made on the CPU from a few values (a label's words and figures, a lesson step's band), kept as
+// a texture. update() makes it, and uploads it, only when those values (its key) differ from the last
+// ones: a frame that shows the same values builds no text and uploads nothing.
+class Sprite {
+public:
+    int width() const { return width_; }
+    int height() const { return height_; }
+    const Texture& texture() const { return texture_; }
+    // Uploads `image` (rows from the top) as the sprite's texture.
+    void set(const Image& image);
+
+private:
+    Texture texture_{NoCreate}; // made at the first set(): a sprite can be declared before a context exists
+    int width_ = 0, height_ = 0;
+};
+
+template <class Key> class KeyedSprite : public Sprite {
+public:
+    // `make()` (returning an Image) is called only when `key` differs from the last update's.
+    template <class Make> const KeyedSprite& update(const Key& key, Make&& make) {
+        if (last_.changed(key)) set(make());
+        return *this;
+    }
+
+private:
+    LastKey<Key> last_;
+};
+
 // Draws RGBA8 images made on the CPU into the picture, blended by their alpha (the picture's own alpha,
 // its coverage, is kept).
 class ImagePass {
 public:
     ImagePass();
-    // `image` with its top left corner at (left, top) of the viewport (x, 0, width, height), rows from the
-    // top.
+    // The sprite with its top left corner at (left, top) of the viewport (x, 0, width, height), rows from
+    // the top.
+    void draw(const Sprite& sprite, int left, int top, int viewportX, int viewportWidth,
+              int viewportHeight) const;
+    // An image that changes from frame to frame (the profile's plot), uploaded at every draw.
     void draw(const Image& image, int left, int top, int viewportX, int viewportWidth,
               int viewportHeight) const;
     const VertexArray& emptyVertexArray() const { return empty_; }
+    Sprite& scratch() const { return scratch_; } // draw(Image)'s texture
 
 private:
     struct SpritePass : ScreenPass {
@@ -46,7 +79,7 @@ private:
     };
     SpritePass sprite_;
     VertexArray empty_;
-    Texture texture_;
+    mutable Sprite scratch_; // draw(Image)'s
 };
 
 } // namespace shadelab::gl

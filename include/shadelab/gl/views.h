@@ -5,6 +5,7 @@
 #pragma once
 
 #include <memory>
+#include <string_view>
 #include <vector>
 
 #include "shadelab/gl/handles.h"
@@ -45,6 +46,7 @@ public:
 private:
     struct Targets;
     struct Programs;
+    struct Labels;
     void drawError(const Scene& scene, int width, int height, int x, unsigned destination);
     void drawSplit(const Scene& scene, int width, int height, int x);
     void drawProfile(const Scene& scene, int width, int height, int x, unsigned destination);
@@ -52,8 +54,8 @@ private:
     void drawNdc(const Scene& scene, int width, int height, int x);
     // What the outside and NDC views draw over the observer's render of the objects: the translucent faces,
     // the labels and the title (`title` and the drag hint), then the lines over them.
-    void drawObserved(const OutsideDrawing& drawing, const Scene& observer, const std::string& title,
-                      int width, int height, int x);
+    void drawObserved(const OutsideDrawing& drawing, const Scene& observer, std::string_view title, int width,
+                      int height, int x);
     // Each label beside the point it names, where the observer's camera puts that point in the picture.
     void drawLabels(const std::vector<OutsideLabel>& labels, const Scene& observer, int width, int height,
                     int x);
@@ -62,11 +64,13 @@ private:
     Renderer& renderer_;
     std::unique_ptr<Targets> targets_;
     std::unique_ptr<Programs> programs_;
+    std::unique_ptr<Labels> labels_;
     ViewFigures figures_;
 };
 
 // The scene one side of a split view draws: the scene with the side's shading, lighting and level.
 Scene splitSideScene(const Scene& scene, const SplitSide& side);
+void assignSplitSide(Scene& out, const Scene& scene, const SplitSide& side); // into out's storage
 // The profile's row, from the top: view.at of the height, or the row through the first object's centre
 // (the middle row without objects or with the centre outside the picture).
 int profileRow(const Scene& scene, int height);

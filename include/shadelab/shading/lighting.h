@@ -82,6 +82,7 @@ struct SurfacePoint {
     glm::dvec3 position;
     glm::dvec3 normal;
     glm::dvec3 toViewer;
+    bool operator==(const SurfacePoint&) const = default;
 };
 
 struct ShadeOptions {
@@ -98,6 +99,7 @@ struct LightTerms {
     glm::dvec3 ambient{0.0}, diffuse{0.0}, specular{0.0};
     glm::dvec3 total() const { return ambient + diffuse + specular; }
     glm::dvec3 of(LightingTerm term) const; // one term, or total() for All
+    bool operator==(const LightTerms&) const = default;
 };
 LightTerms shadeTerms(const SurfacePoint& point, const Material& material, std::span<const Light> lights,
                       ShadeOptions options);

@@ -20,6 +20,7 @@ namespace shadelab {
 struct ProbePoint {
     std::size_t object = 0;
     glm::dvec3 directionObject{0, 0, 1};
+    bool operator==(const ProbePoint&) const = default;
 };
 
 // The surface point that pixel position (x, y) of the scene's image sees (pixel (i, j)'s centre is
@@ -37,6 +38,7 @@ struct ProbeSample {
     glm::dvec3 color; // what reaches the pixel: clamped (Gouraud: the clamped vertex colours interpolated)
     // For the first light that is not ambient: l, and r (Phong lighting) or h (Blinn-Phong); 0 without one.
     glm::dvec3 toLight{0.0}, specularVector{0.0};
+    bool operator==(const ProbeSample&) const = default;
 };
 
 struct ProbeReport {
@@ -46,6 +48,7 @@ struct ProbeReport {
     glm::dvec3 barycentric{0.0}; // of the mesh point in that triangle
     int light = -1;              // the light whose l and r/h are given, −1 for none
     ProbeSample mode, exact;
+    bool operator==(const ProbeReport&) const = default;
 };
 
 // `mesh` is the object's mesh at its drawn level (subdivisionLevel) with the scene's vertex normals.

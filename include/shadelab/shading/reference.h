@@ -22,8 +22,11 @@ ReferenceImage renderReference(const Scene& scene);
 // The scene a picture's error is measured against: the scene with normals by (M⁻¹)ᵀ, the truth, whatever
 // its rule. The error, split and profile views' exact and `shadelab report` use it, so with normals by M
 // they show what the wrong matrix costs (DESIGN §2).
-inline Scene withTrueNormals(Scene scene) {
+inline void setTrueNormals(Scene& scene) {
     scene.normalMatrix = NormalMatrixRule::InverseTranspose;
+}
+inline Scene withTrueNormals(Scene scene) {
+    setTrueNormals(scene);
     return scene;
 }
 

@@ -31,10 +31,17 @@ std::string viewReport(const Scene& scene, const gl::ViewFigures& figures) {
     return "";
 }
 
-void drawDemo(gl::Renderer& renderer, DemoState& state, int width, int height, int x) {
+void FramedPicture::drawPicture(gl::Renderer& renderer, DemoState& state, int width, int height) {
     const Scene scene = state.drawn();
-    renderer.render(scene, width, height, x);
-    state.viewReport = viewReport(scene, renderer.viewFigures());
+    renderer.render(scene, width, height);
+    const gl::ViewFigures& figures = renderer.viewFigures();
+    const ReportFacts reported{scene.view,
+                               figures.interiorMean,
+                               figures.interiorMax,
+                               figures.interiorPixels,
+                               figures.edgeColumns.size(),
+                               figures.row};
+    if (reported_.changed(reported)) state.viewReport = viewReport(scene, figures);
     const auto probe = state.probe();
     // Behind the object the probe's table says so instead; and the vectors are in the camera's view, which
     // the outside and NDC views do not draw.
@@ -44,7 +51,7 @@ void drawDemo(gl::Renderer& renderer, DemoState& state, int width, int height, i
         const double length =
             0.6 * object.radius *
             std::max({std::abs(object.scale.x), std::abs(object.scale.y), std::abs(object.scale.z)});
-        renderer.drawLinesOver(scene, probeLines(*probe, length), width, height, x);
+        renderer.drawLinesOver(scene, probeLines(*probe, length), width, height);
     }
     // Presentation mode, on top of everything: in a lesson the step's band across the bottom — the picture
     // is then what `shadelab slides` makes of the step at this size — otherwise the label over the bottom
@@ -52,13 +59,19 @@ void drawDemo(gl::Renderer& renderer, DemoState& state, int width, int height, i
     if (!state.presenting) return;
     if (const Lesson* lesson = state.lesson()) {
         const LessonStep& step = lesson->steps[state.step()];
-        const Image band = lessonBandImage(step.title, step.caption, width, height);
-        renderer.drawImageOver(band, 0, height - band.height, width, height, x);
+        const gl::Sprite& band =
+            band_.update(BandKey{state.sharedLesson(), state.step(), width, height},
+                         [&] { return lessonBandImage(step.title, step.caption, width, height); });
+        renderer.drawSpriteOver(band, 0, height - band.height(), width, height);
         return;
     }
-    const PresentationLabelImage label = presentationLabelImage(presentationLabel(state), width, height);
-    renderer.drawImageOver(label.image, label.margin, height - label.margin - label.image.height, width,
-                           height, x);
+    const PresentationFacts facts = presentationFacts(state, scene);
+    const gl::Sprite& label = label_.update(std::tuple{facts, width, height}, [&] {
+        PresentationLabelImage made = presentationLabelImage(presentationLabel(facts), width, height);
+        labelMargin_ = made.margin;
+        return std::move(made.image);
+    });
+    renderer.drawSpriteOver(label, labelMargin_, height - labelMargin_ - label.height(), width, height);
 }
 
 void FramedPicture::draw(gl::Renderer& renderer, DemoState& state, const PictureRect& picture,
@@ -70,7 +83,7 @@ void FramedPicture::draw(gl::Renderer& renderer, DemoState& state, const Picture
         target_.fit(picture.width, picture.height, gl::ColorFormat::Rgba8,
                     gl::depthFormatFor(state.scene().depth)); // the depth drawn() keeps
         target_.bind();
-        drawDemo(renderer, state, picture.width, picture.height);
+        drawPicture(renderer, state, picture.width, picture.height);
         // GL counts rows up from the bottom; the picture's place is measured from the top.
         target_.blitToWindow(picture.x, framebufferHeight - picture.y - picture.height);
     } catch (...) {

@@ -164,6 +164,7 @@ public:
     // through it; R returns to the step as written; every other key works inside the step.
     void openLesson(std::shared_ptr<const Lesson> lesson, std::size_t index = 0);
     const Lesson* lesson() const { return lesson_.get(); }
+    const std::shared_ptr<const Lesson>& sharedLesson() const { return lesson_; }
     std::size_t step() const { return step_; }
     // "step 3 of 15: The view volume"; "" without a lesson.
     std::string stepName() const;
@@ -201,7 +202,7 @@ public:
     // a scene file could not hold (near >= far, fovy outside (0, 180), left == right...).
     void editViewVolume(const Projection& edited);
     // What the last drawn view measured, in words ("error: interior mean 2.54/255, max 98.5/255"), set by
-    // drawDemo; "" for the plain scene.
+    // FramedPicture::draw (demo_draw.h); "" for the plain scene.
     std::string viewReport;
     // The level drawn (of the first object): its own, or what "auto" chose for the drawn view.
     int level() const;
@@ -259,6 +260,18 @@ std::string statusText(const DemoState& state);
 // LIGHTING" and "LEVEL 5 | BETA = 96" on three lines (ALPHA under Phong lighting; the first object's
 // exponent; RAY-CAST instead of the level in exact mode). ASCII, upper case, as it has always read.
 std::string presentationLabel(const DemoState& state);
+// What the label says, as values: the window remakes its label only when these change.
+struct PresentationFacts {
+    ShadingMode shading = ShadingMode::Phong;
+    bool normalsByM = false, unnegated = false;
+    LightingModel lighting = LightingModel::BlinnPhong;
+    LightingTerm term = LightingTerm::All;
+    int level = 0;
+    std::optional<double> shininess; // the first object's; none without objects
+    bool operator==(const PresentationFacts&) const = default;
+};
+PresentationFacts presentationFacts(const DemoState& state, const Scene& drawn); // drawn: state.drawn()
+std::string presentationLabel(const PresentationFacts& facts);
 // The label as the window and the page both draw it over the bottom left of a picture of width × height:
 // DejaVu Sans Mono Bold on a translucent dark box, its lines as tall as a twelfth of the picture's height
 // (55 px at 720) or smaller where the widest line would not fit the width, so it is never clipped; the

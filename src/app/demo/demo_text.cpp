@@ -123,25 +123,38 @@ std::string probeText(const DemoState& state) {
     return probeText(*probe, shown.shading, shown.lighting);
 }
 
-std::string presentationLabel(const DemoState& state) {
-    const Scene scene = state.drawn();
+PresentationFacts presentationFacts(const DemoState& state, const Scene& drawn) {
+    PresentationFacts facts;
+    facts.shading = drawn.shading;
+    facts.normalsByM = drawn.normalMatrix == NormalMatrixRule::Model;
+    facts.unnegated = leavesOutTheMinusOne(drawn);
+    facts.lighting = drawn.lighting;
+    facts.term = drawn.term;
+    facts.level = drawn.shading == ShadingMode::Exact ? 0 : state.level();
+    if (!drawn.objects.empty()) facts.shininess = drawn.objects[0].material.shininess;
+    return facts;
+}
+
+std::string presentationLabel(const PresentationFacts& facts) {
     // Three short lines rather than two long ones: the label's letters can be larger in the same width.
-    std::string label = std::string(toString(scene.shading)) + " shading" +
-                        (scene.normalMatrix == NormalMatrixRule::Model ? ", normals by M" : "") +
-                        (leavesOutTheMinusOne(scene) ? ", unnegated: w < 0, all clipped" : "") + "\n" +
-                        std::string(toString(scene.lighting)) + " lighting" +
-                        (scene.term == LightingTerm::All ? "" : ", " + std::string(toString(scene.term))) +
-                        "\n" +
-                        (scene.shading == ShadingMode::Exact ? std::string("ray-cast")
-                                                             : "level " + std::to_string(state.level()));
-    if (!scene.objects.empty()) {
+    std::string label =
+        std::string(toString(facts.shading)) + " shading" + (facts.normalsByM ? ", normals by M" : "") +
+        (facts.unnegated ? ", unnegated: w < 0, all clipped" : "") + "\n" +
+        std::string(toString(facts.lighting)) + " lighting" +
+        (facts.term == LightingTerm::All ? "" : ", " + std::string(toString(facts.term))) + "\n" +
+        (facts.shading == ShadingMode::Exact ? std::string("ray-cast")
+                                             : "level " + std::to_string(facts.level));
+    if (facts.shininess) {
         char exponent[48];
         std::snprintf(exponent, sizeof exponent, " | %s = %g",
-                      scene.lighting == LightingModel::BlinnPhong ? "beta" : "alpha",
-                      scene.objects[0].material.shininess);
+                      facts.lighting == LightingModel::BlinnPhong ? "beta" : "alpha", *facts.shininess);
         label += exponent;
     }
     return upperAscii(label);
+}
+
+std::string presentationLabel(const DemoState& state) {
+    return presentationLabel(presentationFacts(state, state.drawn()));
 }
 
 PresentationLabelImage presentationLabelImage(const std::string& label, int width, int height) {

@@ -114,31 +114,38 @@ public:
         if (options.glDebug && !gl::enableDebugOutput(&debugSink_))
             std::fprintf(stderr,
                          "shadelab: --gl-debug: the context has no KHR_debug; no GL messages will show\n");
-        window_.onKeyPress([this](int key) { onKey(key); });
+        window_.onKeyPress([this](int key) {
+            inputCame();
+            onKey(key);
+        });
         window_.onDrag([this](double dx, double dy) {
+            inputCame();
             if (!panel_.wantsMouse()) state_.drag(dx, dy);
         });
         window_.onRightDrag([this](double dx, double dy) {
+            inputCame();
             if (!panel_.wantsMouse()) state_.dragLight(dx, dy);
         });
-        window_.onClick([this](double x, double y) { onClick(x, y); });
+        window_.onClick([this](double x, double y) {
+            inputCame();
+            onClick(x, y);
+        });
         window_.onPointer([this](double x, double y, bool leftHeld) {
+            inputCame();
             if (panel_.wantsMouse()) return;
             const PictureRect picture = pictureRect();
             state_.pointer(x - picture.x, y - picture.y, leftHeld);
         });
         window_.onScroll([this](double steps) {
+            inputCame();
             if (!panel_.wantsMouse()) state_.zoom(steps);
         });
     }
 
     int run() {
-        std::string shownTitle;
         while (!window_.shouldClose()) {
             const auto start = Clock::now();
-            drawFrame();
-            const std::string now = windowTitle(state_, timer_.ms());
-            if (now != shownTitle) window_.setTitle(shownTitle = now);
+            drawFrame(start);
             window_.swapBuffers();
             window_.waitEvents(0.001);
             std::this_thread::sleep_until(start + kFramePeriod);
@@ -169,15 +176,30 @@ private:
         return rect;
     }
 
-    void drawFrame() {
+    void drawFrame(Clock::time_point now) {
         int width = 0, height = 0;
         window_.framebufferSize(width, height);
         if (width <= 0 || height <= 0) return; // minimized: nothing to draw, no NaN aspect
         drawPicture(pictureRect(width, height), width, height);
+        remakeTexts(now);
         insidePanel_ = true;
-        panel_.draw(state_, statusText(state_), panelColumnWidth(width, state_.showPanel, uiScale_));
+        panel_.draw(state_, status_, panelColumnWidth(width, state_.showPanel, uiScale_));
         insidePanel_ = false;
     }
+
+    // The title (what is drawn, and the frame time) and the panel's status lines are made again in the two
+    // frames after any input — the first draws what a key or the mouse changed, the second what the panel
+    // changed while drawing the first — and twice a second for the time and for what changes without input
+    // (a resized window's auto level); not every frame.
+    void remakeTexts(Clock::time_point now) {
+        if (textFramesDue_ == 0 && now < nextTexts_) return;
+        textFramesDue_ = std::max(0, textFramesDue_ - 1);
+        nextTexts_ = now + std::chrono::milliseconds(500);
+        status_ = statusText(state_);
+        std::string title = windowTitle(state_, timer_.ms());
+        if (title != shownTitle_) window_.setTitle(shownTitle_ = std::move(title));
+    }
+    void inputCame() { textFramesDue_ = 2; }
 
     // The bars and the picture (FramedPicture: drawn as `render` draws, copied into its place). A target
     // that cannot be made (a huge window under a memory limit) is said once and the bars stay; the demo
@@ -333,7 +355,10 @@ private:
     Panel panel_;
     gl::Renderer renderer_; // after the window: its GL objects go while the context lives
     FramedPicture picture_;
-    std::string pictureError_; // the last reason the picture could not be drawn, said once
+    std::string pictureError_;        // the last reason the picture could not be drawn, said once
+    std::string status_, shownTitle_; // remakeTexts'
+    int textFramesDue_ = 2;           // frames whose texts are to be made again (the first two)
+    Clock::time_point nextTexts_;
     FrameTimer timer_;
     int screenshots_ = 0;
 };

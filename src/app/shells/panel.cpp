@@ -1,6 +1,7 @@
 #include "app/shells/panel.h"
 
 #include <algorithm>
+#include <string_view>
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -46,8 +47,9 @@ bool materialControls(Material& m) {
 
 void lightControls(Light& light, int index) {
     ImGui::PushID(index);
-    if (ImGui::TreeNodeEx("light", ImGuiTreeNodeFlags_DefaultOpen, "light %d: %s", index + 1,
-                          std::string(toString(light.type)).c_str())) {
+    const std::string_view type = toString(light.type);
+    if (ImGui::TreeNodeEx("light", ImGuiTreeNodeFlags_DefaultOpen, "light %d: %.*s", index + 1,
+                          int(type.size()), type.data())) {
         if (light.type == LightType::Point || light.type == LightType::Spot)
             dragVec3("position", light.position, 0.05f);
         if (light.type == LightType::Directional || light.type == LightType::Spot) {
@@ -112,11 +114,6 @@ void viewVolumeControls(DemoState& state, std::string& refusal) {
         }
     }
     if (!refusal.empty()) ImGui::TextColored({1.0f, 0.5f, 0.4f, 1.0f}, "%s", refusal.c_str());
-}
-
-// e, u, v, w, M_cam, the projection matrix, and the shown object's M and normal matrix, live.
-void matricesControls(const DemoState& state) {
-    ImGui::TextUnformatted(matricesPanelText(state.drawn(), state.shownObject()).c_str());
 }
 
 } // namespace
@@ -218,12 +215,20 @@ void Panel::draw(DemoState& state, const std::string& status, int columnWidth) {
         }
         if (ImGui::CollapsingHeader("view volume (fovy or l r b t, near, far)"))
             viewVolumeControls(state, volumeRefusal_);
-        if (ImGui::CollapsingHeader("matrices (e u v w, M_cam, M_proj, M, N)")) matricesControls(state);
+        // e, u, v, w, M_cam, the projection matrix, and the shown object's M and normal matrix, live.
+        if (ImGui::CollapsingHeader("matrices (e u v w, M_cam, M_proj, M, N)")) {
+            if (matricesFor_.changed({state.drawn(), state.shownObject()}))
+                matricesText_ = matricesPanelText(state.drawn(), state.shownObject());
+            ImGui::TextUnformatted(matricesText_.c_str());
+        }
         if (ImGui::CollapsingHeader("lights"))
             for (std::size_t i = 0; i < scene.lights.size(); ++i) lightControls(scene.lights[i], int(i));
         if (ImGui::CollapsingHeader("probe (click the sphere)", ImGuiTreeNodeFlags_DefaultOpen)) {
-            if (const std::string text = probeText(state); !text.empty()) {
-                ImGui::TextUnformatted(text.c_str());
+            const Scene drawn = state.drawn();
+            if (probeFor_.changed({state.probe(), drawn.shading, drawn.lighting}))
+                probeText_ = probeText(state);
+            if (!probeText_.empty()) {
+                ImGui::TextUnformatted(probeText_.c_str());
                 if (ImGui::Button("remove the probe")) state.clearProbe();
             } else {
                 ImGui::TextUnformatted(

@@ -1,10 +1,15 @@
 // The demo's control panel and help overlay, drawn with Dear ImGui (Debian's libimgui-dev) over the scene.
 #pragma once
 
+#include <cstddef>
+#include <optional>
 #include <string>
+#include <tuple>
+#include <utility>
 
 #include "app/demo/demo_state.h"
 #include "shadelab/gl/api.h"
+#include "shadelab/last_key.h"
 
 namespace shadelab {
 class Window;
@@ -32,6 +37,12 @@ public:
 private:
     Api api_;
     std::string volumeRefusal_; // why the last view-volume edit was refused, shown under its fields
+    // The matrices' and the probe's texts, made again only when the drawn scene, the shown object or the
+    // probe changes: a frame of an unchanged scene builds neither.
+    LastKey<std::pair<Scene, std::optional<std::size_t>>> matricesFor_;
+    std::string matricesText_;
+    LastKey<std::tuple<std::optional<ProbeReport>, ShadingMode, LightingModel>> probeFor_;
+    std::string probeText_;
 };
 
 } // namespace shadelab::app

@@ -1,0 +1,136 @@
+// The profile view (gl/views.h): the intensity along one row of the picture, the current mode's against
+// exact shading's, with the columns where a mesh edge crosses the row — where Gouraud's and flat's steps
+// and kinks come from.
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <glad/gl.h>
+
+#include "gl/views_internal.h"
+#include "shadelab/gl/renderer.h"
+#include "shadelab/image/image.h"
+#include "shadelab/io/text.h"
+
+namespace shadelab::gl {
+namespace {
+
+using detail::kLabelBox;
+using detail::kLabelText;
+using detail::textScale;
+
+constexpr glm::u8vec4 kModeCurve{255, 150, 40, 255};   // orange: the current mode
+constexpr glm::u8vec4 kExactCurve{255, 255, 255, 255}; // white: exact
+constexpr glm::u8vec4 kEdgeTick{80, 220, 255, 255};    // cyan: a mesh edge crosses the row
+
+// A straight line of pixels from (x0, y0) to (x1, y1) into the image (rows from the top).
+void drawLine(Image& image, int x0, int y0, int x1, int y1, glm::u8vec4 color) {
+    const int steps = std::max(std::abs(x1 - x0), std::abs(y1 - y0));
+    for (int i = 0; i <= steps; ++i) {
+        const double t = steps ? double(i) / steps : 0;
+        fillRect(image, int(std::lround(x0 + t * (x1 - x0))), int(std::lround(y0 + t * (y1 - y0))), 1, 1,
+                 color);
+    }
+}
+
+// The profile's plot: the mode's and exact shading's intensity along the row, the edge crossings as ticks
+// and a key, each name in its curve's colour.
+Image profilePlot(const detail::ProfilePlot& p) {
+    Image plot(p.width, p.height);
+    fillRect(plot, 0, 0, p.width, p.height, kLabelBox);
+    const int margin = 3 * p.scale, textHeight = textLineHeight(p.scale);
+    const int y0 = p.height - margin - 4 * p.scale, y1 = std::min(margin + textHeight, y0); // intensity 0, 1
+    auto yOf = [&](float v) { return int(std::lround(y0 + (y1 - y0) * std::clamp(double(v), 0.0, 1.0))); };
+    for (int column : p.edgeColumns) drawLine(plot, column, y0 + 1, column, y0 + 4 * p.scale, kEdgeTick);
+    for (int i = 1; i < p.width; ++i) {
+        const std::size_t a = std::size_t(i - 1), b = std::size_t(i);
+        drawLine(plot, i - 1, yOf(p.exactRow[a]), i, yOf(p.exactRow[b]), kExactCurve);
+        drawLine(plot, i - 1, yOf(p.modeRow[a]), i, yOf(p.modeRow[b]), kModeCurve);
+    }
+    int textX = margin;
+    for (const auto& [word, colour] :
+         {std::pair{"ROW " + std::to_string(p.row), kLabelText},
+          std::pair{upperAscii(toString(p.shading)), kModeCurve},
+          std::pair{std::string("EXACT"), kExactCurve}, std::pair{std::string("EDGES"), kEdgeTick}}) {
+        drawText(plot, textX, margin, word, p.scale, colour);
+        textX += textWidth(word + "  ", p.scale);
+    }
+    return plot;
+}
+
+} // namespace
+
+int profileRow(const Scene& scene, int height) {
+    if (scene.view.at) return std::clamp(int(*scene.view.at * height), 0, height - 1);
+    if (scene.objects.empty()) return height / 2;
+    Scene sized = scene;
+    sized.height = height;
+    const SceneView view = sceneView(sized);
+    const glm::dvec4 clip = view.clipFromView * view.viewFromWorld * glm::dvec4(scene.objects[0].center, 1);
+    if (!(clip.w > 0)) return height / 2;
+    const double yFromTop = (1 - clip.y / clip.w) / 2 * height;
+    if (!(yFromTop >= 0 && yFromTop < height)) return height / 2;
+    return int(yFromTop);
+}
+
+void Views::drawProfile(const Scene& scene, int width, int height, int x, unsigned destination) {
+    renderModeAndExact(scene, width, height);
+    Targets& t = *targets_;
+    Scene mode = scene;
+    mode.view = View{};
+    Scene edges = mode; // the same render with the mesh's edges over it: where they differ, an edge crosses
+    edges.overlay = Overlay::Wireframe;
+    t.edges.fit(width, height, ColorFormat::Rgba32F, depthFormatFor(scene.depth));
+    t.edges.bind();
+    renderer_.renderScene(edges, width, height, 0);
+
+    figures_ = ViewFigures{};
+    const int row = profileRow(scene, height);
+    figures_.row = row;
+    const int glRow = height - 1 - row;
+    const std::vector<float> m = t.mode.readFloatRow(glRow), e = t.exact.readFloatRow(glRow),
+                             w = t.edges.readFloatRow(glRow);
+    figures_.modeRow.resize(std::size_t(width));
+    figures_.exactRow.resize(std::size_t(width));
+    for (int i = 0; i < width; ++i) {
+        const std::size_t k = std::size_t(i) * 4;
+        figures_.modeRow[std::size_t(i)] = (m[k] + m[k + 1] + m[k + 2]) / 3;
+        figures_.exactRow[std::size_t(i)] = (e[k] + e[k + 1] + e[k + 2]) / 3;
+        if (scene.shading != ShadingMode::Exact && m[k + 3] > 0.5f &&
+            (w[k] != m[k] || w[k + 1] != m[k + 1] || w[k + 2] != m[k + 2]))
+            figures_.edgeColumns.push_back(i);
+    }
+
+    // The picture itself, then the plot over a third of it (below the row, or above it when the row is in
+    // the lower half), the row marked across the picture.
+    glBindFramebuffer(GL_FRAMEBUFFER, destination);
+    renderer_.renderScene(mode, width, height, x);
+    glDisable(GL_DEPTH_TEST);
+    glViewport(x, 0, width, height);
+    glBindVertexArray(programs_->images.emptyVertexArray().get());
+    const int scale = textScale(width, height);
+    const int plotHeight = std::max(height / 3, 24);
+    const int plotTop = row < height / 2 ? height - plotHeight : 0;
+    detail::ProfilePlot shown{row,
+                              width,
+                              plotHeight,
+                              scale,
+                              scene.shading,
+                              figures_.modeRow,
+                              figures_.exactRow,
+                              figures_.edgeColumns};
+    const Sprite& plot = labels_->profilePlot.update(shown, [&] { return profilePlot(shown); });
+    programs_->images.draw(plot, 0, plotTop, x, width, height);
+    const Sprite& marker = labels_->profileMarker.update(width, [&] {
+        Image line(width, 1);
+        for (int i = 0; i < width; ++i)
+            fillRect(line, i, 0, 1, 1, (i / 4) % 2 ? glm::u8vec4(255, 230, 0, 255) : glm::u8vec4(0, 0, 0, 0));
+        return line;
+    });
+    programs_->images.draw(marker, 0, row, x, width, height);
+    glEnable(GL_DEPTH_TEST);
+}
+
+} // namespace shadelab::gl
