@@ -2,9 +2,11 @@
 // no scene (DESIGN §7's one renderer: render, report, bench, the window and the page all draw through it) —
 // and the caches that make that so never show a stale picture: each picture drawn through the process's
 // renderer, after others, equals a new renderer's picture of the same scene.
-// This executable replaces the global operator new with a counting one (all of its tests share it).
+// This executable replaces the global operator new and delete with counting ones (all of its tests share
+// them).
 #include <atomic>
 #include <cctype>
+#include <cstddef>
 #include <cstdlib>
 #include <new>
 #include <string>
@@ -14,26 +16,87 @@
 #include "shadelab/gl/renderer.h"
 #include "shadelab/scene/view.h"
 
+// Every form of new counts and takes its memory from malloc (aligned_alloc for the aligned forms), and
+// every form of delete gives it back with free: libraries that call the nothrow or array forms (Mesa's
+// LLVM) then pair with this file's delete, as the sanitizers check.
 namespace {
 std::atomic<long> gAllocations{0};
-} // namespace
 
-// GCC sees the inlined operator new's malloc reach this free through a delete-expression and calls it a
-// mismatch; the pair is the replacement's own.
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-#endif
-
-void* operator new(std::size_t size) {
+void* counted(std::size_t size, std::size_t alignment = 0) noexcept {
     gAllocations.fetch_add(1, std::memory_order_relaxed);
-    if (void* p = std::malloc(size != 0 ? size : 1)) return p;
+    size = size != 0 ? size : 1;
+    if (alignment <= alignof(std::max_align_t))
+        return std::malloc(size); // NOLINT(cppcoreguidelines-no-malloc)
+    return std::aligned_alloc(alignment, (size + alignment - 1) / alignment * alignment);
+}
+void* countedOrThrow(std::size_t size, std::size_t alignment = 0) {
+    if (void* p = counted(size, alignment)) return p;
     throw std::bad_alloc();
 }
+void release(void* p) noexcept {
+    std::free(p); // NOLINT(cppcoreguidelines-no-malloc)
+}
+} // namespace
+
+void* operator new(std::size_t size) {
+    return countedOrThrow(size);
+}
+void* operator new[](std::size_t size) {
+    return countedOrThrow(size);
+}
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
+    return counted(size);
+}
+void* operator new[](std::size_t size, const std::nothrow_t&) noexcept {
+    return counted(size);
+}
+void* operator new(std::size_t size, std::align_val_t alignment) {
+    return countedOrThrow(size, std::size_t(alignment));
+}
+void* operator new[](std::size_t size, std::align_val_t alignment) {
+    return countedOrThrow(size, std::size_t(alignment));
+}
+void* operator new(std::size_t size, std::align_val_t alignment, const std::nothrow_t&) noexcept {
+    return counted(size, std::size_t(alignment));
+}
+void* operator new[](std::size_t size, std::align_val_t alignment, const std::nothrow_t&) noexcept {
+    return counted(size, std::size_t(alignment));
+}
 void operator delete(void* p) noexcept {
-    std::free(p); // NOLINT(cppcoreguidelines-no-malloc): the pair of the malloc above
+    release(p);
+}
+void operator delete[](void* p) noexcept {
+    release(p);
 }
 void operator delete(void* p, std::size_t) noexcept {
-    std::free(p); // NOLINT(cppcoreguidelines-no-malloc)
+    release(p);
+}
+void operator delete[](void* p, std::size_t) noexcept {
+    release(p);
+}
+void operator delete(void* p, const std::nothrow_t&) noexcept {
+    release(p);
+}
+void operator delete[](void* p, const std::nothrow_t&) noexcept {
+    release(p);
+}
+void operator delete(void* p, std::align_val_t) noexcept {
+    release(p);
+}
+void operator delete[](void* p, std::align_val_t) noexcept {
+    release(p);
+}
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept {
+    release(p);
+}
+void operator delete[](void* p, std::size_t, std::align_val_t) noexcept {
+    release(p);
+}
+void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept {
+    release(p);
+}
+void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept {
+    release(p);
 }
 
 namespace shadelab::test {
