@@ -8,6 +8,7 @@
 #include <exception>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 #include "app/shells/cli.h"
@@ -37,38 +38,35 @@ std::vector<std::string> splitOnNul(std::string_view bytes) {
     return arguments;
 }
 
-// What parseCommandLine returns must be one of its kinds, each with what main.cpp needs to run it.
-void checkParsed(const app::ParsedCommand& command) {
-    using Kind = app::ParsedCommand::Kind;
-    switch (command.kind) {
-    case Kind::Exit:
-        if (command.exitCode != kExitOk)
-            crash("an Exit that is not a success", std::to_string(command.exitCode));
-        if (command.text.empty()) crash("an Exit with no text to print", "");
-        return;
-    case Kind::Render:
-    case Kind::Reference:
-        // --out is required (CLI11 for reference, parseCommandLine for render); an empty value is left to
-        // checkOutputPath.
-        return;
-    case Kind::Compare:
-        if (command.compare.actual.empty() || command.compare.expected.empty())
-            crash("compare without its two images", "");
-        return;
-    case Kind::EglDevices:
-        if (command.eglDevice != "list") crash("a device listing not asked for", command.eglDevice);
-        return;
-    case Kind::Bench:
-        if (command.bench.frames < 3 || command.bench.warmupFrames < 0)
-            crash("bench frames outside their CLI11 range", std::to_string(command.bench.frames));
-        return;
-    case Kind::Demo:
-    case Kind::Report:
-    case Kind::Check:  // the file is required by CLI11; an empty or missing one is the loader's to refuse
-    case Kind::Slides: // so are the lesson and --out-dir
-        return;
-    }
-    crash("an unknown kind", std::to_string(int(command.kind)));
+// What parseCommandLine returns is one of its forms, each with what main.cpp needs to run it.
+void check(const app::ExitArgs& exit) {
+    if (exit.exitCode != kExitOk) crash("an Exit that is not a success", std::to_string(exit.exitCode));
+    if (exit.text.empty()) crash("an Exit with no text to print", "");
+}
+void check(const app::RenderArgs& render) {
+    // --out is required (parseCommandLine) unless the matrices alone are printed; an empty value given is
+    // left to checkOutputPath.
+    if (render.printMatrices && render.out == "-") crash("--print-matrices with --out -", "");
+}
+void check(const app::CompareOptions& compare) {
+    if (compare.actual.empty() || compare.expected.empty()) crash("compare without its two images", "");
+}
+void check(const app::EglDevicesArgs&) {}
+void check(const app::BenchArgs& bench) {
+    if (bench.bench.frames < 3 || bench.bench.warmupFrames < 0)
+        crash("bench frames outside their CLI11 range", std::to_string(bench.bench.frames));
+    if (bench.context.eglDevice == "list") crash("a device listing run as bench", "");
+}
+// The files are required by CLI11 where a command needs one; an empty or missing one is the loader's to
+// refuse.
+void check(const app::DemoArgs&) {}
+void check(const app::ReferenceArgs&) {}
+void check(const app::ReportArgs& report) {
+    if (report.context.eglDevice == "list") crash("a device listing run as report", "");
+}
+void check(const app::CheckArgs&) {}
+void check(const app::SlidesArgs& slides) {
+    if (slides.context.eglDevice == "list") crash("a device listing run as slides", "");
 }
 
 } // namespace
@@ -79,7 +77,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (std::string& argument : arguments) argv.push_back(argument.data());
     argv.push_back(nullptr);
     try {
-        checkParsed(app::parseCommandLine(int(arguments.size()), argv.data()));
+        std::visit([](const auto& command) { check(command); },
+                   app::parseCommandLine(int(arguments.size()), argv.data()));
     } catch (const InputError& e) {
         if (std::string_view(e.what()).empty()) crash("an InputError with no message", "");
     } catch (const std::exception& e) {

@@ -28,11 +28,6 @@ void addSceneFlags(CLI::App& command, SceneOverrides& o) {
         command.add_option("--" + std::string(flag.name), o.*flag.value, flag.help);
 }
 
-// The context a command asks for: --backend, --api, --egl-device (each command has its own copy).
-struct ContextArgs {
-    std::string backend = "egl", api = "gl", eglDevice;
-};
-
 void addApiFlag(CLI::App& command, std::string& api) {
     command
         .add_option("--api", api,
@@ -51,29 +46,21 @@ void addHeadlessFlags(CLI::App& command, ContextArgs& context) {
                        "first device that gives a context, else the surfaceless platform");
 }
 
-void setContext(ParsedCommand& command, const ContextArgs& context) {
-    command.backend = context.backend;
-    command.api = context.api;
-    command.eglDevice = context.eglDevice;
-}
-
 std::string withoutTrailingNewlines(std::string text) {
     while (!text.empty() && text.back() == '\n') text.pop_back();
     return text;
 }
 
-// Each form of the command line is a struct of its own: its options' storage, add() to declare them bound
-// to it, and finish() to give the ParsedCommand its kind and values when it is the form parsed.
+// Each form of the command line is a struct of its own: add() declares its options, bound to the fields
+// of its arguments (cli.h), which are what parseCommandLine returns when it is the form parsed.
 
 // Without a subcommand: the demo window (its scene, the scene flags, its own options).
 struct DemoCommand {
-    std::string scene;
-    DemoOptions demo;
-    SceneOverrides flags;
-    std::string api = "gl";
+    DemoArgs args;
     void add(CLI::App& cli) {
-        cli.add_option("scene", scene, "Scene file (JSON) for the demo; the defaults if omitted");
-        addSceneFlags(cli, flags);
+        DemoOptions& demo = args.demo;
+        cli.add_option("scene", args.scene, "Scene file (JSON) for the demo; the defaults if omitted");
+        addSceneFlags(cli, args.overrides);
         cli.add_option("--showcase-out", demo.showcaseOut, "Where the showcase goes when there is no display")
             ->capture_default_str();
         cli.add_option("--screenshot-dir", demo.screenshotDir, "Where S saves shadelab-NNN.png and .json")
@@ -84,108 +71,86 @@ struct DemoCommand {
         cli.add_option("--ui-scale", demo.uiScale, "Scale of the panel, help and label text, 0.5..4")
             ->check(CLI::Range(0.5, 4.0));
         cli.add_flag("--gl-debug", demo.glDebug, "Ask for a KHR_debug context and print every GL message");
-        addApiFlag(cli, api);
-    }
-    void finish(ParsedCommand& c) const {
-        c.kind = ParsedCommand::Kind::Demo;
-        c.scene = scene;
-        c.overrides = flags;
-        c.demo = demo;
-        c.api = api;
+        addApiFlag(cli, args.api);
     }
 };
 
 struct RenderCommand {
-    SceneOverrides flags;
-    std::string scene, out;
-    ContextArgs context;
-    bool verbose = false, specialize = true, printMatrices = false;
+    RenderArgs args;
     CLI::App* add(CLI::App& cli) {
         CLI::App* render = cli.add_subcommand("render", "Render a scene headless to a PNG");
-        render->add_option("scene", scene, "Scene file (JSON); the defaults of DESIGN §4 if omitted");
-        addSceneFlags(*render, flags);
-        addHeadlessFlags(*render, context);
-        render->add_flag("--verbose", verbose,
+        render->add_option("scene", args.scene, "Scene file (JSON); the defaults of DESIGN §4 if omitted");
+        addSceneFlags(*render, args.overrides);
+        addHeadlessFlags(*render, args.context);
+        render->add_flag("--verbose", args.verbose,
                          "Say which context and renderer drew the picture (standard error)");
         render
-            ->add_option("--specialize", specialize,
+            ->add_option("--specialize", args.specialize,
                          "on: programs specialized to the scene's lights and terms, each object's values "
                          "compiled in; off: the uber program")
             ->transform(CLI::IsMember({"on", "off", "true", "false", "1", "0"}, CLI::ignore_case))
             ->capture_default_str();
-        render->add_option("--out", out,
+        render->add_option("--out", args.out,
                            "Output PNG, or - for standard output (required unless --print-matrices)");
         render->add_flag(
-            "--print-matrices", printMatrices,
+            "--print-matrices", args.printMatrices,
             "Print the camera frame e, u, v, w, M_cam, the projection matrix and each object's M "
             "and normal matrix (standard output); with --out FILE it renders too");
         return render;
     }
-    void finish(ParsedCommand& c) const {
-        c.kind = ParsedCommand::Kind::Render;
-        c.scene = scene;
-        c.overrides = flags;
-        c.out = out;
-        setContext(c, context);
-        c.verbose = verbose;
-        c.specialize = specialize;
-        c.printMatrices = printMatrices;
+    // What CLI11 cannot say: --out is required unless the matrices are printed, and the two cannot share
+    // standard output.
+    const RenderArgs& parsed() const {
+        if (args.out.empty() && !args.printMatrices)
+            throw InputError("--out is required: the PNG to write, or - for standard output (or "
+                             "--print-matrices alone to print the matrices)\nRun with --help for more "
+                             "information.");
+        if (args.printMatrices && args.out == "-")
+            throw InputError(
+                "--print-matrices: the matrices go to standard output, and so would the PNG of --out "
+                "-; write the PNG to a file (--out FILE.png) or leave --out out");
+        return args;
     }
 };
 
 struct ReferenceCommand {
-    std::string scene, out;
-    SceneOverrides flags;
-    std::string backend = "egl", api = "gl";
-    bool specialize = true;
+    ReferenceArgs args;
+    bool specialize = true; // accepted, no effect
     CLI::App* add(CLI::App& cli) {
         CLI::App* reference =
             cli.add_subcommand("reference", "Ray-cast the exact spheres on the CPU to a PNG");
-        reference->add_option("scene", scene, "Scene file (JSON)");
-        addSceneFlags(*reference, flags);
-        reference->add_option("--out", out, "Output PNG, or - for standard output")->required();
+        reference->add_option("scene", args.scene, "Scene file (JSON)");
+        addSceneFlags(*reference, args.overrides);
+        reference->add_option("--out", args.out, "Output PNG, or - for standard output")->required();
         // render's context flags, so one command line switches between the two: checked, then unused (the
         // reference is computed on the CPU).
-        reference->add_option("--backend", backend, "Accepted as render takes it; no effect (CPU)");
-        reference->add_option("--api", api, "Accepted as render takes it; no effect (CPU)");
+        reference->add_option("--backend", args.context.backend,
+                              "Accepted as render takes it; no effect (CPU)");
+        reference->add_option("--api", args.context.api, "Accepted as render takes it; no effect (CPU)");
         reference->add_option("--specialize", specialize, "Accepted as render takes it; no effect (CPU)")
             ->transform(CLI::IsMember({"on", "off", "true", "false", "1", "0"}, CLI::ignore_case));
         return reference;
     }
-    void finish(ParsedCommand& c) const {
-        c.kind = ParsedCommand::Kind::Reference;
-        setContext(c, {backend, api, ""});
-        c.scene = scene;
-        c.overrides = flags;
-        c.out = out;
-    }
 };
 
 struct BenchCommand {
-    BenchOptions bench;
-    std::string size = ParsedCommand{}.benchSize, json;
-    ContextArgs context;
+    BenchArgs args;
     CLI::App* add(CLI::App& cli) {
         CLI::App* command = cli.add_subcommand("bench", "Benchmarks, reported as ratios measured in one run");
-        addHeadlessFlags(*command, context);
-        command->add_option("--size", size, "Frame size WxH")->capture_default_str();
-        command->add_option("--frames", bench.frames, "Timed frames per configuration")
+        addHeadlessFlags(*command, args.context);
+        command->add_option("--size", args.size, "Frame size WxH")->capture_default_str();
+        command->add_option("--frames", args.bench.frames, "Timed frames per configuration")
             ->capture_default_str()
             ->check(CLI::Range(3, 100000));
-        command->add_option("--warmup", bench.warmupFrames, "Untimed frames first")
+        command->add_option("--warmup", args.bench.warmupFrames, "Untimed frames first")
             ->capture_default_str()
             ->check(CLI::Range(0, 1000));
-        command->add_option("--filter", bench.filter, "Regular expression: run only matching benchmarks");
-        command->add_option("--json", json, "Also write every figure and ratio to this JSON file");
+        command->add_option("--filter", args.bench.filter,
+                            "Regular expression: run only matching benchmarks");
+        command->add_option("--json", args.json, "Also write every figure and ratio to this JSON file");
         return command;
     }
-    void finish(ParsedCommand& c) const {
-        c.kind = ParsedCommand::Kind::Bench;
-        c.bench = bench;
-        setContext(c, context);
-        c.benchSize = size;
-        c.benchJson = json;
-    }
+    const BenchArgs& parsed() const { return args; }
 };
 
 struct CompareCommand {
@@ -211,96 +176,75 @@ struct CompareCommand {
                           "outliers, limits, passed, diff) instead of the summary line");
         return compare;
     }
-    void finish(ParsedCommand& c) const {
-        c.kind = ParsedCommand::Kind::Compare;
-        c.compare = o;
-    }
 };
 
 struct ReportCommand {
-    static inline const ParsedCommand kDefaults{}; // the defaults are ParsedCommand's
-    std::string scene, out = kDefaults.reportOut, levels = kDefaults.reportLevels;
-    ContextArgs context;
-    bool noAuto = kDefaults.reportNoAuto, noPlot = kDefaults.reportNoPlot;
-    int frames = kDefaults.reportFrames, warmup = kDefaults.reportWarmup;
+    ReportArgs args;
     CLI::App* add(CLI::App& cli) {
         CLI::App* report = cli.add_subcommand(
             "report",
             "Error against run time of every shading mode, lighting model and level: CSV, JSON, a plot");
-        report->add_option("scene", scene, "Scene file (JSON); the bundled scenes/report.json if omitted");
-        report->add_option("--out", out, "Output folder (created if missing)")->capture_default_str();
+        report->add_option("scene", args.scene,
+                           "Scene file (JSON); the bundled scenes/report.json if omitted");
+        report->add_option("--out", args.out, "Output folder (created if missing)")->capture_default_str();
         report
-            ->add_option("--levels", levels, "Levels N or A..B within 0.." + std::to_string(kMaxSubdivisions))
+            ->add_option("--levels", args.levels,
+                         "Levels N or A..B within 0.." + std::to_string(kMaxSubdivisions))
             ->capture_default_str();
-        report->add_flag("--no-auto", noAuto, "Leave out the auto-subdivision rows");
-        report->add_flag("--no-plot", noPlot, "Write report.csv and report.json only (no gnuplot needed)");
-        addHeadlessFlags(*report, context);
-        report->add_option("--frames", frames, "Timed frames per configuration")
+        report->add_flag("--no-auto", args.noAuto, "Leave out the auto-subdivision rows");
+        report->add_flag("--no-plot", args.noPlot,
+                         "Write report.csv and report.json only (no gnuplot needed)");
+        addHeadlessFlags(*report, args.context);
+        report->add_option("--frames", args.frames, "Timed frames per configuration")
             ->capture_default_str()
             ->check(CLI::Range(1, 100000));
-        report->add_option("--warmup", warmup, "Untimed frames first")
+        report->add_option("--warmup", args.warmup, "Untimed frames first")
             ->capture_default_str()
             ->check(CLI::Range(1, 1000));
         return report;
     }
-    void finish(ParsedCommand& c) const {
-        c.kind = ParsedCommand::Kind::Report;
-        c.scene = scene;
-        setContext(c, context);
-        c.reportOut = out;
-        c.reportLevels = levels;
-        c.reportNoAuto = noAuto;
-        c.reportNoPlot = noPlot;
-        c.reportFrames = frames;
-        c.reportWarmup = warmup;
-    }
+    const ReportArgs& parsed() const { return args; }
 };
 
 struct CheckCommand {
-    std::string file;
+    CheckArgs args;
     CLI::App* add(CLI::App& cli) {
         CLI::App* check = cli.add_subcommand("check", "Read a lesson or a scene file as the other commands "
                                                       "would and say what is wrong, drawing nothing");
-        check->add_option("file", file, "Lesson or scene file (JSON)")->required();
+        check->add_option("file", args.file, "Lesson or scene file (JSON)")->required();
         return check;
-    }
-    void finish(ParsedCommand& c) const {
-        c.kind = ParsedCommand::Kind::Check;
-        c.scene = file;
     }
 };
 
 struct SlidesCommand {
-    std::string lesson, outDir;
-    std::optional<std::string> size;
-    bool captions = true;
-    ContextArgs context;
+    SlidesArgs args;
     CLI::App* add(CLI::App& cli) {
         CLI::App* slides = cli.add_subcommand(
             "slides",
             "Export a lesson as slides: one PNG per step, its title and caption in a band at the bottom");
-        slides->add_option("lesson", lesson, "Lesson file (JSON)")->required();
+        slides->add_option("lesson", args.lesson, "Lesson file (JSON)")->required();
         slides
-            ->add_option("--out-dir", outDir,
+            ->add_option("--out-dir", args.outDir,
                          "Folder for 01-title.png, 02-... (created if missing; not the lesson's own folder)")
             ->required();
-        slides->add_option("--size", size,
+        slides->add_option("--size", args.size,
                            "Slide size WxH for every step, e.g. 1920x1080 (default: each step's image size)");
         slides->add_flag(
-            "--no-captions", [this](std::int64_t) { captions = false; },
+            "--no-captions", [this](std::int64_t) { args.captions = false; },
             "No band: each slide is exactly what render makes of the step's scene");
-        addHeadlessFlags(*slides, context);
+        addHeadlessFlags(*slides, args.context);
         return slides;
     }
-    void finish(ParsedCommand& c) const {
-        c.kind = ParsedCommand::Kind::Slides;
-        c.scene = lesson;
-        setContext(c, context);
-        c.slidesOutDir = outDir;
-        c.slidesSize = size;
-        c.slidesCaptions = captions;
-    }
+    const SlidesArgs& parsed() const { return args; }
 };
+
+// A headless command as parsed; with --egl-device list, the device listing instead (before the command's
+// own checks: `render --egl-device list` needs no --out).
+template <class Command> ParsedCommand headless(const Command& command) {
+    const ContextArgs& context = command.args.context;
+    if (context.eglDevice == "list") return EglDevicesArgs{context.api};
+    return command.parsed();
+}
 
 } // namespace
 
@@ -330,23 +274,23 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
 
     // Set last: subcommands made before it would inherit it, and their --help is not about the demo's keys.
     cli.footer("Demo keys:\n" + keyHelpText());
-    ParsedCommand command;
     try {
         cli.parse(argc, argv);
     } catch (const CLI::Success& e) {
         std::ostringstream out, err;
-        command.kind = ParsedCommand::Kind::Exit;
-        command.exitCode = cli.exit(e, out, err);
-        command.text = out.str();
-        return command;
+        ExitArgs exit;
+        exit.exitCode = cli.exit(e, out, err);
+        exit.text = out.str();
+        return exit;
     } catch (const CLI::ParseError& e) {
         // A mistyped subcommand lands in the demo's scene argument; name it rather than the flags after it.
         // The error_code overload: a name too long to stat is not a scene file either, not a run-time error.
         const std::string hints = didYouMean(cli, argc, argv);
+        const std::string& scene = demo.args.scene;
         std::error_code ec;
-        if (hints.empty() && !demo.scene.empty() && !std::filesystem::exists(demo.scene, ec))
+        if (hints.empty() && !scene.empty() && !std::filesystem::exists(scene, ec))
             throw InputError(
-                "\"" + demo.scene +
+                "\"" + scene +
                 "\" is neither a subcommand (render, reference, report, bench, compare, check, slides) nor a "
                 "scene or lesson file");
         std::ostringstream out, err;
@@ -354,35 +298,14 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
         throw InputError(withoutTrailingNewlines(err.str()) + hints);
     }
 
-    if (*renderApp) {
-        render.finish(command);
-    } else if (*referenceApp) {
-        reference.finish(command);
-    } else if (*benchApp) {
-        bench.finish(command);
-    } else if (*compareApp) {
-        compare.finish(command);
-    } else if (*reportApp) {
-        report.finish(command);
-    } else if (*checkApp) {
-        check.finish(command);
-    } else if (*slidesApp) {
-        slides.finish(command);
-    } else {
-        demo.finish(command);
-    }
-    if (command.eglDevice == "list") {
-        command.kind = ParsedCommand::Kind::EglDevices;
-        return command;
-    }
-    if (command.kind == ParsedCommand::Kind::Render && command.out.empty() && !command.printMatrices)
-        throw InputError("--out is required: the PNG to write, or - for standard output (or --print-matrices "
-                         "alone to print the matrices)\nRun with --help for more information.");
-    if (command.kind == ParsedCommand::Kind::Render && command.printMatrices && command.out == "-")
-        throw InputError(
-            "--print-matrices: the matrices go to standard output, and so would the PNG of --out "
-            "-; write the PNG to a file (--out FILE.png) or leave --out out");
-    return command;
+    if (*renderApp) return headless(render);
+    if (*referenceApp) return reference.args;
+    if (*benchApp) return headless(bench);
+    if (*compareApp) return compare.o;
+    if (*reportApp) return headless(report);
+    if (*checkApp) return check.args;
+    if (*slidesApp) return headless(slides);
+    return demo.args;
 }
 
 } // namespace shadelab::app

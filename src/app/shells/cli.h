@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <variant>
 
 #include "app/bench/bench.h"
 #include "app/shells/commands.h"
@@ -12,38 +13,60 @@
 
 namespace shadelab::app {
 
-struct ParsedCommand {
-    enum class Kind { Exit, Demo, Render, Reference, Bench, Report, EglDevices, Compare, Check, Slides };
-    Kind kind = Kind::Demo;
+// The context a headless command asks for (--backend, --api, --egl-device), checked by
+// contextFromArguments when the command runs.
+struct ContextArgs {
+    std::string backend = "egl", api = "gl", eglDevice;
+};
 
-    // Kind::Exit (--help, --help-all): print `text` to stdout and exit with `exitCode`.
+// Each form of the command line, with the values main.cpp runs it with. Files are named as given; an
+// empty scene is the defaults (DESIGN §4), or for report the bundled scenes/report.json.
+struct ExitArgs { // --help, --help-all: print `text` to stdout and exit with `exitCode`
     std::string text;
     int exitCode = kExitOk;
-
-    std::string scene; // Demo, Render, Reference, Report: the scene file (Demo: or a lesson); empty for the
-                       // defaults Check: the lesson or scene file; Slides: the lesson file
-    SceneOverrides overrides;    // Demo, Render, Reference
-    std::string out;             // Render, Reference: --out
-    std::string backend = "egl"; // Render, Bench, Report: --backend, checked by contextFromArguments
-    std::string api = "gl";      // Demo, Render, Bench, Report: --api
-    std::string eglDevice;       // Render, Bench, Report: --egl-device N; "list" gives Kind::EglDevices
-    bool verbose = false;        // Render: --verbose
-    bool specialize = true;      // Render: --specialize
-    bool printMatrices = false;  // Render: --print-matrices
-    DemoOptions demo;            // Demo
-    BenchOptions bench;          // Bench: frames, warm-up and filter; size, backend and JSON are below
-    std::string benchSize = "800x600", benchJson; // Bench: --size (checked by composeSize), --json
-    // Report (app/report/report.h, whose options main.cpp builds): scene and backend as above.
-    std::string reportOut = "report", reportLevels = "0..8";
-    bool reportNoAuto = false;
-    bool reportNoPlot = false;
-    int reportFrames = 20, reportWarmup = 3;
-    CompareOptions compare; // Compare
-    // Slides: --out-dir, --no-captions, --size (the scene's other flags do not apply to a lesson)
-    std::string slidesOutDir;
-    bool slidesCaptions = true;
-    std::optional<std::string> slidesSize;
 };
+struct DemoArgs { // no subcommand: the window, with a scene or a lesson
+    std::string scene;
+    SceneOverrides overrides;
+    DemoOptions demo;
+    std::string api = "gl";
+};
+struct RenderArgs {
+    std::string scene, out; // out: a PNG, or - for standard output; empty only with printMatrices
+    SceneOverrides overrides;
+    ContextArgs context;
+    bool verbose = false, specialize = true, printMatrices = false;
+};
+struct ReferenceArgs {
+    std::string scene, out;
+    SceneOverrides overrides;
+    ContextArgs context; // render's --backend and --api, checked and unused (the CPU draws)
+};
+struct BenchArgs {
+    BenchOptions bench; // frames, warm-up and filter; the size, context and JSON file below
+    std::string size = "800x600", json;
+    ContextArgs context;
+};
+struct ReportArgs { // app/report/report.h's options, built by main.cpp
+    std::string scene, out = "report", levels = "0..8";
+    bool noAuto = false, noPlot = false;
+    int frames = 20, warmup = 3;
+    ContextArgs context;
+};
+struct EglDevicesArgs { // --egl-device list, on any command that takes it
+    std::string api = "gl";
+};
+struct CheckArgs {
+    std::string file; // a lesson or a scene
+};
+struct SlidesArgs { // the scene's other flags do not apply to a lesson
+    std::string lesson, outDir;
+    std::optional<std::string> size;
+    bool captions = true;
+    ContextArgs context;
+};
+using ParsedCommand = std::variant<ExitArgs, DemoArgs, RenderArgs, ReferenceArgs, BenchArgs, ReportArgs,
+                                   EglDevicesArgs, CompareOptions, CheckArgs, SlidesArgs>;
 
 // Throws InputError for anything CLI11 rejects, with CLI11's message (naming the argument) and its
 // "Run with --help" hint; a mistyped subcommand is named as such.

@@ -57,110 +57,120 @@ void keepFreedHeapForTheNextFrame() {
 #endif
 }
 
-// Runs what the command line asks for (its parsing lives in app/shells/cli.cpp, where the fuzzer reaches it).
-int run(int argc, char** argv) {
-    const app::ParsedCommand command = app::parseCommandLine(argc, argv);
-    using Kind = app::ParsedCommand::Kind;
-    switch (command.kind) {
-    case Kind::Exit:
-        std::fputs(command.text.c_str(), stdout);
-        return command.exitCode;
-    case Kind::Render: {
-        if (!command.out.empty()) {
-            app::checkOutputPath(command.out);
-            refuseOverwritingInput(command.out, "--out", command.scene); // before anything is rendered
-        }
-        const Scene scene = app::composeScene(command.scene, command.overrides);
-        warnAbout(scene, command.scene);
-        if (command.printMatrices) {
-            printMatrices(scene);
-            if (command.out.empty()) return kExitOk;
-        }
-        const ContextRequest context =
-            app::contextFromArguments(command.backend, command.api, command.eglDevice);
-        return app::runRender(scene, context, command.out, command.specialize, command.verbose);
+// What each form of the command line runs (its parsing lives in app/shells/cli.cpp, where the fuzzer
+// reaches it).
+int run(const app::ExitArgs& exit) {
+    std::fputs(exit.text.c_str(), stdout);
+    return exit.exitCode;
+}
+
+ContextRequest contextOf(const app::ContextArgs& context) {
+    return app::contextFromArguments(context.backend, context.api, context.eglDevice);
+}
+
+int run(const app::RenderArgs& render) {
+    if (!render.out.empty()) {
+        app::checkOutputPath(render.out);
+        refuseOverwritingInput(render.out, "--out", render.scene); // before anything is rendered
     }
-    case Kind::Bench: {
-        app::BenchOptions bench = command.bench;
-        Scene sized;
-        app::composeSize(sized, command.benchSize);
-        bench.width = sized.width;
-        bench.height = sized.height;
-        bench.context = app::contextFromArguments(command.backend, command.api, command.eglDevice);
-        if (!command.benchJson.empty()) {
-            app::checkOutputPath(command.benchJson, "--json");
-            if (command.benchJson == "-")
-                throw InputError("--json: - is not accepted; bench prints its table on standard output, so "
-                                 "give a file name such as bench.json");
-            bench.json = command.benchJson;
-        }
-        return app::runBench(bench);
+    const Scene scene = app::composeScene(render.scene, render.overrides);
+    warnAbout(scene, render.scene);
+    if (render.printMatrices) {
+        printMatrices(scene);
+        if (render.out.empty()) return kExitOk;
     }
-    case Kind::Reference: {
-        (void)app::contextFromArguments(command.backend, command.api, ""); // validated, as render would
-        app::checkOutputPath(command.out);
-        refuseOverwritingInput(command.out, "--out", command.scene);
-        const Scene scene = app::composeScene(command.scene, command.overrides);
-        warnAbout(scene, command.scene);
-        return app::runReference(scene, command.out);
+    return app::runRender(scene, contextOf(render.context), render.out, render.specialize, render.verbose);
+}
+
+int run(const app::ReferenceArgs& reference) {
+    (void)app::contextFromArguments(reference.context.backend, reference.context.api, ""); // as render would
+    app::checkOutputPath(reference.out);
+    refuseOverwritingInput(reference.out, "--out", reference.scene);
+    const Scene scene = app::composeScene(reference.scene, reference.overrides);
+    warnAbout(scene, reference.scene);
+    return app::runReference(scene, reference.out);
+}
+
+int run(const app::BenchArgs& args) {
+    app::BenchOptions bench = args.bench;
+    Scene sized;
+    app::composeSize(sized, args.size);
+    bench.width = sized.width;
+    bench.height = sized.height;
+    bench.context = contextOf(args.context);
+    if (!args.json.empty()) {
+        app::checkOutputPath(args.json, "--json");
+        if (args.json == "-")
+            throw InputError("--json: - is not accepted; bench prints its table on standard output, so "
+                             "give a file name such as bench.json");
+        bench.json = args.json;
     }
-    case Kind::Report: {
-        app::ReportOptions report;
-        if (!command.scene.empty()) report.scene = command.scene;
-        report.outDir = command.reportOut;
-        app::parseLevels(command.reportLevels, report);
-        report.includeAuto = !command.reportNoAuto;
-        report.plot = !command.reportNoPlot;
-        report.context = app::contextFromArguments(command.backend, command.api, command.eglDevice);
-        report.frames = command.reportFrames;
-        report.warmup = command.reportWarmup;
-        return app::runReport(report);
-    }
-    case Kind::Compare:
-        if (!command.compare.diff.empty()) app::checkOutputPath(command.compare.diff, "--diff");
-        return app::runCompare(command.compare);
-    case Kind::EglDevices:
-        return app::runListEglDevices(app::apiFromArgument(command.api));
-    case Kind::Check:
-        return app::runCheck(command.scene);
-    case Kind::Slides: {
-        app::SlidesOptions slides;
-        slides.lesson = command.scene;
-        slides.outDir = command.slidesOutDir;
-        slides.size = command.slidesSize;
-        slides.captions = command.slidesCaptions;
-        slides.context = app::contextFromArguments(command.backend, command.api, command.eglDevice);
-        return app::runSlides(slides);
-    }
-    case Kind::Demo:
-        break;
-    }
-    app::checkOutputPath(command.demo.showcaseOut, "--showcase-out");
-    if (std::error_code error; !std::filesystem::is_directory(command.demo.screenshotDir, error))
-        throw InputError("--screenshot-dir: " + printable(command.demo.screenshotDir.string()) +
-                         (std::filesystem::exists(command.demo.screenshotDir, error)
+    return app::runBench(bench);
+}
+
+int run(const app::ReportArgs& args) {
+    app::ReportOptions report;
+    if (!args.scene.empty()) report.scene = args.scene;
+    report.outDir = args.out;
+    app::parseLevels(args.levels, report);
+    report.includeAuto = !args.noAuto;
+    report.plot = !args.noPlot;
+    report.context = contextOf(args.context);
+    report.frames = args.frames;
+    report.warmup = args.warmup;
+    return app::runReport(report);
+}
+
+int run(const app::CompareOptions& compare) {
+    if (!compare.diff.empty()) app::checkOutputPath(compare.diff, "--diff");
+    return app::runCompare(compare);
+}
+
+int run(const app::EglDevicesArgs& list) {
+    return app::runListEglDevices(app::apiFromArgument(list.api));
+}
+
+int run(const app::CheckArgs& check) {
+    return app::runCheck(check.file);
+}
+
+int run(const app::SlidesArgs& args) {
+    app::SlidesOptions slides;
+    slides.lesson = args.lesson;
+    slides.outDir = args.outDir;
+    slides.size = args.size;
+    slides.captions = args.captions;
+    slides.context = contextOf(args.context);
+    return app::runSlides(slides);
+}
+
+int run(const app::DemoArgs& args) {
+    app::checkOutputPath(args.demo.showcaseOut, "--showcase-out");
+    if (std::error_code error; !std::filesystem::is_directory(args.demo.screenshotDir, error))
+        throw InputError("--screenshot-dir: " + printable(args.demo.screenshotDir.string()) +
+                         (std::filesystem::exists(args.demo.screenshotDir, error)
                               ? " is not a folder; name the folder S saves its screenshots in"
                               : " does not exist; create it (mkdir -p) or name an existing folder"));
-    refuseOverwritingInput(command.demo.showcaseOut, "--showcase-out", command.scene);
-    app::DemoOptions demo = command.demo;
+    refuseOverwritingInput(args.demo.showcaseOut, "--showcase-out", args.scene);
+    app::DemoOptions demo = args.demo;
     Scene scene;
-    std::variant<Scene, Lesson> read = command.scene.empty() ? Scene{} : loadSceneOrLesson(command.scene);
+    std::variant<Scene, Lesson> read = args.scene.empty() ? Scene{} : loadSceneOrLesson(args.scene);
     if (Lesson* readLesson = std::get_if<Lesson>(&read)) {
         // A lesson: the scene flags apply to every step, as they would to each step's scene file.
         Lesson lesson = std::move(*readLesson);
         for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
             LessonStep& step = lesson.steps[i];
-            step.scene = app::applyOverrides(std::move(step.scene), command.overrides, command.scene);
-            warnAbout(step.scene, command.scene + ": steps[" + std::to_string(i) + "]");
+            step.scene = app::applyOverrides(std::move(step.scene), args.overrides, args.scene);
+            warnAbout(step.scene, args.scene + ": steps[" + std::to_string(i) + "]");
         }
         scene = lesson.steps.front().scene;
         demo.lesson = std::make_shared<const Lesson>(std::move(lesson));
     } else {
-        scene = app::applyOverrides(std::get<Scene>(std::move(read)), command.overrides, command.scene);
-        warnAbout(scene, command.scene);
+        scene = app::applyOverrides(std::get<Scene>(std::move(read)), args.overrides, args.scene);
+        warnAbout(scene, args.scene);
     }
-    demo.api = app::apiFromArgument(command.api);
-    if (command.overrides.size) { // the window takes --size when given, never the scene's image size
+    demo.api = app::apiFromArgument(args.api);
+    if (args.overrides.size) { // the window takes --size when given, never the scene's image size
         demo.windowWidth = scene.width;
         demo.windowHeight = scene.height;
     }
@@ -190,7 +200,8 @@ int main(int argc, char** argv) {
     keepFreedHeapForTheNextFrame();
     int status = kExitOk;
     try {
-        status = run(argc, argv);
+        status =
+            std::visit([](const auto& command) { return run(command); }, app::parseCommandLine(argc, argv));
     } catch (const InputError& e) {
         printError(e);
         status = kExitInputError;
