@@ -41,7 +41,9 @@ void FramedPicture::drawPicture(gl::Renderer& renderer, DemoState& state, int wi
                                figures.interiorPixels,
                                figures.edgeColumns.size(),
                                figures.row};
-    if (reported_.changed(reported)) state.viewReport = viewReport(scene, figures);
+    if (reported_.changed(reported)) report_ = viewReport(scene, figures);
+    // Copied only when the state's differs: a new state (a lesson step) starts without it.
+    if (state.viewReport != report_) state.viewReport = report_;
     const auto probe = state.probe();
     // Behind the object the probe's table says so instead; and the vectors are in the camera's view, which
     // the outside and NDC views do not draw.

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <string>
 #include <tuple>
 
 #include "app/demo/demo_state.h"
@@ -47,6 +48,7 @@ private:
         bool operator==(const ReportFacts&) const = default;
     };
     LastKey<ReportFacts> reported_;
+    std::string report_; // viewReport's words for the last ReportFacts
     struct BandKey {
         std::shared_ptr<const Lesson> lesson; // held, so that its address names this lesson
         std::size_t step = 0;
