@@ -100,6 +100,82 @@ void DemoState::pointer(double x, double y, bool leftHeld) {
     leftWasHeld_ = leftHeld;
 }
 
+// E, P, O, N: the view on, or back to the scene; false (with lastChange_ saying why) when refused.
+bool DemoState::toggleView(Command command) {
+    const ViewKind kind = command == Command::ToggleErrorView     ? ViewKind::Error
+                          : command == Command::ToggleProfileView ? ViewKind::Profile
+                          : command == Command::ToggleOutsideView ? ViewKind::Outside
+                                                                  : ViewKind::Ndc;
+    if (kind == ViewKind::Ndc && scene_.view.kind != kind && scene_.shading == ShadingMode::Exact) {
+        lastChange_ = "the NDC view transforms the mesh; exact shading has none: press 1-4 first";
+        return false;
+    }
+    const bool on = scene_.view.kind != kind;
+    const Observer observer = scene_.view.observer; // where it was left
+    scene_.view = View{};
+    scene_.view.kind = on ? kind : ViewKind::Scene;
+    scene_.view.observer = observer;
+    return true;
+}
+
+// The mode (which 1-5 then change) beside exact; beside exact itself, Gouraud and Phong. A split draws
+// every object twice: refused (levelRefusal says why) beyond the limits.
+void DemoState::toggleSplitView() {
+    if (scene_.view.kind == ViewKind::Split) {
+        scene_.view = View{};
+        return;
+    }
+    View split;
+    split.kind = ViewKind::Split;
+    const bool exact = scene_.shading == ShadingMode::Exact;
+    split.left.shading = exact ? ShadingMode::Gouraud : scene_.shading;
+    split.right.shading = exact ? ShadingMode::Phong : ShadingMode::Exact;
+    Scene candidate = drawn();
+    candidate.view = split;
+    if (const std::string why = overLimits(candidate); !why.empty()) {
+        levelRefusal = "split view refused: " + why;
+        return;
+    }
+    scene_.view = split;
+}
+
+// M: the next material preset on every object, then the scene's own again.
+void DemoState::nextMaterial() {
+    material_ = (material_ + 1) % int(materialPresets().size() + 1);
+    materialEdited_ = false;
+    for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
+        const Material own = initial_.objects[i].material;
+        scene_.objects[i].material =
+            material_ == 0 ? own : materialPresets()[std::size_t(material_ - 1)].material;
+        // Presets are given as α; the scene's own exponent belongs to the scene's lighting model.
+        double exponent = presetExponent(scene_.objects[i].material.shininess);
+        if (material_ == 0)
+            exponent = !matchHighlight || initial_.lighting == scene_.lighting ? own.shininess
+                       : scene_.lighting == LightingModel::BlinnPhong          ? own.shininess * 4
+                                                                               : own.shininess / 4;
+        setShininess(i, exponent);
+    }
+}
+
+// PgDn, PgUp, Home, End; lastChange_ says where it went, or why it did not.
+void DemoState::moveThroughLesson(Command command) {
+    if (!lesson_) {
+        lastChange_ = "no lesson open (shadelab LESSON.json opens one)";
+        return;
+    }
+    const std::size_t last = lesson_->steps.size() - 1;
+    const std::size_t to = command == Command::FirstStep  ? 0
+                           : command == Command::LastStep ? last
+                           : command == Command::NextStep ? std::min(step_ + 1, last)
+                                                          : (step_ == 0 ? 0 : step_ - 1);
+    if (to == step_ && (command == Command::NextStep || command == Command::PreviousStep)) {
+        lastChange_ = to == 0 ? "already at the first step" : "already at the last step";
+        return;
+    }
+    goToStep(to);
+    lastChange_ = stepName();
+}
+
 bool DemoState::apply(Command command) {
     switch (command) {
     case Command::Flat:
@@ -120,39 +196,11 @@ bool DemoState::apply(Command command) {
     case Command::ToggleErrorView:
     case Command::ToggleProfileView:
     case Command::ToggleOutsideView:
-    case Command::ToggleNdcView: {
-        const ViewKind kind = command == Command::ToggleErrorView     ? ViewKind::Error
-                              : command == Command::ToggleProfileView ? ViewKind::Profile
-                              : command == Command::ToggleOutsideView ? ViewKind::Outside
-                                                                      : ViewKind::Ndc;
-        if (kind == ViewKind::Ndc && scene_.view.kind != kind && scene_.shading == ShadingMode::Exact) {
-            lastChange_ = "the NDC view transforms the mesh; exact shading has none: press 1-4 first";
-            return true;
-        }
-        const bool on = scene_.view.kind != kind;
-        const Observer observer = scene_.view.observer; // where it was left
-        scene_.view = View{};
-        scene_.view.kind = on ? kind : ViewKind::Scene;
-        scene_.view.observer = observer;
+    case Command::ToggleNdcView:
+        if (!toggleView(command)) return true;
         break;
-    }
     case Command::ToggleSplitView:
-        if (scene_.view.kind == ViewKind::Split) {
-            scene_.view = View{};
-        } else { // the mode (which 1-5 then change) beside exact; beside exact itself, Gouraud and Phong
-            View split;
-            split.kind = ViewKind::Split;
-            const bool exact = scene_.shading == ShadingMode::Exact;
-            split.left.shading = exact ? ShadingMode::Gouraud : scene_.shading;
-            split.right.shading = exact ? ShadingMode::Phong : ShadingMode::Exact;
-            Scene candidate = drawn(); // a split draws every object twice: within the limits?
-            candidate.view = split;
-            if (const std::string why = overLimits(candidate); !why.empty()) {
-                levelRefusal = "split view refused: " + why;
-                break;
-            }
-            scene_.view = split;
-        }
+        toggleSplitView();
         break;
     case Command::ToggleLighting:
         toggleLighting();
@@ -196,20 +244,7 @@ bool DemoState::apply(Command command) {
                                                                 : Overlay::None;
         break;
     case Command::NextMaterial:
-        material_ = (material_ + 1) % int(materialPresets().size() + 1);
-        materialEdited_ = false;
-        for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
-            const Material own = initial_.objects[i].material;
-            scene_.objects[i].material =
-                material_ == 0 ? own : materialPresets()[std::size_t(material_ - 1)].material;
-            // Presets are given as α; the scene's own exponent belongs to the scene's lighting model.
-            double exponent = presetExponent(scene_.objects[i].material.shininess);
-            if (material_ == 0)
-                exponent = !matchHighlight || initial_.lighting == scene_.lighting ? own.shininess
-                           : scene_.lighting == LightingModel::BlinnPhong          ? own.shininess * 4
-                                                                                   : own.shininess / 4;
-            setShininess(i, exponent);
-        }
+        nextMaterial();
         break;
     case Command::NextLights:
         lights_ = (lights_ + 1) % int(lightPresets().size() + 1);
@@ -227,24 +262,9 @@ bool DemoState::apply(Command command) {
     case Command::NextStep:
     case Command::PreviousStep:
     case Command::FirstStep:
-    case Command::LastStep: {
-        if (!lesson_) {
-            lastChange_ = "no lesson open (shadelab LESSON.json opens one)";
-            return true;
-        }
-        const std::size_t last = lesson_->steps.size() - 1;
-        const std::size_t to = command == Command::FirstStep  ? 0
-                               : command == Command::LastStep ? last
-                               : command == Command::NextStep ? std::min(step_ + 1, last)
-                                                              : (step_ == 0 ? 0 : step_ - 1);
-        if (to == step_ && (command == Command::NextStep || command == Command::PreviousStep)) {
-            lastChange_ = to == 0 ? "already at the first step" : "already at the last step";
-            return true;
-        }
-        goToStep(to);
-        lastChange_ = stepName();
+    case Command::LastStep:
+        moveThroughLesson(command);
         return true;
-    }
     case Command::TogglePanel:
         showPanel = !showPanel;
         break;

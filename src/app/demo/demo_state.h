@@ -223,6 +223,11 @@ private:
     std::string describeChange(Command command) const;
 
     void goToStep(std::size_t index);
+    // apply()'s longer commands.
+    bool toggleView(Command command);
+    void toggleSplitView();
+    void nextMaterial();
+    void moveThroughLesson(Command command);
 
     std::shared_ptr<const Lesson> lesson_; // null: a scene alone
     std::size_t step_ = 0;
