@@ -16,6 +16,12 @@
 #include "shadelab/gl/renderer.h"
 #include "shadelab/scene/view.h"
 
+// GCC (from -O1, where it inlines std::allocator's new into a delete-expression it can see) calls the free
+// in release() a mismatch for the pointer the replaced new took from malloc; that pair is this file's own.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+#endif
+
 // Every form of new counts and takes its memory from malloc (aligned_alloc for the aligned forms), and
 // every form of delete gives it back with free: libraries that call the nothrow or array forms (Mesa's
 // LLVM) then pair with this file's delete, as the sanitizers check.
