@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include "input_error.h"
 #include "shadelab/errors.h"
 #include "shadelab/scene/scene.h"
 #include "shadelab/scene/scene_values.h"
@@ -63,12 +64,8 @@ const BadValue kBadValues[] = {
 };
 
 std::string refusal(const std::function<void()>& attempt) {
-    try {
-        attempt();
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "accepted";
+    const std::string message = test::inputErrorOf(attempt);
+    return message.empty() ? "accepted" : message;
 }
 
 class BothDoors : public ::testing::TestWithParam<BadValue> {};

@@ -10,76 +10,21 @@
 // StiffScenes (v = −l, shininess 1 and 1e4 by mean brightness, a light inside or on the sphere, spot cutoff
 // 0°/90°, I = 1e6) is not repeated here.
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
-#include <new>
 #include <string>
 #include <vector>
 
 #include <glad/gl.h>
 
+#include "gl/allocation_watch.h"
 #include "gl/gl_test_support.h"
+#include "input_error.h"
 #include "shadelab/errors.h"
 #include "shadelab/geometry/subdivision.h"
-
-// ---- allocation watch: the largest single operator-new request, to show that a refused subdivision level
-// allocates nothing for its mesh (GL's own buffers go through malloc and are not counted). Every
-// non-aligned form is replaced, so that each new meets its own delete (also under AddressSanitizer, whose
-// alloc-dealloc-mismatch check would see a sanitizer `new` freed by a replaced `delete`); the aligned forms
-// are left alone, and pair among themselves. ----
-namespace {
-std::atomic<std::size_t> gLargestAllocation{0};
-// Out of line, so that the compiler does not pair an inlined `new` with `free` and warn
-// (-Wmismatched-new-delete): the replacement operators below allocate with malloc on purpose.
-[[gnu::noinline]] void* allocate(std::size_t n) noexcept {
-    std::size_t seen = gLargestAllocation.load(std::memory_order_relaxed);
-    while (n > seen && !gLargestAllocation.compare_exchange_weak(seen, n, std::memory_order_relaxed)) {
-    }
-    return std::malloc(n ? n : 1);
-}
-[[gnu::noinline]] void* allocateOrThrow(std::size_t n) {
-    if (void* p = allocate(n)) return p;
-    throw std::bad_alloc();
-}
-[[gnu::noinline]] void release(void* p) noexcept {
-    std::free(p);
-}
-} // namespace
-
-void* operator new(std::size_t n) {
-    return allocateOrThrow(n);
-}
-void* operator new[](std::size_t n) {
-    return allocateOrThrow(n);
-}
-void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
-    return allocate(n);
-}
-void* operator new[](std::size_t n, const std::nothrow_t&) noexcept {
-    return allocate(n);
-}
-void operator delete(void* p) noexcept {
-    release(p);
-}
-void operator delete[](void* p) noexcept {
-    release(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-    release(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-    release(p);
-}
-void operator delete(void* p, const std::nothrow_t&) noexcept {
-    release(p);
-}
-void operator delete[](void* p, const std::nothrow_t&) noexcept {
-    release(p);
-}
 
 namespace shadelab::test {
 namespace {
@@ -144,15 +89,6 @@ Scene phongScene(int size, LightType light = LightType::Point) {
     scene.shading = ShadingMode::Phong;
     scene.objects[0].subdivisions = 8;
     return scene;
-}
-
-template <typename F> std::string inputErrorOf(F&& f) {
-    try {
-        f();
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
 }
 
 // ==== geometry and transforms ====
@@ -323,12 +259,12 @@ TEST(Subdivision, LevelAboveTheMaximumIsAnInputErrorNamingTheMemoryWithoutAlloca
     (void)checkedRender(*renderer, scene, "warm-up"); // context, programs and the level-8 mesh exist
     scene.objects[0].subdivisions = kMaxSubdivisions + 1;
 
-    gLargestAllocation = 0;
+    resetLargestAllocation();
     const std::string validated = inputErrorOf([&] { validateScene(scene); });
-    const std::size_t validateLargest = gLargestAllocation;
-    gLargestAllocation = 0;
+    const std::size_t validateLargest = largestAllocation();
+    resetLargestAllocation();
     const std::string rendered = inputErrorOf([&] { (void)renderer->renderFloat(scene); });
-    const std::size_t renderLargest = gLargestAllocation;
+    const std::size_t renderLargest = largestAllocation();
     std::printf(
         "  validateScene: \"%s\" (largest allocation %zu B)\n  render: \"%s\" (largest allocation %zu "
         "B); level %d needs %zu B\n",
@@ -342,9 +278,9 @@ TEST(Subdivision, LevelAboveTheMaximumIsAnInputErrorNamingTheMemoryWithoutAlloca
     }
     // The level would take gigabytes; a refusal that started building it would ask for hundreds of MiB.
     // (The watch does see a mesh being built: level 7 reserves its 32770 positions in one piece.)
-    gLargestAllocation = 0;
+    resetLargestAllocation();
     (void)buildSphere(7);
-    EXPECT_GE(gLargestAllocation, sphereVertexCount(7) * sizeof(glm::dvec3));
+    EXPECT_GE(largestAllocation(), sphereVertexCount(7) * sizeof(glm::dvec3));
     EXPECT_LT(validateLargest, std::size_t(1) << 20);
     EXPECT_LT(renderLargest, std::size_t(1) << 20);
     // And the renderer is still usable.
@@ -968,14 +904,14 @@ TEST(Camera, LargestImageSizeRendersAndOneBeyondIsAnInputError) {
             EXPECT_NE(message.find(field), std::string::npos) << message;
             EXPECT_NE(message.find(std::to_string(limit + 1)), std::string::npos) << message;
         }
-        gLargestAllocation = 0;
+        resetLargestAllocation();
         const std::string message = inputErrorOf([&] { (void)renderer->renderFloat(scene); });
         std::printf("  %s via renderFloat: \"%s\" (largest allocation %zu B)\n", size.c_str(),
-                    message.c_str(), std::size_t(gLargestAllocation));
+                    message.c_str(), largestAllocation());
         // The renderer validates the scene first, so it names the field and the value, like validateScene.
         EXPECT_NE(message.find(field), std::string::npos) << message;
         EXPECT_NE(message.find(std::to_string(limit + 1)), std::string::npos) << message;
-        EXPECT_LT(gLargestAllocation, std::size_t(1) << 20);
+        EXPECT_LT(largestAllocation(), std::size_t(1) << 20);
     }
 }
 

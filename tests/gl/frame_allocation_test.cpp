@@ -2,108 +2,15 @@
 // no scene (DESIGN §7's one renderer: render, report, bench, the window and the page all draw through it) —
 // and the caches that make that so never show a stale picture: each picture drawn through the process's
 // renderer, after others, equals a new renderer's picture of the same scene.
-// This executable replaces the global operator new and delete with counting ones (all of its tests share
-// them).
-#include <atomic>
+// Allocations are counted by gl/allocation_watch.h (linked into this executable only).
 #include <cctype>
-#include <cstddef>
-#include <cstdlib>
-#include <new>
 #include <string>
 #include <vector>
 
+#include "gl/allocation_watch.h"
 #include "gl/gl_test_support.h"
 #include "shadelab/gl/renderer.h"
 #include "shadelab/scene/view.h"
-
-// GCC (from -O1, where it inlines std::allocator's new into a delete-expression it can see) calls the free
-// in release() a mismatch for the pointer the replaced new took from malloc; that pair is this file's own.
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-#endif
-
-// Every form of new counts and takes its memory from malloc (aligned_alloc for the aligned forms), and
-// every form of delete gives it back with free: libraries that call the nothrow or array forms (Mesa's
-// LLVM) then pair with this file's delete, as the sanitizers check.
-namespace {
-std::atomic<long> gAllocations{0};
-
-void* counted(std::size_t size, std::size_t alignment = 0) noexcept {
-    gAllocations.fetch_add(1, std::memory_order_relaxed);
-    size = size != 0 ? size : 1;
-    if (alignment <= alignof(std::max_align_t))
-        return std::malloc(size); // NOLINT(cppcoreguidelines-no-malloc)
-    return std::aligned_alloc(alignment, (size + alignment - 1) / alignment * alignment);
-}
-void* countedOrThrow(std::size_t size, std::size_t alignment = 0) {
-    if (void* p = counted(size, alignment)) return p;
-    throw std::bad_alloc();
-}
-void release(void* p) noexcept {
-    std::free(p); // NOLINT(cppcoreguidelines-no-malloc)
-}
-} // namespace
-
-void* operator new(std::size_t size) {
-    return countedOrThrow(size);
-}
-void* operator new[](std::size_t size) {
-    return countedOrThrow(size);
-}
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
-    return counted(size);
-}
-void* operator new[](std::size_t size, const std::nothrow_t&) noexcept {
-    return counted(size);
-}
-void* operator new(std::size_t size, std::align_val_t alignment) {
-    return countedOrThrow(size, std::size_t(alignment));
-}
-void* operator new[](std::size_t size, std::align_val_t alignment) {
-    return countedOrThrow(size, std::size_t(alignment));
-}
-void* operator new(std::size_t size, std::align_val_t alignment, const std::nothrow_t&) noexcept {
-    return counted(size, std::size_t(alignment));
-}
-void* operator new[](std::size_t size, std::align_val_t alignment, const std::nothrow_t&) noexcept {
-    return counted(size, std::size_t(alignment));
-}
-void operator delete(void* p) noexcept {
-    release(p);
-}
-void operator delete[](void* p) noexcept {
-    release(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-    release(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-    release(p);
-}
-void operator delete(void* p, const std::nothrow_t&) noexcept {
-    release(p);
-}
-void operator delete[](void* p, const std::nothrow_t&) noexcept {
-    release(p);
-}
-void operator delete(void* p, std::align_val_t) noexcept {
-    release(p);
-}
-void operator delete[](void* p, std::align_val_t) noexcept {
-    release(p);
-}
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept {
-    release(p);
-}
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept {
-    release(p);
-}
-void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept {
-    release(p);
-}
-void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept {
-    release(p);
-}
 
 namespace shadelab::test {
 namespace {
@@ -181,9 +88,9 @@ TEST_P(SteadyFrame, AllocatesNothing) {
         drawing.render(c.scene, c.scene.width,
                        c.scene.height); // the first frame of the scene builds its plan
         for (long& count : counts) {
-            const long before = gAllocations.load();
+            const long before = allocationCount();
             drawing.render(c.scene, c.scene.width, c.scene.height);
-            count = gAllocations.load() - before;
+            count = allocationCount() - before;
         }
     });
     renderer->setSpecialization(gl::Specialization::Values);

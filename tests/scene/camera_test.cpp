@@ -14,10 +14,13 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
+#include "input_error.h"
 #include "shadelab/errors.h"
 
 namespace shadelab {
 namespace {
+
+using test::inputErrorOf;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -44,15 +47,6 @@ std::string str(const glm::dvec3& v) {
 }
 
 // The message of the InputError `f` throws ("" if it throws nothing; another exception type fails the test).
-template <typename F> std::string inputErrorOf(F&& f) {
-    try {
-        f();
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
-}
-
 glm::dvec3 randomVector(std::mt19937_64& rng, double range) {
     std::uniform_real_distribution<double> d(-range, range);
     return {d(rng), d(rng), d(rng)};

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "input_error.h"
 #include "shadelab/errors.h"
 #include "shadelab/scene/lesson.h"
 #include "shadelab/scene/scene.h"
@@ -30,12 +31,7 @@ const SceneTextReader kNoFiles = filesOf({});
 
 // The message parseLesson gives, or "" when it accepts the text.
 std::string refusal(const std::string& text, const SceneTextReader& read = kNoFiles) {
-    try {
-        parseLesson(text, "lesson.json", read);
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
+    return test::inputErrorOf([&] { (void)parseLesson(text, "lesson.json", read); });
 }
 
 TEST(Lesson, StepsKeepThePreviousSceneAndApplyTheirChanges) {

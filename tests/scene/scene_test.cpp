@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include "input_error.h"
 #include "shadelab/errors.h"
 #include "shadelab/scene/scene.h"
 #include "shadelab/scene/scene_file.h"
@@ -45,23 +46,15 @@ constexpr const char* kDesignExample = R"({
 
 // The InputError message parseScene throws for `json`, or a test failure when it throws none.
 std::string parseError(const std::string& json) {
-    try {
-        parseScene(json, "scene.json");
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    ADD_FAILURE() << "no InputError for: " << json.substr(0, 200);
-    return {};
+    const std::string message = test::inputErrorOf([&] { (void)parseScene(json, "scene.json"); });
+    if (message.empty()) ADD_FAILURE() << "no InputError for: " << json.substr(0, 200);
+    return message;
 }
 
 std::string validateError(const Scene& scene) {
-    try {
-        validateScene(scene);
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    ADD_FAILURE() << "validateScene accepted the scene";
-    return {};
+    const std::string message = test::inputErrorOf([&] { validateScene(scene); });
+    if (message.empty()) ADD_FAILURE() << "validateScene accepted the scene";
+    return message;
 }
 
 ::testing::AssertionResult containsAll(const std::string& message, const std::vector<std::string>& parts) {
@@ -619,13 +612,9 @@ protected:
     }
 
     std::string loadError(const fs::path& path) {
-        try {
-            loadScene(path);
-        } catch (const InputError& e) {
-            return e.what();
-        }
-        ADD_FAILURE() << "no InputError for " << path;
-        return {};
+        const std::string message = test::inputErrorOf([&] { (void)loadScene(path); });
+        if (message.empty()) ADD_FAILURE() << "no InputError for " << path;
+        return message;
     }
 
     fs::path dir_;
