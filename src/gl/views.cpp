@@ -145,13 +145,21 @@ void Views::renderModeAndExact(const Scene& scene, int width, int height) {
     renderer_.setExactToon(false);
 }
 
+// DESIGN §6's interior error, measured on the GPU (error.frag.glsl, then reduce.frag.glsl) and drawn as a
+// heatmap with its legend and figures.
 void Views::drawError(const Scene& scene, int width, int height, int x, unsigned destination) {
     renderModeAndExact(scene, width, height);
+    glDisable(GL_DEPTH_TEST);
+    glBindVertexArray(programs_->images.emptyVertexArray().get());
+    measureError(width, height);
+    drawHeatmap(scene, width, height, x, destination);
+}
+
+// The mode's and exact's renders compared pixel by pixel into targets_->error, then reduced to one texel
+// read back into figures_.
+void Views::measureError(int width, int height) {
     Targets& t = *targets_;
     const Programs& p = *programs_;
-    glDisable(GL_DEPTH_TEST);
-    glBindVertexArray(p.images.emptyVertexArray().get());
-
     // Compare pass: the per-pixel error and the interior.
     t.error.fit(width, height, ColorFormat::Rgba32F, DepthFormat::None);
     t.error.bind();
@@ -185,7 +193,13 @@ void Views::drawError(const Scene& scene, int width, int height, int x, unsigned
     figures_.interiorMean = total[1] > 0 ? double(total[0]) / double(total[1]) : 0;
     figures_.interiorMax = total[2];
     figures_.scale = niceCeiling(figures_.interiorMax);
+}
 
+// targets_->error as a heatmap over the viewport of `destination`, the legend's bar and its two ends, and
+// the figures' label.
+void Views::drawHeatmap(const Scene& scene, int width, int height, int x, unsigned destination) {
+    const Targets& t = *targets_;
+    const Programs& p = *programs_;
     // The heatmap over the viewport, then its legend and figures.
     glBindFramebuffer(GL_FRAMEBUFFER, destination);
     glViewport(x, 0, width, height);

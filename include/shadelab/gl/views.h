@@ -48,6 +48,8 @@ private:
     struct Programs;
     struct Labels;
     void drawError(const Scene& scene, int width, int height, int x, unsigned destination);
+    void measureError(int width, int height);
+    void drawHeatmap(const Scene& scene, int width, int height, int x, unsigned destination);
     void drawSplit(const Scene& scene, int width, int height, int x);
     void drawProfile(const Scene& scene, int width, int height, int x, unsigned destination);
     void drawOutside(const Scene& scene, int width, int height, int x);
