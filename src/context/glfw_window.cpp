@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <string>
 #include <thread>
+#include <utility>
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -63,18 +64,86 @@ struct Window::State {
     bool cursorKnown = false;
     double pressX = 0, pressY = 0, travelled = 0; // the left button's press, and how far it moved since
 
-    // The cursor (lastX, lastY) to the pointer handler, in framebuffer pixels, which differ from window
-    // coordinates on a scaled display.
-    void reportPointer() const {
-        if (!pointerHandler) return;
+    // Window coordinates (x, y) in framebuffer pixels, which differ from them on a scaled display.
+    std::pair<double, double> toFramebuffer(double x, double y) const {
         int windowWidth = 0, windowHeight = 0, width = 0, height = 0;
         glfwGetWindowSize(window, &windowWidth, &windowHeight);
         glfwGetFramebufferSize(window, &width, &height);
         const double sx = windowWidth > 0 ? double(width) / windowWidth : 1;
         const double sy = windowHeight > 0 ? double(height) / windowHeight : 1;
-        pointerHandler(lastX * sx, lastY * sy, dragging);
+        return {x * sx, y * sy};
+    }
+    // The cursor (lastX, lastY) to the pointer handler.
+    void reportPointer() const {
+        if (!pointerHandler) return;
+        const auto [x, y] = toFramebuffer(lastX, lastY);
+        pointerHandler(x, y, dragging);
+    }
+    // A button pressed or released: the left one drags, or clicks where it was pressed if it moved less
+    // than kClickSlopPixels; the right one drags the light.
+    void buttonChanged(int button, int action) {
+        if (!cursorKnown) glfwGetCursorPos(window, &lastX, &lastY);
+        if (button == GLFW_MOUSE_BUTTON_RIGHT) rightDragging = action == GLFW_PRESS;
+        if (button != GLFW_MOUSE_BUTTON_LEFT) return;
+        dragging = action == GLFW_PRESS;
+        reportPointer();
+        if (action == GLFW_PRESS) {
+            pressX = lastX;
+            pressY = lastY;
+            travelled = 0;
+        } else if (travelled < kClickSlopPixels && clickHandler) {
+            const auto [x, y] = toFramebuffer(pressX, pressY);
+            clickHandler(x, y);
+        }
+    }
+    void cursorMoved(double x, double y) {
+        const double fromX = lastX, fromY = lastY;
+        lastX = x; // the pointer handler sees the new position before the drag handler moves
+        lastY = y;
+        reportPointer();
+        lastX = fromX;
+        lastY = fromY;
+        if (dragging) travelled += std::abs(x - lastX) + std::abs(y - lastY);
+        if (dragging && dragHandler) dragHandler(x - lastX, y - lastY);
+        if (rightDragging && rightDragHandler) rightDragHandler(x - lastX, y - lastY);
+        lastX = x;
+        lastY = y;
+        cursorKnown = true;
     }
 };
+
+namespace {
+
+// OpenGL 3.3 core (forward-compatible) or OpenGL ES 3.0, a 24-bit depth buffer, KHR_debug if asked.
+void requestContext(Api api, bool debugContext) {
+    if (api == Api::Gles) {
+        glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API);
+        glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+        glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 0);
+    } else {
+        glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+        glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+        glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+        glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    }
+    glfwWindowHint(GLFW_DEPTH_BITS, 24);
+    glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, debugContext ? GLFW_TRUE : GLFW_FALSE);
+}
+
+// Not the scene's image size (often 256×256, too small for the panel): a size fit for the screen, at most
+// nine tenths of its work area.
+void fitToScreen(int& width, int& height) {
+    width = Window::kDefaultWidth;
+    height = Window::kDefaultHeight;
+    int x = 0, y = 0, areaWidth = 0, areaHeight = 0;
+    if (GLFWmonitor* monitor = glfwGetPrimaryMonitor()) {
+        glfwGetMonitorWorkarea(monitor, &x, &y, &areaWidth, &areaHeight);
+        if (areaWidth > 0) width = std::min(width, areaWidth * 9 / 10);
+        if (areaHeight > 0) height = std::min(height, areaHeight * 9 / 10);
+    }
+}
+
+} // namespace
 
 bool Window::displayNamed() {
     const char* x11 = std::getenv("DISPLAY");
@@ -112,29 +181,8 @@ std::optional<std::string> Window::unresponsiveDisplay(double seconds) {
 Window::Window(int width, int height, const std::string& title, bool debugContext, Api api)
     : state_(std::make_unique<State>()), api_(api) {
     if (!glfwInit()) throw DisplayUnavailable("window: cannot open the display: " + lastGlfwError());
-    if (api == Api::Gles) {
-        glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API);
-        glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
-        glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 0);
-    } else {
-        glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
-        glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
-        glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-        glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-    }
-    glfwWindowHint(GLFW_DEPTH_BITS, 24);
-    glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, debugContext ? GLFW_TRUE : GLFW_FALSE);
-    if (width <= 0 || height <= 0) {
-        // Not the scene's image size (often 256×256, too small for the panel): a size fit for the screen.
-        width = kDefaultWidth;
-        height = kDefaultHeight;
-        int x = 0, y = 0, areaWidth = 0, areaHeight = 0;
-        if (GLFWmonitor* monitor = glfwGetPrimaryMonitor()) {
-            glfwGetMonitorWorkarea(monitor, &x, &y, &areaWidth, &areaHeight);
-            if (areaWidth > 0) width = std::min(width, areaWidth * 9 / 10);
-            if (areaHeight > 0) height = std::min(height, areaHeight * 9 / 10);
-        }
-    }
+    requestContext(api, debugContext);
+    if (width <= 0 || height <= 0) fitToScreen(width, height);
     state_->window = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
     if (!state_->window) {
         const std::string error = lastGlfwError();
@@ -146,53 +194,25 @@ Window::Window(int width, int height, const std::string& title, bool debugContex
     glfwSwapInterval(1);
     gl::loadGl(glfwGetProcAddress, "glfw", api);
     glfwSetWindowUserPointer(state_->window, state_.get());
+    // Each callback finds the window's state through the user pointer (a C callback captures nothing).
+    static constexpr auto stateOf = [](GLFWwindow* w) -> State& {
+        return *static_cast<State*>(glfwGetWindowUserPointer(w));
+    };
     glfwSetKeyCallback(state_->window, [](GLFWwindow* w, int key, int, int action, int) {
-        auto* state = static_cast<State*>(glfwGetWindowUserPointer(w));
-        if (action == GLFW_PRESS && state->keyHandler) state->keyHandler(key);
+        const State& state = stateOf(w);
+        if (action == GLFW_PRESS && state.keyHandler) state.keyHandler(key);
     });
     glfwSetMouseButtonCallback(state_->window, [](GLFWwindow* w, int button, int action, int) {
-        auto* state = static_cast<State*>(glfwGetWindowUserPointer(w));
-        if (!state->cursorKnown) glfwGetCursorPos(w, &state->lastX, &state->lastY);
-        if (button == GLFW_MOUSE_BUTTON_RIGHT) state->rightDragging = action == GLFW_PRESS;
-        if (button != GLFW_MOUSE_BUTTON_LEFT) return;
-        state->dragging = action == GLFW_PRESS;
-        state->reportPointer();
-        if (action == GLFW_PRESS) {
-            state->pressX = state->lastX;
-            state->pressY = state->lastY;
-            state->travelled = 0;
-        } else if (state->travelled < kClickSlopPixels && state->clickHandler) {
-            // In framebuffer pixels, which differ from window coordinates on a scaled display.
-            int windowWidth = 0, windowHeight = 0, width = 0, height = 0;
-            glfwGetWindowSize(w, &windowWidth, &windowHeight);
-            glfwGetFramebufferSize(w, &width, &height);
-            const double sx = windowWidth > 0 ? double(width) / windowWidth : 1;
-            const double sy = windowHeight > 0 ? double(height) / windowHeight : 1;
-            state->clickHandler(state->pressX * sx, state->pressY * sy);
-        }
+        stateOf(w).buttonChanged(button, action);
     });
-    glfwSetCursorPosCallback(state_->window, [](GLFWwindow* w, double x, double y) {
-        auto* state = static_cast<State*>(glfwGetWindowUserPointer(w));
-        const double fromX = state->lastX, fromY = state->lastY;
-        state->lastX = x; // the pointer handler sees the new position before the drag handler moves
-        state->lastY = y;
-        state->reportPointer();
-        state->lastX = fromX;
-        state->lastY = fromY;
-        if (state->dragging) state->travelled += std::abs(x - state->lastX) + std::abs(y - state->lastY);
-        if (state->dragging && state->dragHandler) state->dragHandler(x - state->lastX, y - state->lastY);
-        if (state->rightDragging && state->rightDragHandler)
-            state->rightDragHandler(x - state->lastX, y - state->lastY);
-        state->lastX = x;
-        state->lastY = y;
-        state->cursorKnown = true;
-    });
+    glfwSetCursorPosCallback(state_->window,
+                             [](GLFWwindow* w, double x, double y) { stateOf(w).cursorMoved(x, y); });
     glfwSetCursorEnterCallback(state_->window, [](GLFWwindow* w, int) {
-        static_cast<State*>(glfwGetWindowUserPointer(w))->cursorKnown = false; // moved outside meanwhile
+        stateOf(w).cursorKnown = false; // moved outside meanwhile
     });
     glfwSetScrollCallback(state_->window, [](GLFWwindow* w, double, double steps) {
-        auto* state = static_cast<State*>(glfwGetWindowUserPointer(w));
-        if (state->scrollHandler) state->scrollHandler(steps);
+        const State& state = stateOf(w);
+        if (state.scrollHandler) state.scrollHandler(steps);
     });
 }
 
