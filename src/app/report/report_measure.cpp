@@ -103,6 +103,62 @@ void setGeometry(const Scene& scene, const std::map<int, BuiltLevel>& built, Rep
     }
 }
 
+// The distinct levels the objects of `base` use (what gets uploaded), each built and measured.
+std::map<int, BuiltLevel> buildLevels(const Scene& base) {
+    std::map<int, BuiltLevel> built;
+    for (const SceneObject& object : base.objects) {
+        const int level = subdivisionLevel(base, object);
+        if (built.count(level)) continue;
+        BuiltLevel& b = built[level];
+        b.buildMs = medianOneOffMs(
+            kOneOffRepeats, [&] { b.mesh = SphereMesh{}; },
+            [&] { b.mesh = buildSphere(level, base.vertexNormals); });
+        b.radialDeviation = maxRadialDeviation(b.mesh);
+        b.normalErrorDeg = maxFaceNormalErrorDeg(b.mesh);
+    }
+    return built;
+}
+
+// What the configurations of one report share: the exact images (per lighting model × toon or not: the
+// exact image depends on nothing else the report varies) and the compile times per program variant.
+struct ReportCaches {
+    std::map<std::pair<LightingModel, bool>, ReferenceImage> references;
+    std::map<gl::ProgramVariant, double> compileTimes;
+};
+
+// One configuration's row: its geometry, compile and frame times, and its error against the reference.
+void measureRow(GlRun& gl, const Scene& configured, const std::map<int, BuiltLevel>& built,
+                const ReportOptions& options, ReportCaches& caches, ReportRow& row) {
+    for (const auto& [level, b] : built) row.meshBuildMs += b.buildMs;
+    setGeometry(configured, built, row);
+    // The first object's program (with values compiled in: one per distinct material).
+    gl::ProgramVariant variant =
+        gl::ProgramVariant::forScene(configured, gl.renderer.specialization() != gl::Specialization::None);
+    if (gl.renderer.specialization() == gl::Specialization::Values && !configured.objects.empty())
+        variant = variant.withValues(configured, configured.objects[0].material);
+    if (!caches.compileTimes.count(variant))
+        caches.compileTimes[variant] = compileMs(gl, variant, layoutOf(configured.shading));
+    row.compileMs = caches.compileTimes[variant];
+    measureTime(gl, configured, built, options, row);
+
+    const bool toon = configured.shading == ShadingMode::Toon;
+    auto reference = caches.references.find({configured.lighting, toon});
+    if (reference == caches.references.end())
+        reference =
+            caches.references
+                .emplace(std::pair{configured.lighting, toon}, renderReference(withTrueNormals(configured)))
+                .first;
+    gl.errorTarget.bind();
+    gl.renderer.render(configured, configured.width, configured.height);
+    const ReportError e = measureError(gl.errorTarget.readFloat(), reference->second);
+    row.interiorMeanError = e.interiorMean;
+    row.interiorMaxError = e.interiorMax;
+    row.interiorPixels = e.interiorPixels;
+    row.psnrDb = e.psnrDb;
+    row.ssim = e.ssim;
+    row.coverageMismatch = e.coverageMismatch;
+}
+
 } // namespace
 
 std::vector<ReportRow> measureReport(HeadlessContext& context, const Scene& scene,
@@ -121,26 +177,13 @@ std::vector<ReportRow> measureReport(HeadlessContext& context, const Scene& scen
 
     context.makeCurrent();
     GlRun gl(scene.width, scene.height);
-    // Per lighting model × toon or not: the exact image depends on nothing else the report varies.
-    std::map<std::pair<LightingModel, bool>, ReferenceImage> references;
-    std::map<gl::ProgramVariant, double> compileTimes;
+    ReportCaches caches;
     int done = 0;
-
     for (std::size_t c = 0; c < perMode; ++c) {
         Scene base = scene;
         base.view = View{}; // the report times and measures the shading itself, not a teaching view of it
         for (SceneObject& object : base.objects) object.subdivisions = levelConfigs[c];
-        std::map<int, BuiltLevel> built; // the distinct levels the objects use: what gets uploaded
-        for (const SceneObject& object : base.objects) {
-            const int level = subdivisionLevel(base, object);
-            if (built.count(level)) continue;
-            BuiltLevel& b = built[level];
-            b.buildMs = medianOneOffMs(
-                kOneOffRepeats, [&] { b.mesh = SphereMesh{}; },
-                [&] { b.mesh = buildSphere(level, scene.vertexNormals); });
-            b.radialDeviation = maxRadialDeviation(b.mesh);
-            b.normalErrorDeg = maxFaceNormalErrorDeg(b.mesh);
-        }
+        const std::map<int, BuiltLevel> built = buildLevels(base);
         for (std::size_t l = 0; l < kLightingModels.size(); ++l) {
             for (std::size_t s = 0; s < kShadingModes.size(); ++s) {
                 Scene configured = base;
@@ -149,39 +192,11 @@ std::vector<ReportRow> measureReport(HeadlessContext& context, const Scene& scen
                 if (progress)
                     progress(done, total,
                              configurationName(configured.shading, configured.lighting, levelConfigs[c]));
-
                 ReportRow& row = rows[(l * kShadingModes.size() + s) * perMode + c];
                 row.shading = configured.shading;
                 row.lighting = configured.lighting;
                 row.autoLevel = levelConfigs[c] == kAutoSubdivisions;
-                for (const auto& [level, b] : built) row.meshBuildMs += b.buildMs;
-                setGeometry(configured, built, row);
-                // The first object's program (with values compiled in: one per distinct material).
-                gl::ProgramVariant variant = gl::ProgramVariant::forScene(
-                    configured, gl.renderer.specialization() != gl::Specialization::None);
-                if (gl.renderer.specialization() == gl::Specialization::Values && !configured.objects.empty())
-                    variant = variant.withValues(configured, configured.objects[0].material);
-                if (!compileTimes.count(variant))
-                    compileTimes[variant] = compileMs(gl, variant, layoutOf(configured.shading));
-                row.compileMs = compileTimes[variant];
-                measureTime(gl, configured, built, options, row);
-
-                const bool toon = configured.shading == ShadingMode::Toon;
-                auto reference = references.find({configured.lighting, toon});
-                if (reference == references.end())
-                    reference = references
-                                    .emplace(std::pair{configured.lighting, toon},
-                                             renderReference(withTrueNormals(configured)))
-                                    .first;
-                gl.errorTarget.bind();
-                gl.renderer.render(configured, configured.width, configured.height);
-                const ReportError e = measureError(gl.errorTarget.readFloat(), reference->second);
-                row.interiorMeanError = e.interiorMean;
-                row.interiorMaxError = e.interiorMax;
-                row.interiorPixels = e.interiorPixels;
-                row.psnrDb = e.psnrDb;
-                row.ssim = e.ssim;
-                row.coverageMismatch = e.coverageMismatch;
+                measureRow(gl, configured, built, options, caches, row);
                 ++done;
             }
         }
