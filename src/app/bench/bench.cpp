@@ -64,10 +64,10 @@ constexpr std::pair<gl::Specialization, const char*> kSpecializations[] = {
     {gl::Specialization::Values, "values"},
 };
 
-// Scene-specialized against uber programs, fixed level 8 against auto, the two flat layouts, and the
-// compile time of each program variant.
-std::vector<RatioSpec> registerSpecializationBenchmarks(Gpu& gpu) {
-    std::vector<RatioSpec> ratios;
+namespace {
+
+// Each issue scene under each specialization, at level 8 and auto; the ratios between them.
+void registerSpecializedFrames(Gpu& gpu, std::vector<RatioSpec>& ratios) {
     for (const BenchScene& s : issueScenes(gpu.options)) {
         for (const auto& [specialization, label] : kSpecializations) {
             for (const int level : {8, kAutoSubdivisions}) {
@@ -86,8 +86,23 @@ std::vector<RatioSpec> registerSpecializationBenchmarks(Gpu& gpu) {
             }
         }
     }
-    // Flat shading: three vertices per face with face data, or shared vertices and a geometry shader —
-    // desktop only (DESIGN §7): on OpenGL ES the second is left out, and said so.
+    for (const BenchScene& s : issueScenes(gpu.options)) {
+        const std::string base = std::string("frame/") + s.name + "/";
+        ratios.push_back({std::string(s.name) + ": uber / specialized (level 8)", base + "uber/level8",
+                          base + "specialized/level8"});
+        ratios.push_back({std::string(s.name) + ": uber / specialized (auto)", base + "uber/auto",
+                          base + "specialized/auto"});
+        ratios.push_back({std::string(s.name) + ": specialized / values (auto)", base + "specialized/auto",
+                          base + "values/auto"});
+        ratios.push_back({std::string(s.name) + ": level 8 / auto (values)", base + "values/level8",
+                          base + "values/auto"});
+    }
+}
+
+// Flat shading: three vertices per face with face data, or shared vertices and a geometry shader; the
+// ratio between them.
+void registerFlatLayouts(Gpu& gpu, std::vector<RatioSpec>& ratios) {
+    // The geometry stage is desktop only (DESIGN §7): on OpenGL ES the second is left out, and said so.
     const bool geometryStage = gl::capabilities().geometryShaders;
     if (!geometryStage)
         std::printf("bench: %s has no geometry stage: frame/flat-layout/geometry-shader is left out\n",
@@ -116,8 +131,16 @@ std::vector<RatioSpec> registerSpecializationBenchmarks(Gpu& gpu) {
                 ->Unit(benchmark::kMillisecond);
         }
     }
-    // Compile and link time of each program variant the scenes above use, uber and specialized, up to its
-    // first draw: Mesa translates to machine code (LLVM) at the first draw, not at glLinkProgram.
+    for (const char* level : {"level6", "level8"})
+        if (geometryStage)
+            ratios.push_back({std::string("flat ") + level + ": geometry shader / duplicated vertices",
+                              std::string("frame/flat-layout/geometry-shader/") + level,
+                              std::string("frame/flat-layout/duplicated/") + level});
+}
+
+// Compile and link time of each program variant the scenes above use, uber and specialized, up to its
+// first draw: Mesa translates to machine code (LLVM) at the first draw, not at glLinkProgram.
+void registerCompileTimes(Gpu& gpu) {
     std::map<std::string, gl::ProgramVariant> variants;
     for (const BenchScene& s : issueScenes(gpu.options))
         for (const bool specialized : {false, true}) {
@@ -144,23 +167,17 @@ std::vector<RatioSpec> registerSpecializationBenchmarks(Gpu& gpu) {
             ->Iterations(5)
             ->Unit(benchmark::kMillisecond);
     }
+}
 
-    for (const BenchScene& s : issueScenes(gpu.options)) {
-        const std::string base = std::string("frame/") + s.name + "/";
-        ratios.push_back({std::string(s.name) + ": uber / specialized (level 8)", base + "uber/level8",
-                          base + "specialized/level8"});
-        ratios.push_back({std::string(s.name) + ": uber / specialized (auto)", base + "uber/auto",
-                          base + "specialized/auto"});
-        ratios.push_back({std::string(s.name) + ": specialized / values (auto)", base + "specialized/auto",
-                          base + "values/auto"});
-        ratios.push_back({std::string(s.name) + ": level 8 / auto (values)", base + "values/level8",
-                          base + "values/auto"});
-    }
-    for (const char* level : {"level6", "level8"})
-        if (geometryStage)
-            ratios.push_back({std::string("flat ") + level + ": geometry shader / duplicated vertices",
-                              std::string("frame/flat-layout/geometry-shader/") + level,
-                              std::string("frame/flat-layout/duplicated/") + level});
+} // namespace
+
+// Scene-specialized against uber programs, fixed level 8 against auto, the two flat layouts, and the
+// compile time of each program variant.
+std::vector<RatioSpec> registerSpecializationBenchmarks(Gpu& gpu) {
+    std::vector<RatioSpec> ratios;
+    registerSpecializedFrames(gpu, ratios);
+    registerFlatLayouts(gpu, ratios);
+    registerCompileTimes(gpu);
     return ratios;
 }
 
