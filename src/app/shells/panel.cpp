@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -157,120 +159,137 @@ bool Panel::wantsMouse() const {
     return ImGui::GetIO().WantCaptureMouse;
 }
 
+namespace {
+
+// The lecture's three switches: which term of the lighting sum is drawn (K cycles them), the perspective
+// matrix (U: WebGL's, or the lecture's before its -1, everything clipped) and what transforms normals
+// (J: the right matrix, or M itself, the lecture's wrong one).
+void lectureSwitches(Scene& scene) {
+    ImGui::TextUnformatted("term (K):");
+    for (const LightingTerm term : kLightingTerms) {
+        ImGui::SameLine();
+        if (ImGui::RadioButton(std::string(toString(term)).c_str(), scene.term == term)) scene.term = term;
+    }
+    ImGui::TextUnformatted("perspective matrix (U):");
+    for (const PerspectiveMatrix matrix : kPerspectiveMatrices) {
+        ImGui::SameLine();
+        const char* label = matrix == PerspectiveMatrix::Unnegated ? "unnegated" : "WebGL (-1)";
+        if (ImGui::RadioButton(label, scene.perspectiveMatrix == matrix)) scene.perspectiveMatrix = matrix;
+    }
+    ImGui::TextUnformatted("normals by (J):");
+    for (const NormalMatrixRule rule : kNormalMatrixRules) {
+        ImGui::SameLine();
+        const char* label = rule == NormalMatrixRule::Model ? "M (wrong)" : "(M^-1)^T";
+        if (ImGui::RadioButton(label, scene.normalMatrix == rule)) scene.normalMatrix = rule;
+    }
+}
+
+// The material and scale of the chosen object (a probe click picks one), or of all of them when "all
+// objects" (0) is chosen. An uneven scale makes an ellipsoid, where normals by M (J) go wrong.
+void materialSection(DemoState& state) {
+    const Scene& scene = state.scene();
+    const int count = int(scene.objects.size());
+    if (count > 1) {
+        int chosen = state.editedObjectNumber();
+        if (ImGui::DragInt("object (0: all)", &chosen, 0.1f, 0, count,
+                           chosen == 0 ? "all objects" : "object %d", ImGuiSliderFlags_AlwaysClamp))
+            state.chooseEditedObject(chosen);
+    }
+    Material edited = scene.objects[*state.shownObject()].material;
+    if (materialControls(edited)) state.editMaterial(edited);
+    glm::vec3 scale(state.scene().objects[*state.shownObject()].scale);
+    if (ImGui::DragFloat3("scale x y z", &scale.x, 0.01f, 0.1f, 4.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp))
+        state.editScale(glm::dvec3(scale));
+}
+
+// The keys, centred and readable in any window: at most the window less a margin, lines wrapped to its
+// width, and a scroll bar when the window is too short for all of it.
+void helpWindow() {
+    static const std::vector<std::pair<std::string, std::string>> kRows = keyHelpRows(); // made once
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    const float width = std::min(640.0f, std::max(120.0f, display.x - 16));
+    ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Always, {0.5f, 0.5f});
+    ImGui::SetNextWindowSizeConstraints({width, 0}, {width, std::max(60.0f, display.y - 16)});
+    ImGui::SetNextWindowSize({width, 0}, ImGuiCond_Always);
+    // Opaque (the panel's text must not show through), and a table: a description that wraps stays in its
+    // column instead of running back under the keys.
+    ImGui::SetNextWindowBgAlpha(1.0f);
+    ImGui::Begin("keys", nullptr, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoResize);
+    if (ImGui::BeginTable("key table", 2, ImGuiTableFlags_SizingFixedFit)) {
+        ImGui::TableSetupColumn("key", ImGuiTableColumnFlags_WidthFixed);
+        ImGui::TableSetupColumn("action", ImGuiTableColumnFlags_WidthStretch);
+        for (const auto& [keys, action] : kRows) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(keys.c_str());
+            ImGui::TableNextColumn();
+            ImGui::TextWrapped("%s", action.c_str());
+        }
+        ImGui::EndTable();
+    }
+    ImGui::End();
+}
+
+} // namespace
+
+// e, u, v, w, M_cam, the projection matrix, and the shown object's M and normal matrix, live.
+void Panel::matricesSection(const DemoState& state) {
+    if (matricesFor_.changed({state.drawn(), state.shownObject()}))
+        matricesText_ = matricesPanelText(state.drawn(), state.shownObject());
+    ImGui::TextUnformatted(matricesText_.c_str());
+}
+
+// The probe's table, or how to make one.
+void Panel::probeSection(DemoState& state) {
+    const Scene drawn = state.drawn();
+    if (probeFor_.changed({state.probe(), drawn.shading, drawn.lighting})) probeText_ = probeText(state);
+    if (!probeText_.empty()) {
+        ImGui::TextUnformatted(probeText_.c_str());
+        if (ImGui::Button("remove the probe")) state.clearProbe();
+    } else {
+        ImGui::TextUnformatted("Click a point of an object: its l, n, v and r or h are drawn there, and "
+                               "the ambient, diffuse and specular terms of the current mode show here "
+                               "beside the exact ones. Right-drag moves the light; W shows the mesh.");
+    }
+}
+
+// Docked: the whole left column, beside the picture rather than over it.
+void Panel::controlsWindow(DemoState& state, const std::string& status, int columnWidth) {
+    Scene& scene = state.scene();
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos({0, 0}, ImGuiCond_Always);
+    ImGui::SetNextWindowSize({float(columnWidth), display.y}, ImGuiCond_Always);
+    ImGui::Begin("shadelab controls (C hides, H helps)", nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    ImGui::PushTextWrapPos(0.0f);
+    if (state.lesson() != nullptr) lessonControls(state);
+    ImGui::TextUnformatted(status.c_str());
+    ImGui::Checkbox("B keeps the highlight size (beta = 4 alpha)", &state.matchHighlight);
+    lectureSwitches(scene);
+    if (!scene.objects.empty() && ImGui::CollapsingHeader("material", ImGuiTreeNodeFlags_DefaultOpen))
+        materialSection(state);
+    if (ImGui::CollapsingHeader("view volume (fovy or l r b t, near, far)"))
+        viewVolumeControls(state, volumeRefusal_);
+    if (ImGui::CollapsingHeader("matrices (e u v w, M_cam, M_proj, M, N)")) matricesSection(state);
+    if (ImGui::CollapsingHeader("lights"))
+        for (std::size_t i = 0; i < scene.lights.size(); ++i) lightControls(scene.lights[i], int(i));
+    if (ImGui::CollapsingHeader("probe (click the sphere)", ImGuiTreeNodeFlags_DefaultOpen))
+        probeSection(state);
+    if (ImGui::CollapsingHeader("toon")) {
+        int bands = scene.toonBands;
+        if (ImGui::SliderInt("bands", &bands, kMinToonBands, kMaxToonBands))
+            scene.toonBands = std::clamp(bands, kMinToonBands, kMaxToonBands);
+    }
+    ImGui::PopTextWrapPos();
+    ImGui::End();
+}
+
 void Panel::draw(DemoState& state, const std::string& status, int columnWidth) {
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
-    Scene& scene = state.scene();
-    if (state.showPanel) {
-        // Docked: the whole left column, beside the picture rather than over it.
-        const ImVec2 display = ImGui::GetIO().DisplaySize;
-        ImGui::SetNextWindowPos({0, 0}, ImGuiCond_Always);
-        ImGui::SetNextWindowSize({float(columnWidth), display.y}, ImGuiCond_Always);
-        ImGui::Begin("shadelab controls (C hides, H helps)", nullptr,
-                     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
-        ImGui::PushTextWrapPos(0.0f);
-        if (state.lesson() != nullptr) lessonControls(state);
-        ImGui::TextUnformatted(status.c_str());
-        ImGui::Checkbox("B keeps the highlight size (beta = 4 alpha)", &state.matchHighlight);
-        // Which term of the lighting sum is drawn (K cycles them).
-        ImGui::TextUnformatted("term (K):");
-        for (const LightingTerm term : kLightingTerms) {
-            ImGui::SameLine();
-            if (ImGui::RadioButton(std::string(toString(term)).c_str(), scene.term == term))
-                scene.term = term;
-        }
-        // The perspective matrix (U toggles): WebGL's, or the lecture's before its -1 (everything clipped).
-        ImGui::TextUnformatted("perspective matrix (U):");
-        for (const PerspectiveMatrix matrix : kPerspectiveMatrices) {
-            ImGui::SameLine();
-            const char* label = matrix == PerspectiveMatrix::Unnegated ? "unnegated" : "WebGL (-1)";
-            if (ImGui::RadioButton(label, scene.perspectiveMatrix == matrix))
-                scene.perspectiveMatrix = matrix;
-        }
-        // What transforms normals (J toggles): the right matrix, or M itself, the lecture's wrong one.
-        ImGui::TextUnformatted("normals by (J):");
-        for (const NormalMatrixRule rule : kNormalMatrixRules) {
-            ImGui::SameLine();
-            const char* label = rule == NormalMatrixRule::Model ? "M (wrong)" : "(M^-1)^T";
-            if (ImGui::RadioButton(label, scene.normalMatrix == rule)) scene.normalMatrix = rule;
-        }
-        if (!scene.objects.empty() && ImGui::CollapsingHeader("material", ImGuiTreeNodeFlags_DefaultOpen)) {
-            // An edit applies to the chosen object (a probe click picks one), or to all of them only when
-            // "all objects" (0) is chosen.
-            const int count = int(scene.objects.size());
-            if (count > 1) {
-                int chosen = state.editedObjectNumber();
-                if (ImGui::DragInt("object (0: all)", &chosen, 0.1f, 0, count,
-                                   chosen == 0 ? "all objects" : "object %d", ImGuiSliderFlags_AlwaysClamp))
-                    state.chooseEditedObject(chosen);
-            }
-            Material edited = scene.objects[*state.shownObject()].material;
-            if (materialControls(edited)) state.editMaterial(edited);
-            // The object's scale: an uneven one makes an ellipsoid, where normals by M (J) go wrong.
-            glm::vec3 scale(scene.objects[*state.shownObject()].scale);
-            if (ImGui::DragFloat3("scale x y z", &scale.x, 0.01f, 0.1f, 4.0f, "%.2f",
-                                  ImGuiSliderFlags_AlwaysClamp))
-                state.editScale(glm::dvec3(scale));
-        }
-        if (ImGui::CollapsingHeader("view volume (fovy or l r b t, near, far)"))
-            viewVolumeControls(state, volumeRefusal_);
-        // e, u, v, w, M_cam, the projection matrix, and the shown object's M and normal matrix, live.
-        if (ImGui::CollapsingHeader("matrices (e u v w, M_cam, M_proj, M, N)")) {
-            if (matricesFor_.changed({state.drawn(), state.shownObject()}))
-                matricesText_ = matricesPanelText(state.drawn(), state.shownObject());
-            ImGui::TextUnformatted(matricesText_.c_str());
-        }
-        if (ImGui::CollapsingHeader("lights"))
-            for (std::size_t i = 0; i < scene.lights.size(); ++i) lightControls(scene.lights[i], int(i));
-        if (ImGui::CollapsingHeader("probe (click the sphere)", ImGuiTreeNodeFlags_DefaultOpen)) {
-            const Scene drawn = state.drawn();
-            if (probeFor_.changed({state.probe(), drawn.shading, drawn.lighting}))
-                probeText_ = probeText(state);
-            if (!probeText_.empty()) {
-                ImGui::TextUnformatted(probeText_.c_str());
-                if (ImGui::Button("remove the probe")) state.clearProbe();
-            } else {
-                ImGui::TextUnformatted(
-                    "Click a point of an object: its l, n, v and r or h are drawn there, and "
-                    "the ambient, diffuse and specular terms of the current mode show here "
-                    "beside the exact ones. Right-drag moves the light; W shows the mesh.");
-            }
-        }
-        if (ImGui::CollapsingHeader("toon")) {
-            int bands = scene.toonBands;
-            if (ImGui::SliderInt("bands", &bands, kMinToonBands, kMaxToonBands))
-                scene.toonBands = std::clamp(bands, kMinToonBands, kMaxToonBands);
-        }
-        ImGui::PopTextWrapPos();
-        ImGui::End();
-    }
-    if (state.showHelp) {
-        // Readable in any window: at most the window less a margin, lines wrapped to its width, and a
-        // scroll bar when the window is too short for all of it.
-        const ImVec2 display = ImGui::GetIO().DisplaySize;
-        const float width = std::min(640.0f, std::max(120.0f, display.x - 16));
-        ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Always, {0.5f, 0.5f});
-        ImGui::SetNextWindowSizeConstraints({width, 0}, {width, std::max(60.0f, display.y - 16)});
-        ImGui::SetNextWindowSize({width, 0}, ImGuiCond_Always);
-        // Opaque (the panel's text must not show through), and a table: a description that wraps stays in
-        // its column instead of running back under the keys.
-        ImGui::SetNextWindowBgAlpha(1.0f);
-        ImGui::Begin("keys", nullptr, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoResize);
-        if (ImGui::BeginTable("key table", 2, ImGuiTableFlags_SizingFixedFit)) {
-            ImGui::TableSetupColumn("key", ImGuiTableColumnFlags_WidthFixed);
-            ImGui::TableSetupColumn("action", ImGuiTableColumnFlags_WidthStretch);
-            for (const auto& [keys, action] : keyHelpRows()) {
-                ImGui::TableNextRow();
-                ImGui::TableNextColumn();
-                ImGui::TextUnformatted(keys.c_str());
-                ImGui::TableNextColumn();
-                ImGui::TextWrapped("%s", action.c_str());
-            }
-            ImGui::EndTable();
-        }
-        ImGui::End();
-    }
+    if (state.showPanel) controlsWindow(state, status, columnWidth);
+    if (state.showHelp) helpWindow();
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     // Debian builds Dear ImGui's OpenGL 3 backend for desktop GL only (no IMGUI_IMPL_OPENGL_ES3): on an

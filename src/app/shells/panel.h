@@ -35,6 +35,10 @@ public:
     void draw(DemoState& state, const std::string& status, int columnWidth);
 
 private:
+    void controlsWindow(DemoState& state, const std::string& status, int columnWidth);
+    void matricesSection(const DemoState& state);
+    void probeSection(DemoState& state);
+
     Api api_;
     std::string volumeRefusal_; // why the last view-volume edit was refused, shown under its fields
     // The matrices' and the probe's texts, made again only when the drawn scene, the shown object or the
