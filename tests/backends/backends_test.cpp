@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "gl/gl_test_support.h"
+#include "tolerances.h"
 
 namespace shadelab::test {
 namespace {
@@ -21,7 +22,7 @@ void expectSamePixels(const std::vector<Scene>& scenes, const std::vector<Image>
     ASSERT_EQ(a.size(), scenes.size());
     ASSERT_EQ(b.size(), scenes.size());
     for (std::size_t i = 0; i < scenes.size(); ++i) {
-        const Comparison c = compareImages(a[i], b[i], Tolerance{0, 0, 0});
+        const Comparison c = compareImages(a[i], b[i], kIdentical);
         EXPECT_TRUE(c.passed) << describe(scenes[i]) << ": " << c.summary();
     }
 }

@@ -1,4 +1,5 @@
 #include "gl/extreme_support.h"
+#include "tolerances.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -49,7 +50,7 @@ void expectPhongLimits(const ImageF& image, const ReferenceImage& reference, con
 }
 
 void expectSameImage(const ImageF& actual, const ImageF& expected, const std::string& what) {
-    const Comparison c = compareImages(toImage8(actual), toImage8(expected), Tolerance{1, 0.05, 24});
+    const Comparison c = compareImages(toImage8(actual), toImage8(expected), kRegressionTolerance);
     std::printf("  %s: %s\n", what.c_str(), c.summary().c_str());
     EXPECT_TRUE(c.passed) << what << ": " << c.summary();
 }

@@ -11,6 +11,7 @@
 #include "gl/gl_test_support.h"
 #include "shadelab/image/image_file.h"
 #include "shadelab/scene/scene_file.h"
+#include "tolerances.h"
 
 namespace shadelab::test {
 namespace {
@@ -30,13 +31,7 @@ inline void PrintTo(const ReferenceCase& c, std::ostream* os) {
     *os << c.name;
 }
 
-// The tolerances, with their reasons:
-// - Same machine kind, same Mesa: llvmpipe is deterministic, so most pixels match exactly. A different
-//   CPU gives llvmpipe other SIMD widths and FMA use: ±1/255 per channel from float rounding (maxDelta 1,
-//   mean 0.05/255).
-// - A pixel centre that lies within float rounding of a triangle edge may flip between two triangles or
-//   between object and background: a budget of 24 pixels (of 16384) beyond maxDelta.
-constexpr Tolerance kLlvmpipeTolerance{1, 0.05, 24};
+// The tolerances, with their reasons: kRegressionTolerance (tolerances.h) for every case but toon's.
 // Toon bands and the thresholded highlight are discontinuous: a value within rounding of a band edge
 // jumps a whole band (~40/255), so such pixels are budgeted, not the delta loosened.
 constexpr Tolerance kToonTolerance{1, 0.3, 64};
@@ -53,7 +48,7 @@ std::vector<ReferenceCase> cases() {
         if (entry.path().extension() != ".json") continue;
         const Scene scene = loadScene(entry.path());
         out.push_back({entry.path().stem().string(), [scene] { return scene; },
-                       scene.shading == ShadingMode::Toon ? kToonTolerance : kLlvmpipeTolerance});
+                       scene.shading == ShadingMode::Toon ? kToonTolerance : kRegressionTolerance});
     }
     std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
     return out;

@@ -10,6 +10,7 @@
 #include "shadelab/errors.h"
 #include "shadelab/gl/program.h"
 #include "shadelab/io/text.h"
+#include "tolerances.h"
 
 namespace shadelab::test {
 namespace {
@@ -100,8 +101,8 @@ TEST_P(Specialization, AgreesWithTheUberProgramWithin1Of255) {
                 if (specialization == gl::Specialization::None) continue;
                 renderer->setSpecialization(specialization);
                 const Image specialized = renderer->render(scene);
-                // Every pixel within 1/255 (the limit), toon bands included: no outlier budget.
-                const Comparison c = compareImages(specialized, uber, Tolerance{1, 0.05, 0});
+                // Every pixel within 1/255, toon bands included: no outlier budget.
+                const Comparison c = compareImages(specialized, uber, kSamePictureTwoWays);
                 EXPECT_TRUE(c.passed)
                     << toString(mode) << "/" << toString(model) << " " << label << ": " << c.summary();
             }
@@ -138,7 +139,7 @@ TEST_P(Specialization, FlatGeometryShaderMatchesDuplicatedVertices) {
         }
         const Image geometryShader = renderer->render(scene);
         renderer->setFlatGeometryShader(false);
-        const Comparison c = compareImages(geometryShader, duplicated, Tolerance{1, 0.05, 0});
+        const Comparison c = compareImages(geometryShader, duplicated, kSamePictureTwoWays);
         EXPECT_TRUE(c.passed) << toString(model) << ": " << c.summary();
     }
 }
@@ -182,10 +183,10 @@ TEST(SpecializationCache, EveryChangeBetweenFramesIsDrawn) {
         for (const Scene& frame : frames) drawn.push_back(renderer->render(frame));
         renderer->setSpecialization(gl::Specialization::None);
         for (std::size_t i = 0; i < frames.size(); ++i) {
-            const Comparison c = compareImages(drawn[i], renderer->render(frames[i]), Tolerance{1, 0.05, 0});
+            const Comparison c = compareImages(drawn[i], renderer->render(frames[i]), kSamePictureTwoWays);
             EXPECT_TRUE(c.passed) << label << ", frame " << i << ": " << c.summary();
             if (i > 0) {
-                EXPECT_FALSE(compareImages(drawn[i], drawn[i - 1], Tolerance{0, 0, 0}).passed)
+                EXPECT_FALSE(compareImages(drawn[i], drawn[i - 1], kIdentical).passed)
                     << label << ", frame " << i << " drew the frame before's picture";
             }
         }

@@ -41,6 +41,7 @@
 #include "shadelab/scene/lesson.h"
 #include "shadelab/scene/scene_file.h"
 #include "shadelab/shading/probe.h"
+#include "tolerances.h"
 
 namespace shadelab::test {
 namespace {
@@ -563,7 +564,7 @@ TEST_F(Browser, KeysChangeThePictureAsInTheWindow) {
         EXPECT_TRUE(c.passed) << "the page's picture is not native render's of its state: " << c.summary();
         std::printf("key %s: page vs native render of its state: %s\n", step.key, c.summary().c_str());
         if (!previous.rgba.empty()) {
-            EXPECT_FALSE(compareImages(browser, previous, Tolerance{1, 0, 0}).passed)
+            EXPECT_FALSE(compareImages(browser, previous, kBeyondRounding).passed)
                 << "the key did not change the picture";
         }
         previous = browser;
@@ -698,7 +699,7 @@ TEST_F(Browser, PanelEditsGoThroughTheSceneParser) {
     if (!session.run(dir_)) return;
     EXPECT_TRUE(session.answer(cutoff).at("found").get<bool>());
     EXPECT_EQ(session.answer(widened).at("ui").at("scene").at("lights")[0].at("cutoff_deg"), 30);
-    EXPECT_FALSE(compareImages(session.image(after), session.image(before), Tolerance{1, 0, 0}).passed)
+    EXPECT_FALSE(compareImages(session.image(after), session.image(before), kBeyondRounding).passed)
         << "a wider cone lights more of the sphere";
     Scene wide = scene;
     wide.lights[0].cutoffDeg = 30;
@@ -935,7 +936,7 @@ TEST_F(Browser, LessonStepsWithKeysAndButtonsAndTheBundledLessonDrawsEveryStep) 
                               << c.summary();
     }
     EXPECT_FALSE(
-        compareImages(session.image(changed), session.image(shown.back().capture), Tolerance{1, 0, 0}).passed)
+        compareImages(session.image(changed), session.image(shown.back().capture), kBeyondRounding).passed)
         << "the key inside the step changed nothing (R then had nothing to restore)";
     EXPECT_EQ(session.answer(afterButton).at("ui").at("lesson").at("step"), 3) << "the ▶ button";
     EXPECT_EQ(session.answer(caption).at("element").at("text"), "Phong, Blinn-Phong.");

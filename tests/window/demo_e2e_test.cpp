@@ -31,6 +31,7 @@
 #include "shadelab/image/image_file.h"
 #include "shadelab/scene/scene.h"
 #include "shadelab/scene/scene_file.h"
+#include "tolerances.h"
 #include "window/demo_process.h"
 
 namespace shadelab::window_test {
@@ -43,9 +44,8 @@ using Clock = std::chrono::steady_clock;
 // FBO). They may disagree by float rounding at a few silhouette pixels. Measured: at most ±1/255 in a
 // channel and no pixel beyond it, in all 9 states at 320×240 and at 400×300; the S screenshot is exact.
 // The budget of 24 edge pixels and mean 0.05/255 are those of the regression references.
-constexpr Tolerance kWindowTolerance{1, 0.05, 24};
-// No pixel may differ at all.
-constexpr Tolerance kExact{0, 0, 0};
+constexpr Tolerance kWindowTolerance = test::kRegressionTolerance;
+constexpr Tolerance kExact = test::kIdentical;
 
 // The X server may still be applying the demo's last frame when a capture is asked for; a capture that
 // does not match yet is retried for this long before it counts as a failure.
