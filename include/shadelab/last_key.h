@@ -14,6 +14,8 @@ public:
         key_ = key;
         return true;
     }
+    // The value could not be made for the key changed() took: the next call says changed again.
+    void forget() { key_.reset(); }
 
 private:
     std::optional<Key> key_;

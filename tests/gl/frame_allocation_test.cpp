@@ -4,12 +4,14 @@
 // renderer, after others, equals a new renderer's picture of the same scene.
 // Allocations are counted by gl/allocation_watch.h (linked into this executable only).
 #include <cctype>
+#include <new>
 #include <string>
 #include <vector>
 
 #include "gl/allocation_watch.h"
 #include "gl/gl_test_support.h"
 #include "shadelab/gl/renderer.h"
+#include "shadelab/gl/screen_pass.h"
 #include "shadelab/scene/view.h"
 
 namespace shadelab::test {
@@ -148,6 +150,29 @@ TEST(CachedPictures, MatchANewRenderersPictures) {
         ASSERT_EQ(kept.rgba, fresh.rgba) << "scene " << i << " (" << toString(scene.view)
                                          << "): the kept renderer's picture differs from a new renderer's";
     }
+}
+
+// A sprite whose image could not be made (or uploaded) is made again at the next update with the same key,
+// rather than shown stale or empty from then on.
+TEST(KeyedSprite, AFailedMakeIsTriedAgain) {
+    SHADELAB_REQUIRE_GL(renderer);
+    (void)renderer->render(litSphereScene(8, LightType::Point), [&](gl::Renderer&) {
+        gl::KeyedSprite<int> sprite;
+        int made = 0;
+        EXPECT_THROW(sprite.update(1, [&]() -> Image { throw std::bad_alloc(); }), std::bad_alloc);
+        sprite.update(1, [&] {
+            ++made;
+            return Image(3, 2);
+        });
+        EXPECT_EQ(made, 1);
+        EXPECT_EQ(sprite.width(), 3);
+        sprite.update(1, [&] {
+            ++made;
+            return Image(5, 5);
+        });
+        EXPECT_EQ(made, 1) << "the same key: nothing made";
+        EXPECT_EQ(sprite.height(), 2);
+    });
 }
 
 } // namespace

@@ -47,9 +47,17 @@ private:
 
 template <class Key> class KeyedSprite : public Sprite {
 public:
-    // `make()` (returning an Image) is called only when `key` differs from the last update's.
+    // `make()` (returning an Image) is called only when `key` differs from the last update's. When it (or
+    // the upload) throws, the next update tries again.
     template <class Make> const KeyedSprite& update(const Key& key, Make&& make) {
-        if (last_.changed(key)) set(make());
+        if (last_.changed(key)) {
+            try {
+                set(make());
+            } catch (...) {
+                last_.forget();
+                throw;
+            }
+        }
         return *this;
     }
 
