@@ -45,10 +45,8 @@ void Renderer::drawOverlay(const Scene& sized, const SceneView& view) {
 }
 
 void Renderer::drawImageOver(const Image& image, int left, int top, int width, int height, int x) {
-    if (!imagePass_) imagePass_ = std::make_unique<ImagePass>();
-    Sprite& scratch = imagePass_->scratch();
-    scratch.set(image);
-    drawSpriteOver(scratch, left, top, width, height, x);
+    imageOver_.set(image);
+    drawSpriteOver(imageOver_, left, top, width, height, x);
 }
 
 void Renderer::drawSpriteOver(const Sprite& sprite, int left, int top, int width, int height, int x) {

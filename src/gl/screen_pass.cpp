@@ -82,10 +82,4 @@ void ImagePass::draw(const Sprite& sprite, int left, int top, int viewportX, int
     glDisable(GL_BLEND);
 }
 
-void ImagePass::draw(const Image& image, int left, int top, int viewportX, int viewportWidth,
-                     int viewportHeight) const {
-    scratch_.set(image);
-    draw(scratch_, left, top, viewportX, viewportWidth, viewportHeight);
-}
-
 } // namespace shadelab::gl

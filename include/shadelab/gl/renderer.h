@@ -103,7 +103,8 @@ private:
     std::unique_ptr<LineProgram> lineProgram_;
     std::map<std::tuple<int, VertexNormals, Overlay>, std::unique_ptr<GpuLines>> overlays_;
     std::unique_ptr<GpuLines> streamedLines_, streamedTriangles_;
-    std::unique_ptr<ImagePass> imagePass_;   // drawImageOver's, made at its first use
+    std::unique_ptr<ImagePass> imagePass_;   // drawSpriteOver's, made at its first use
+    Sprite imageOver_;                       // drawImageOver's image, uploaded at every call
     VertexArray emptyVertexArray_{NoCreate}; // exact shading's proxies have no attributes (made at first use)
     bool exactObjectIds_ = false, exactToon_ = false;
     std::optional<glm::dmat4> ndcObserver_;

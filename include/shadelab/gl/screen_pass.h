@@ -74,11 +74,7 @@ public:
     // the top.
     void draw(const Sprite& sprite, int left, int top, int viewportX, int viewportWidth,
               int viewportHeight) const;
-    // An image that changes from frame to frame (the profile's plot), uploaded at every draw.
-    void draw(const Image& image, int left, int top, int viewportX, int viewportWidth,
-              int viewportHeight) const;
     const VertexArray& emptyVertexArray() const { return empty_; }
-    Sprite& scratch() const { return scratch_; } // draw(Image)'s texture
 
 private:
     struct SpritePass : ScreenPass {
@@ -87,7 +83,6 @@ private:
     };
     SpritePass sprite_;
     VertexArray empty_;
-    mutable Sprite scratch_; // draw(Image)'s
 };
 
 } // namespace shadelab::gl

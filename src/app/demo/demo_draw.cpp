@@ -67,7 +67,7 @@ void FramedPicture::drawPicture(gl::Renderer& renderer, DemoState& state, int wi
         renderer.drawSpriteOver(band, 0, height - band.height(), width, height);
         return;
     }
-    const PresentationFacts facts = presentationFacts(state, scene);
+    const PresentationFacts facts = presentationFacts(scene);
     const gl::Sprite& label = label_.update(std::tuple{facts, width, height}, [&] {
         PresentationLabelImage made = presentationLabelImage(presentationLabel(facts), width, height);
         labelMargin_ = made.margin;

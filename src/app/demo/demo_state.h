@@ -275,7 +275,7 @@ struct PresentationFacts {
     std::optional<double> shininess; // the first object's; none without objects
     bool operator==(const PresentationFacts&) const = default;
 };
-PresentationFacts presentationFacts(const DemoState& state, const Scene& drawn); // drawn: state.drawn()
+PresentationFacts presentationFacts(const Scene& drawn); // drawn: DemoState::drawn()
 std::string presentationLabel(const PresentationFacts& facts);
 // The label as the window and the page both draw it over the bottom left of a picture of width × height:
 // DejaVu Sans Mono Bold on a translucent dark box, its lines as tall as a twelfth of the picture's height

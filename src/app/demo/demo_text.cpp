@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "app/demo/demo_format.h"
+#include "shadelab/geometry/subdivision.h"
 #include "shadelab/io/text.h"
 
 namespace shadelab::app {
@@ -123,14 +124,16 @@ std::string probeText(const DemoState& state) {
     return probeText(*probe, shown.shading, shown.lighting);
 }
 
-PresentationFacts presentationFacts(const DemoState& state, const Scene& drawn) {
+PresentationFacts presentationFacts(const Scene& drawn) {
     PresentationFacts facts;
     facts.shading = drawn.shading;
     facts.normalsByM = drawn.normalMatrix == NormalMatrixRule::Model;
     facts.unnegated = leavesOutTheMinusOne(drawn);
     facts.lighting = drawn.lighting;
     facts.term = drawn.term;
-    facts.level = drawn.shading == ShadingMode::Exact ? 0 : state.level();
+    facts.level = drawn.shading == ShadingMode::Exact || drawn.objects.empty()
+                      ? 0
+                      : subdivisionLevel(drawn, drawn.objects[0]); // DemoState::level() of the drawn scene
     if (!drawn.objects.empty()) facts.shininess = drawn.objects[0].material.shininess;
     return facts;
 }
@@ -154,7 +157,7 @@ std::string presentationLabel(const PresentationFacts& facts) {
 }
 
 std::string presentationLabel(const DemoState& state) {
-    return presentationLabel(presentationFacts(state, state.drawn()));
+    return presentationLabel(presentationFacts(state.drawn()));
 }
 
 PresentationLabelImage presentationLabelImage(const std::string& label, int width, int height) {
