@@ -101,6 +101,20 @@ void drawText(Image& canvas, int x, int y, std::string_view text, int scale, glm
     }
 }
 
+std::vector<char32_t> missingGlyphs(std::string_view text) {
+    std::vector<char32_t> missing;
+    for (std::size_t i = 0; i < text.size();) {
+        const char32_t c = nextChar(text, i);
+        if (c == U'\n' || stbtt_FindGlyphIndex(&font(), int(c)) != 0) continue;
+        if (std::find(missing.begin(), missing.end(), c) == missing.end()) missing.push_back(c);
+    }
+    return missing;
+}
+
+std::string fontName() {
+    return "DejaVu Sans Mono Bold";
+}
+
 int textWidth(std::string_view text, int scale) {
     if (scale < 1) return 0;
     const stbtt_fontinfo& info = font();

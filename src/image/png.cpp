@@ -95,17 +95,20 @@ std::string encodePng(const Image& image) {
 }
 
 // Encoded straight into the temporary file (not through encodePng): no second copy of a large picture.
-void writePng(const Image& image, const fs::path& path) {
+void writePng(const Image& image, const fs::path& path, bool inFolder) {
     checkWritable(image, path);
     const std::vector<std::uint8_t> rgb = dropAlpha(image);
-    writeFileAtomically(path, "PNG", [&](std::FILE* file) {
-        PngImage out;
-        out.png.width = png_uint_32(image.width);
-        out.png.height = png_uint_32(image.height);
-        out.png.format = PNG_FORMAT_RGB;
-        if (!png_image_write_to_stdio(&out.png, file, 0, rgb.data(), 0, nullptr))
-            writeFailed(path, std::string("libpng: ") + out.png.message);
-    });
+    writeFileAtomically(
+        path, "PNG",
+        [&](std::FILE* file) {
+            PngImage out;
+            out.png.width = png_uint_32(image.width);
+            out.png.height = png_uint_32(image.height);
+            out.png.format = PNG_FORMAT_RGB;
+            if (!png_image_write_to_stdio(&out.png, file, 0, rgb.data(), 0, nullptr))
+                writeFailed(path, std::string("libpng: ") + out.png.message);
+        },
+        inFolder ? OutputRule::InFolder : OutputRule::Anywhere);
 }
 
 namespace {

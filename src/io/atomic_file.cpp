@@ -257,10 +257,13 @@ void commitAll(std::vector<PendingOutput>& outputs) {
 }
 
 void writeFileAtomically(const fs::path& path, std::string_view what,
-                         const std::function<void(std::FILE*)>& write) {
+                         const std::function<void(std::FILE*)>& write, OutputRule rule) {
     OutputTarget target;
     try {
-        target = resolveOutput(path, what);
+        target = rule == OutputRule::InFolder
+                     ? resolveFolderEntry(path.has_parent_path() ? path.parent_path() : fs::path("."),
+                                          path.filename().string(), what)
+                     : resolveOutput(path, what);
     } catch (const InputError& e) { // the command line was checked before the work: now it is a failure
         std::string_view reason = e.what();
         if (reason.starts_with(what) && reason.substr(what.size()).starts_with(": "))

@@ -14,6 +14,7 @@
 
 #include <fcntl.h>
 #include <sys/stat.h>
+#include <sys/sysmacros.h>
 #include <unistd.h>
 
 #include "io/io_internal.h"
@@ -157,6 +158,53 @@ OutputTarget resolveOutput(const fs::path& userPath, std::string_view field) {
     return {OutputTarget::Kind::Regular, path, name};
 }
 
+OutputTarget resolveFolderEntry(const fs::path& dir, const std::string& name, std::string_view field) {
+    const std::string label(field);
+    const fs::path path = dir / name;
+    struct stat st {};
+    if (::lstat(path.c_str(), &st) != 0) {
+        if (errno != ENOENT) throw InputError(label + ": cannot use " + quoted(path) + ": " + osError());
+        refuseUnwritable(path, dir, label);
+        return {OutputTarget::Kind::Regular, path, label};
+    }
+    if (S_ISREG(st.st_mode)) {
+        refuseUnwritable(path, dir, label);
+        return {OutputTarget::Kind::Regular, path, label};
+    }
+    const std::string kind = S_ISLNK(st.st_mode)    ? "a symbolic link"
+                             : S_ISFIFO(st.st_mode) ? "a FIFO"
+                             : S_ISCHR(st.st_mode)  ? "a character device"
+                             : S_ISDIR(st.st_mode)  ? "a folder"
+                                                    : std::string(kindName(st.st_mode));
+    throw InputError(label + ": " + quoted(path) + " is " + kind + "; the files written into " + label +
+                     " are created inside it and replace only a regular file, never through a link: remove " +
+                     quoted(path) + " or give another folder");
+}
+
+void refuseStandardOutputAlias(const fs::path& out, std::string_view field, std::string_view carries) {
+    const OutputTarget target = resolveOutput(out, field);
+    struct stat stdoutStat {};
+    const bool stdoutOpen = ::fstat(STDOUT_FILENO, &stdoutStat) == 0;
+    bool alias = target.kind == OutputTarget::Kind::Stdout ||
+                 (target.kind == OutputTarget::Kind::Descriptor && target.descriptor == STDOUT_FILENO);
+    struct stat st {};
+    const bool opened =
+        target.kind == OutputTarget::Kind::Descriptor
+            ? ::fstat(target.descriptor, &st) == 0
+            : target.kind != OutputTarget::Kind::Stdout && ::stat(target.path.c_str(), &st) == 0;
+    // Another name for what descriptor 1 is open on: /dev/fd/3 after 3>&1, the file of `> out.png`, the
+    // FIFO standard output feeds. The null device takes both streams and loses nothing by it.
+    const bool nullDevice = S_ISCHR(st.st_mode) && st.st_rdev == makedev(1, 3);
+    if (opened && stdoutOpen && !nullDevice && st.st_dev == stdoutStat.st_dev &&
+        st.st_ino == stdoutStat.st_ino)
+        alias = true;
+    if (!alias) return;
+    const std::string shown = out == "-" ? std::string("-") : quoted(out);
+    throw InputError(std::string(field) + ": " + shown + " is standard output, which carries " +
+                     std::string(carries) + "; the two would mix: write to a file (" + std::string(field) +
+                     " FILE.png)");
+}
+
 bool isSameFile(const fs::path& a, const fs::path& b) {
     struct stat sa {
     }, sb{};
@@ -177,7 +225,7 @@ void prepareOutputFolder(const fs::path& dir, std::string_view field, const std:
         throw InputError(name + ": cannot create the folder " + shown + ": " + error.message() +
                          "; choose a folder you can write");
     for (const std::string& file : names) {
-        (void)resolveOutput(dir / file, field);
+        (void)resolveFolderEntry(dir, file, field);
         for (const fs::path& input : inputs) refuseOverwritingInput(dir / file, field, input);
     }
     // The probe file lives only between mkstemp and unlink: SIGINT/TERM/HUP are held back meanwhile, so an

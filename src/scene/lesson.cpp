@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <map>
 #include <string>
 #include <variant>
 
@@ -31,16 +32,19 @@ std::vector<std::string_view> allowedStepKeys() {
     return keys;
 }
 
-// Text a person wrote to be drawn on a slide: printable (no control byte but the caption's line breaks, valid
-// UTF-8), within its size.
+// Text a person wrote to be drawn on a slide: printable (valid UTF-8 with no control or format character
+// but the caption's line breaks, so that nothing hidden reorders a terminal's line), within its size.
 std::string readText(const Json& value, const std::string& path, std::size_t maxBytes, bool multiline) {
     const std::string& text = readString(value, path);
     if (text.size() > maxBytes)
         fail(path,
              "must be at most " + std::to_string(maxBytes) + " bytes, got " + std::to_string(text.size()));
-    if (printable(text, multiline) != text || (multiline && text.find('\t') != std::string::npos))
+    std::string unprintable = unprintableCharacter(text, multiline);
+    if (const std::size_t tab = text.find('\t'); unprintable.empty() && tab != std::string::npos)
+        unprintable = "U+0009 (a tab) at byte " + std::to_string(tab);
+    if (!unprintable.empty())
         fail(path, std::string("must be printable text") + (multiline ? " (lines broken by \\n)" : "") +
-                       ", got " + quotedValue(text));
+                       ", got " + quotedValue(text) + ": " + unprintable + "; remove it");
     const auto lines = std::count(text.begin(), text.end(), '\n') + 1;
     if (multiline && lines > kMaxCaptionLines)
         fail(path,
@@ -48,31 +52,89 @@ std::string readText(const Json& value, const std::string& path, std::size_t max
     return text;
 }
 
-// The scene a step starts from, as a tree: written inline, or read from the file it names.
-Json stepBase(const Json& scene, const std::string& path, const SceneTextReader& readScene) {
+// The scene files a lesson's steps name, each read, parsed and checked once however many steps name it, and
+// the scene text the steps parse bounded (kMaxLessonSceneBytes), each step counting its whole scene. Every
+// file read is some step's base, so the files read together are bounded by it too.
+class StepFiles {
+public:
+    explicit StepFiles(const SceneTextReader& read) : read_(read) {}
+
+    // The tree of the scene file `file` (a step's "scene", as written); throws InputError saying why not.
+    const Json& tree(const std::string& file, const std::string& path) {
+        checkStepPath(file, path);
+        if (const auto it = trees_.find(file); it != trees_.end()) return it->second.tree;
+        try {
+            const std::string text = read_(file);
+            Json tree = parseJson(text);
+            sceneFromJson(tree);
+            files_.push_back(file);
+            return trees_.emplace(file, File{std::move(tree), text.size()}).first->second.tree;
+        } catch (const InputError& e) {
+            fail(path + " (" + quotedValue(file) + ")", e.what());
+        }
+    }
+    // The bytes a step's base counts: its file's size, or the inline scene's written size.
+    std::size_t bytesOf(const std::string& file) const { return trees_.at(file).bytes; }
+
+    // Counts one step's scene text against the lesson's bound.
+    void countStep(std::size_t sceneBytes, const std::string& path) {
+        stepBytes_ += sceneBytes;
+        if (stepBytes_ > kMaxLessonSceneBytes)
+            fail(path, "the steps so far parse " + std::to_string(stepBytes_ >> 20) +
+                           " MiB of scene text in all (each step its whole scene); a lesson parses at most " +
+                           std::to_string(kMaxLessonSceneBytes >> 20) +
+                           " MiB (four of the largest scene files): use fewer steps or smaller scenes");
+    }
+
+    std::vector<std::string> files() const { return files_; }
+
+private:
+    // A step's file is named relative to the lesson's folder; "-" (standard input on the command line) and
+    // a NUL byte (which would cut the path short) are no such names.
+    static void checkStepPath(const std::string& file, const std::string& path) {
+        if (file.empty()) fail(path, "must name a scene file, got an empty string");
+        if (file.find('\0') != std::string::npos)
+            fail(path, "must be a path without a NUL byte, got " + quotedValue(file) +
+                           "; name the scene file relative to the lesson's folder");
+        if (file == "-")
+            fail(path, "must name a scene file relative to the lesson's folder, got \"-\" (standard input "
+                       "is no step's scene); write \"./-\" for a file named -");
+        if (file.front() == '/')
+            fail(path, "must be a path relative to the lesson's folder, got " + quotedValue(file));
+    }
+
+    struct File {
+        Json tree;
+        std::size_t bytes;
+    };
+    const SceneTextReader& read_;
+    std::map<std::string, File> trees_;
+    std::vector<std::string> files_;
+    std::size_t stepBytes_ = 0;
+};
+
+// The scene a step starts from, as a tree: written inline, or read from the file it names. `bytes` is set
+// to its size (the file's, or the inline scene's as written), `file` to the file's name ("" inline).
+Json stepBase(const Json& scene, const std::string& path, StepFiles& files, std::size_t& bytes,
+              std::string& file) {
+    file.clear();
     if (scene.is_object()) {
         try {
             sceneFromJson(scene); // refused with the inline scene's own path, before any change is merged
         } catch (const InputError& e) {
             fail(path, e.what());
         }
+        bytes = scene.dump().size();
         return scene;
     }
     if (!scene.is_string())
         fail(path,
              "must be a scene (an object) or the path of a scene file (a string), got " + describe(scene));
-    const std::string& file = scene.get_ref<const std::string&>();
-    if (file.empty()) fail(path, "must name a scene file, got an empty string");
-    if (file.front() == '/')
-        fail(path, "must be a path relative to the lesson's folder, got " + quotedValue(file));
-    try {
-        const std::string text = readScene(file);
-        Json tree = parseJson(text);
-        sceneFromJson(tree);
-        return tree;
-    } catch (const InputError& e) {
-        fail(path + " (" + quotedValue(file) + ")", e.what());
-    }
+    const std::string& named = scene.get_ref<const std::string&>();
+    Json tree = files.tree(named, path);
+    bytes = files.bytesOf(named);
+    file = named;
+    return tree;
 }
 
 // The step's changes merged into its base: objects merge key by key (RFC 7386), anything else replaces.
@@ -98,8 +160,14 @@ void applyChanges(const Json& step, const std::string& path, Json& scene) {
     }
 }
 
-LessonStep readStep(const Json& step, const std::string& path, const SceneTextReader& readScene,
-                    Json& scene) {
+// `base` carries the previous step's scene (its tree, size and file) in and this step's out.
+struct StepBase {
+    Json scene = Json::object(); // a first step without a scene starts from the defaults (DESIGN §4)
+    std::size_t bytes = 2;
+    std::string file;
+};
+
+LessonStep readStep(const Json& step, const std::string& path, StepFiles& files, StepBase& base) {
     requireObject(step, path);
     static const std::vector<std::string_view> kAllowed = allowedStepKeys();
     checkKeys(step, path, kAllowed);
@@ -110,10 +178,13 @@ LessonStep readStep(const Json& step, const std::string& path, const SceneTextRe
     if (out.title.empty()) fail(keyPath(path, "title"), "must not be empty");
     if (const Json* caption = member(step, "caption"))
         out.caption = readText(*caption, keyPath(path, "caption"), kMaxCaptionBytes, true);
-    if (const Json* base = member(step, "scene")) scene = stepBase(*base, keyPath(path, "scene"), readScene);
-    applyChanges(step, path, scene);
+    if (const Json* scene = member(step, "scene"))
+        base.scene = stepBase(*scene, keyPath(path, "scene"), files, base.bytes, base.file);
+    files.countStep(base.bytes + step.dump().size(), path);
+    out.file = base.file;
+    applyChanges(step, path, base.scene);
     try {
-        out.scene = sceneFromJson(scene);
+        out.scene = sceneFromJson(base.scene);
     } catch (const InputError& e) {
         fail(path, e.what()); // a change the step made: "steps[2]: shading: must be one of ..."
     }
@@ -153,9 +224,11 @@ Lesson lessonFromTree(const Json& root, std::string_view source, const SceneText
         if (steps->size() > kMaxLessonSteps)
             fail("steps", "must hold at most " + std::to_string(kMaxLessonSteps) + " steps, got " +
                               std::to_string(steps->size()));
-        Json scene = Json::object(); // a first step without a scene starts from the defaults (DESIGN §4)
+        StepBase base;
+        StepFiles files(readScene);
         for (std::size_t i = 0; i < steps->size(); ++i)
-            lesson.steps.push_back(readStep((*steps)[i], indexPath("steps", i), readScene, scene));
+            lesson.steps.push_back(readStep((*steps)[i], indexPath("steps", i), files, base));
+        lesson.sceneFiles = files.files();
         return lesson;
     } catch (const InputError& e) {
         throw InputError(std::string(source) + ": " + e.what());

@@ -6,6 +6,9 @@
 #include <numbers>
 #include <tuple>
 
+#include "shadelab/errors.h"
+#include "shadelab/scene/camera.h"
+
 namespace shadelab {
 namespace {
 
@@ -211,6 +214,25 @@ Scene observerScene(const Scene& scene) {
     observer.projection = {ProjectionType::Perspective,         kObserverFovyDeg, -1, 1, -1, 1, near,
                            std::min(1.05 * deepest, 1e6 * near)};
     return observer;
+}
+
+void checkOutsideView(const Scene& scene) {
+    const View& view = scene.view;
+    const bool split = view.kind == ViewKind::Split;
+    const bool outside =
+        view.kind == ViewKind::Outside ||
+        (split && (view.left.view == ViewKind::Outside || view.right.view == ViewKind::Outside));
+    if (!outside) return;
+    Scene sized = scene; // a split side is half the picture wide, which changes the observer's framing
+    if (split) sized.width = std::max(1, scene.width / 2);
+    try {
+        (void)sceneView(observerScene(sized));
+    } catch (const InputError& e) {
+        throw InputError("view: the outside view's observer frames the eye, the view volume and every object "
+                         "and light, and its own camera leaves 32-bit float range (" +
+                         std::string(e.what()) +
+                         "); bring the objects and lights nearer the camera, or choose another view");
+    }
 }
 
 Scene ndcObserverScene(const Scene& scene) {

@@ -14,6 +14,7 @@
 #include "shadelab/geometry/subdivision.h"
 #include "shadelab/io/text.h"
 #include "shadelab/scene/camera.h"
+#include "shadelab/scene/outside_view.h"
 
 namespace shadelab::detail {
 
@@ -388,6 +389,7 @@ void validateSceneValues(const Scene& scene) {
              "ndc draws the mesh through M_proj·M_cam, and exact shading ray-casts the sphere without "
              "one; choose flat, gouraud, phong or toon shading for the NDC view");
     (void)sceneView(scene); // the derived matrices must be finite too
+    checkOutsideView(scene);
     checkObjectCount(scene.objects.size());
 }
 

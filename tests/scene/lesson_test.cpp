@@ -4,6 +4,8 @@
 #include <fstream>
 #include <map>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -162,7 +164,8 @@ TEST(Lesson, EveryRefusalNamesItsJsonPath) {
          "lesson.json: steps[0].scene: shading: unknown value \"glossy\"; expected one of flat, gouraud, "
          "phong, toon, exact"},
         {R"({"title": "T", "steps": [{"title": "A\u0007"}]})",
-         "lesson.json: steps[0].title: must be printable text, got \"A\\u0007\""},
+         "lesson.json: steps[0].title: must be printable text, got \"A\\u0007\": U+0007 (a control "
+         "character) at byte 1; remove it"},
         {R"({"title": "T", "steps": [{"title": "A", "caption": "1\n2\n3\n4\n5\n6\n7\n8\n9"}]})",
          "lesson.json: steps[0].caption: must be at most 8 lines, got 9"},
         {R"({"title": "T", "steps": [{"title": "A", "subdivisions": [1]}]})",
@@ -181,6 +184,69 @@ TEST(Lesson, SizesAreBounded) {
     const std::string longTitle(kMaxStepTitleBytes + 1, 'x');
     EXPECT_EQ(refusal(R"({"title": "T", "steps": [{"title": ")" + longTitle + R"("}]})"),
               "lesson.json: steps[0].title: must be at most 120 bytes, got 121");
+}
+
+// "-" is standard input on the command line, and the window, check and slides would wait on it; a NUL
+// would cut the path short and read another file.
+TEST(Lesson, AStepsSceneIsAFileBesideTheLessonNeverStandardInputOrACutPath) {
+    const SceneTextReader anything = [](const std::string&) { return std::string("{}"); };
+    EXPECT_EQ(
+        refusal(R"({"title": "T", "steps": [{"title": "A", "scene": "-"}]})", anything),
+        "lesson.json: steps[0].scene: must name a scene file relative to the lesson's folder, got \"-\" "
+        "(standard input is no step's scene); write \"./-\" for a file named -");
+    EXPECT_EQ(
+        refusal(R"({"title": "T", "steps": [{"title": "A", "scene": "a.json\u0000.png"}]})", anything),
+        "lesson.json: steps[0].scene: must be a path without a NUL byte, got \"a.json\\u0000.png\"; name "
+        "the scene file relative to the lesson's folder");
+    EXPECT_EQ(refusal(R"({"title": "T", "steps": [{"title": "A", "scene": "./-"}]})", anything), "");
+}
+
+// A file many steps name is read and parsed once; the lesson's work is bounded as a scene's is.
+TEST(Lesson, EachSceneFileIsReadOnceAndTheLessonsWorkIsBounded) {
+    std::map<std::string, int> reads;
+    const std::string scene = R"({"shading": "flat")" + std::string(400 * 1024, ' ') + "}";
+    const SceneTextReader counting = [&](const std::string& path) {
+        ++reads[path];
+        return scene;
+    };
+    auto stepsNaming = [](std::size_t count) {
+        std::string steps;
+        for (std::size_t i = 0; i < count; ++i)
+            steps += std::string(i ? "," : "") + R"({"title": "S", "scene": "big.json"})";
+        return R"({"title": "T", "steps": [)" + steps + "]}";
+    };
+    const Lesson lesson = parseLesson(stepsNaming(20), "lesson.json", counting);
+    EXPECT_EQ(reads["big.json"], 1) << "20 steps name one file";
+    EXPECT_EQ(lesson.sceneFiles, std::vector<std::string>{"big.json"});
+    EXPECT_EQ(lesson.steps.at(19).file, "big.json");
+    // 200 steps of a 400 KiB scene parse 80 MiB: past the 64 MiB (four largest scenes) a lesson may parse.
+    // Each step counts 409,600 + 20 bytes of file and its own 37 bytes: the 164th passes 64 MiB.
+    const std::string refused = refusal(stepsNaming(200), counting);
+    EXPECT_NE(refused.find("lesson.json: steps[163]: the steps so far parse 64 MiB of scene text in all"),
+              std::string::npos)
+        << refused;
+}
+
+// Text drawn on a slide and printed in a terminal carries nothing hidden: the bidi overrides reorder a
+// terminal's line, U+2028 breaks a one-line title, U+200B and U+FEFF are invisible.
+TEST(Lesson, TitlesAndCaptionsRefuseFormatCharacters) {
+    const std::pair<const char*, const char*> cases[] = {{"\u202e", "U+202E"}, {"\u2066", "U+2066"},
+                                                         {"\u2069", "U+2069"}, {"\u2028", "U+2028"},
+                                                         {"\u200b", "U+200B"}, {"\ufeff", "U+FEFF"}};
+    for (const auto& [escaped, name] : cases) {
+        const std::string title =
+            refusal(R"({"title": "T", "steps": [{"title": "ab)" + std::string(escaped) + R"(cd"}]})");
+        EXPECT_NE(title.find("steps[0].title: must be printable text"), std::string::npos) << title;
+        EXPECT_NE(title.find(std::string(name) + " (an invisible format character, or one that reorders or "
+                                                 "breaks the line) at byte 2; remove it"),
+                  std::string::npos)
+            << title;
+        const std::string caption = refusal(R"({"title": "T", "steps": [{"title": "A", "caption": "x)" +
+                                            std::string(escaped) + R"("}]})");
+        EXPECT_NE(caption.find("steps[0].caption: must be printable text"), std::string::npos) << caption;
+    }
+    // Letters of any script pass, as do the caption's line breaks.
+    EXPECT_EQ(refusal(R"({"title": "Phong α = 8, ß, я", "steps": [{"title": "é", "caption": "a\nb"}]})"), "");
 }
 
 TEST(Lesson, TellsALessonFromAScene) {

@@ -90,6 +90,10 @@ void fillRect(Image& canvas, int x, int y, int w, int h, glm::u8vec4 color);
 inline constexpr int kMaxTextScale = 64;
 void drawText(Image& canvas, int x, int y, std::string_view text, int scale, glm::u8vec4 color);
 int textWidth(std::string_view text, int scale); // the pen's advance over the text, in pixels
+// The characters of UTF-8 `text` the font has no glyph for (drawText draws each as the font's empty box),
+// each once, in order; line breaks are no glyphs and never missing.
+std::vector<char32_t> missingGlyphs(std::string_view text);
+std::string fontName(); // the embedded font's name, for a message
 int textLineHeight(int scale);
 
 } // namespace shadelab

@@ -10,7 +10,9 @@ namespace shadelab {
 
 // Writes an opaque RGB PNG (alpha dropped) to a temporary file beside `path`, then renames it over `path`.
 // Throws RuntimeError naming the path on any failure, leaving nothing behind.
-void writePng(const Image& image, const std::filesystem::path& path);
+// `inFolder`: as a file of a folder of outputs (OutputRule::InFolder, io/atomic_file.h): created inside its
+// folder, replacing only a regular file there, never through a link.
+void writePng(const Image& image, const std::filesystem::path& path, bool inFolder = false);
 // Reads a PNG's stored samples as 8-bit RGBA (alpha 255 if the file has none): any colour type, 16-bit
 // samples scaled to 8 (v/257, rounded), no gamma applied (gAMA, sRGB, iCCP are ignored), so two files that
 // hold the same samples read the same. A header claiming more pixels than the file can hold is refused

@@ -47,13 +47,32 @@ struct OutputTarget {
 // is not open for writing, or a file or folder the caller may not write.
 OutputTarget resolveOutput(const std::filesystem::path& userPath, std::string_view field);
 
+// How an output path is taken: as resolveOutput's rules say (links followed, devices and FIFOs written
+// through), or as a file of a folder of outputs (report --out, slides --out-dir): created inside its folder,
+// replacing only a regular file there and never through a symbolic link, so nothing planted in the folder
+// (a link to an input or to /dev/null, a FIFO that would block) can redirect or swallow it.
+enum class OutputRule { Anywhere, InFolder };
+
+// resolveOutput for a file of a folder of outputs (OutputRule::InFolder): `dir`/`name` if nothing is there
+// yet or a regular file the caller may replace is; a symbolic link, FIFO, device, socket or folder there is
+// refused with an InputError naming `field`, the path and the fix.
+OutputTarget resolveFolderEntry(const std::filesystem::path& dir, const std::string& name,
+                                std::string_view field);
+
 // A folder that several outputs are written into (report --out, slides --out-dir), checked before any work:
 // created if missing (with its parents); refused with an InputError naming `field` when it is not a folder,
 // cannot be created or cannot take a new file, or when any of `names` in it could not be an output
-// (resolveOutput's rules) or is one of `inputs`.
+// (resolveFolderEntry's rules) or is one of `inputs`.
 void prepareOutputFolder(const std::filesystem::path& dir, std::string_view field,
                          const std::vector<std::string>& names,
                          const std::vector<std::filesystem::path>& inputs);
+
+// Throws InputError when the output `out` (named by `field`) writes where standard output goes while
+// standard output carries text (`carries`: "the matrices of --print-matrices"): "-", /dev/stdout,
+// /dev/fd/1, /proc/self/fd/1, another descriptor or a path open on the same file or pipe. The null device
+// is allowed (nothing there can mix).
+void refuseStandardOutputAlias(const std::filesystem::path& out, std::string_view field,
+                               std::string_view carries);
 
 // True when both paths name the same existing file (device and inode, after following links).
 bool isSameFile(const std::filesystem::path& a, const std::filesystem::path& b);
@@ -89,9 +108,10 @@ private:
 // a failure or a signal before the renames leaves every old file as it was.
 void commitAll(std::vector<PendingOutput>& outputs);
 
-// Resolves `path` (field `what`), lets `write` fill the content, and commits it.
+// Resolves `path` (field `what`) by `rule`, lets `write` fill the content, and commits it.
 void writeFileAtomically(const std::filesystem::path& path, std::string_view what,
-                         const std::function<void(std::FILE*)>& write);
+                         const std::function<void(std::FILE*)>& write,
+                         OutputRule rule = OutputRule::Anywhere);
 
 // Throws RuntimeError "cannot write <what> "<path>": <reason>".
 [[noreturn]] void failWrite(std::string_view what, const std::filesystem::path& path,

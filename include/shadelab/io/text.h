@@ -7,9 +7,15 @@
 namespace shadelab {
 
 // `text` with every byte that could act on a terminal or a script written as \xNN: control characters
-// (0x00-0x1f, 0x7f) and bytes that are not part of valid UTF-8. Printable ASCII and valid UTF-8 sequences
-// (other than C1 controls) pass unchanged. `keepNewlines` keeps \n and \t (for multi-line messages).
+// (0x00-0x1f, 0x7f, the C1 controls U+0080-009F), Unicode's format characters and line separators (the
+// bidi overrides U+202A-202E and U+2066-2069 that reorder a line, U+200B and U+FEFF that are invisible,
+// U+2028), and bytes that are not part of valid UTF-8. Printable ASCII and the other valid UTF-8 sequences
+// pass unchanged. `keepNewlines` keeps \n and \t (for multi-line messages).
 std::string printable(std::string_view text, bool keepNewlines = false);
+
+// The first character printable() would escape, named for a message ("U+202E (an invisible format
+// character, or one that reorders or breaks the line) at byte 4"), or "" when there is none.
+std::string unprintableCharacter(std::string_view text, bool keepNewlines = false);
 
 // User text quoted back in a message: in double quotes, JSON-escaped (so no control character reaches a
 // terminal) and cut at kMaxQuotedChars with "..." (so a megabyte string cannot flood the message).

@@ -27,17 +27,24 @@ struct LessonStep {
     std::string title;   // one line
     std::string caption; // plain text, at most kMaxCaptionLines lines ("" for none)
     Scene scene;         // as the step is written: its scene with its changes
+    std::string file;    // the scene file its scene starts from (its own or an earlier step's), as the
+                         // lesson writes it; "" for an inline scene or the defaults
 };
 
 struct Lesson {
     std::string title;
-    std::vector<LessonStep> steps; // at least one
+    std::vector<LessonStep> steps;       // at least one
+    std::vector<std::string> sceneFiles; // the scene files its steps name, each once, as written
 };
 
 inline constexpr std::size_t kMaxLessonSteps = 500;
 inline constexpr std::size_t kMaxStepTitleBytes = 120;
 inline constexpr std::size_t kMaxCaptionBytes = 800;
 inline constexpr int kMaxCaptionLines = 8;
+// A lesson's work is bounded as a scene's is (kMaxSceneBytes): its scene files are read and parsed once
+// each, and its steps parse at most four of the largest scenes' text in all, each step counting its whole
+// scene (a step that names a large file parses all of it again). The page fetches at most as much.
+inline constexpr std::size_t kMaxLessonSceneBytes = 4 * kMaxSceneBytes;
 
 // The text of the scene file a step names ("scene": "path"), the path as written in the lesson; throws
 // InputError saying why it cannot be read. The command line reads the file beside the lesson; the page, the

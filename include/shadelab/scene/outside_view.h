@@ -25,6 +25,11 @@ std::array<glm::dvec3, 8> viewVolumeCornersWorld(const Scene& scene);
 // view; everything else (objects, lights, shading) as in `scene`. `scene` must have the picture's size.
 Scene observerScene(const Scene& scene);
 
+// Throws InputError naming "view" when the scene shows the outside view (or a split side does) and the
+// observer's camera cannot be drawn in 32-bit float (objects or lights so far that its far plane leaves
+// float range): validateScene's check, so that `check` refuses what `render` would.
+void checkOutsideView(const Scene& scene);
+
 struct OutsideLabel {
     glm::dvec3 positionWorld;
     std::string text;

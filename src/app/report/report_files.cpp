@@ -146,7 +146,7 @@ std::vector<std::string> writeReportSet(const fs::path& dir,
                                         const std::vector<std::string>& stale) {
     std::vector<PendingOutput> outputs;
     for (const auto& [name, text] : files) {
-        outputs.emplace_back(resolveOutput(dir / name, "--out"), name);
+        outputs.emplace_back(resolveFolderEntry(dir, name, "--out"), name);
         writeAll(outputs.back(), text);
     }
     // Only a file or a link (the link itself, never what it points to) is removed: anything else at such a

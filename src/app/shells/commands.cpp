@@ -189,7 +189,7 @@ int runCompare(const CompareOptions& o) {
         refuseOverwritingInput(o.diff, "--diff", o.actual);
         refuseOverwritingInput(o.diff, "--diff", o.expected);
         refuseOverwritingInput(o.diff, "--diff", o.mask);
-        resolveOutput(o.diff, "--diff");
+        refuseStandardOutputAlias(o.diff, "--diff", o.json ? "the JSON of --json" : "the summary");
     }
     checkCompareMemory(o);
     const Image actual = read(o.actual, "ACTUAL");

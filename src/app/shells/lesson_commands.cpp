@@ -1,4 +1,5 @@
 // `shadelab check` and `shadelab slides` (commands.h): a lesson file read, checked and exported.
+#include <array>
 #include <cstdio>
 #include <system_error>
 #include <variant>
@@ -9,6 +10,7 @@
 #include "shadelab/context/headless.h"
 #include "shadelab/errors.h"
 #include "shadelab/gl/renderer.h"
+#include "shadelab/image/image.h"
 #include "shadelab/image/image_file.h"
 #include "shadelab/io/atomic_file.h"
 #include "shadelab/io/text.h"
@@ -24,12 +26,72 @@ void printWarnings(const Scene& scene, const std::string& where) {
         std::printf("  warning: %s%s\n", where.c_str(), printable(warning).c_str());
 }
 
+std::string sizeText(const Scene& scene) {
+    return std::to_string(scene.width) + "x" + std::to_string(scene.height);
+}
+
+// Everything `render` checks before it draws a scene (validateScene: its values, its work, the outside
+// view's float range; then the memory a render needs), so that `check` says valid only what `render` and
+// `slides` draw.
+void checkDrawable(const Scene& scene) {
+    validateScene(scene);
+    checkMemoryBudget("a render of " + sizeText(scene), kGlBaselineBytes + renderBytes(scene),
+                      "--size (or the scene's image)");
+}
+
+// Where a step's message comes from: the lesson, the step and the scene file its scene starts from.
+std::string stepWhere(const fs::path& lesson, std::size_t index, const LessonStep& step) {
+    std::string where =
+        printable(lesson.string()) + ": steps[" + std::to_string(index) + "] (" + quotedValue(step.title);
+    if (!step.file.empty()) where += ", scene file " + quotedValue(step.file);
+    return where + ")";
+}
+
+// Every step drawable, checked before anything is drawn: a refusal names the lesson, the step and its file.
+void checkSteps(const fs::path& file, const Lesson& lesson) {
+    for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
+        try {
+            checkDrawable(lesson.steps[i].scene);
+        } catch (const InputError& e) {
+            throw InputError(stepWhere(file, i, lesson.steps[i]) + ": " + e.what());
+        } catch (const RuntimeError& e) {
+            throw RuntimeError(stepWhere(file, i, lesson.steps[i]) + ": " + e.what());
+        }
+    }
+}
+
+// The characters of a step's title and caption that the band's font cannot draw (each a box on the slide).
+std::vector<std::string> glyphWarnings(const LessonStep& step, std::size_t index) {
+    std::vector<std::string> warnings;
+    const std::pair<const char*, const std::string*> texts[] = {{"title", &step.title},
+                                                                {"caption", &step.caption}};
+    for (const auto& [field, text] : texts) {
+        const std::vector<char32_t> missing = missingGlyphs(*text);
+        if (missing.empty()) continue;
+        std::string codes;
+        for (std::size_t k = 0; k < missing.size() && k < 8; ++k) {
+            std::array<char, 16> code{};
+            std::snprintf(code.data(), code.size(), "U+%04X", unsigned(missing[k]));
+            codes += (k ? ", " : "") + std::string(code.data());
+        }
+        if (missing.size() > 8) codes += " and " + std::to_string(missing.size() - 8) + " more";
+        warnings.push_back("steps[" + std::to_string(index) + "]." + field + ": the band's font (" +
+                           fontName() + ") has no glyph for " + codes + "; each is drawn as a box");
+    }
+    return warnings;
+}
+
 } // namespace
 
 int runCheck(const fs::path& file) {
     const std::string shown = printable(file.string());
     const std::variant<Scene, Lesson> read = loadSceneOrLesson(file);
     if (const Scene* scene = std::get_if<Scene>(&read)) {
+        try {
+            checkDrawable(*scene);
+        } catch (const InputError& e) {
+            throw InputError(shown + ": " + e.what());
+        }
         std::printf("%s: a scene, valid: %zu object%s, %zu light%s, %dx%d\n", shown.c_str(),
                     scene->objects.size(), scene->objects.size() == 1 ? "" : "s", scene->lights.size(),
                     scene->lights.size() == 1 ? "" : "s", scene->width, scene->height);
@@ -37,28 +99,55 @@ int runCheck(const fs::path& file) {
         return kExitOk;
     }
     const Lesson& lesson = std::get<Lesson>(read);
+    checkSteps(file, lesson);
     std::printf("%s: a lesson, valid: \"%s\", %zu step%s\n", shown.c_str(), printable(lesson.title).c_str(),
                 lesson.steps.size(), lesson.steps.size() == 1 ? "" : "s");
     for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
         const LessonStep& step = lesson.steps[i];
         std::printf("  %zu. %s\n", i + 1, printable(step.title).c_str());
         printWarnings(step.scene, "steps[" + std::to_string(i) + "]: ");
+        for (const std::string& warning : glyphWarnings(step, i))
+            std::printf("  warning: %s\n", printable(warning).c_str());
     }
     return kExitOk;
 }
 
+namespace {
+
+// The lesson `slides` exports; a scene is refused with what takes it.
+Lesson slidesLesson(const fs::path& file) {
+    std::variant<Scene, Lesson> read = loadSceneOrLesson(file);
+    if (std::holds_alternative<Scene>(read))
+        throw InputError(printable(file.string()) +
+                         ": a scene, not a lesson (it has no \"steps\"): `shadelab slides` exports a "
+                         "lesson's steps; `shadelab render SCENE --out FILE.png` draws a scene");
+    return std::get<Lesson>(std::move(read));
+}
+
+// What the slides must never replace: the lesson and every scene file its steps name.
+std::vector<fs::path> lessonInputs(const fs::path& file, const Lesson& lesson) {
+    const fs::path folder = file.parent_path();
+    std::vector<fs::path> inputs{file};
+    for (const std::string& scene : lesson.sceneFiles) inputs.push_back(folder / scene);
+    return inputs;
+}
+
+} // namespace
+
 int runSlides(const SlidesOptions& options) {
-    Lesson lesson = loadLesson(options.lesson);
+    Lesson lesson = slidesLesson(options.lesson);
     const std::size_t count = lesson.steps.size();
     std::vector<std::string> names;
-    double largest = 0;
     for (std::size_t i = 0; i < count; ++i) {
         LessonStep& step = lesson.steps[i];
         if (options.size) composeSize(step.scene, *options.size);
         names.push_back(slideFileName(i, count, step.title));
-        largest = std::max(largest, renderBytes(step.scene));
     }
-    checkMemoryBudget("the slides", kGlBaselineBytes + largest, "--size (or the steps' image size)");
+    checkSteps(options.lesson, lesson); // every step before the first slide: no export stops half-way
+    if (options.captions)
+        for (std::size_t i = 0; i < count; ++i)
+            for (const std::string& warning : glyphWarnings(lesson.steps[i], i))
+                std::fprintf(stderr, "shadelab: warning: %s\n", printable(warning).c_str());
     // The lesson's own folder holds its scenes: slides are written beside the lesson only if asked for
     // plainly elsewhere.
     std::error_code error;
@@ -66,7 +155,7 @@ int runSlides(const SlidesOptions& options) {
     if (fs::exists(options.outDir, error) && fs::equivalent(options.outDir, lessonFolder, error))
         throw InputError("--out-dir: \"" + printable(options.outDir.string()) +
                          "\" is the lesson's own folder; give a folder for the slides, such as slides");
-    prepareOutputFolder(options.outDir, "--out-dir", names, {options.lesson});
+    prepareOutputFolder(options.outDir, "--out-dir", names, lessonInputs(options.lesson, lesson));
 
     HeadlessRenderer renderer(options.context);
     const std::string folder = printable(options.outDir.string());
@@ -78,7 +167,7 @@ int runSlides(const SlidesOptions& options) {
             const Image band = lessonBandImage(step.title, step.caption, scene.width, scene.height);
             drawing.drawImageOver(band, 0, scene.height - band.height, scene.width, scene.height);
         });
-        writePng(picture, options.outDir / names[i]);
+        writePng(picture, options.outDir / names[i], /*inFolder=*/true);
         std::printf("slide %zu of %zu: %s\n", i + 1, count, (fs::path(folder) / names[i]).c_str());
         std::fflush(stdout);
     }

@@ -72,6 +72,8 @@ int run(const app::RenderArgs& render) {
     if (!render.out.empty()) {
         app::checkOutputPath(render.out);
         refuseOverwritingInput(render.out, "--out", render.scene); // before anything is rendered
+        if (render.printMatrices)
+            refuseStandardOutputAlias(render.out, "--out", "the matrices of --print-matrices");
     }
     const Scene scene = app::composeScene(render.scene, render.overrides);
     warnAbout(scene, render.scene);
