@@ -220,7 +220,7 @@ TEST(Lesson, EachSceneFileIsReadOnceAndTheLessonsWorkIsBounded) {
     EXPECT_EQ(lesson.sceneFiles, std::vector<std::string>{"big.json"});
     EXPECT_EQ(lesson.steps.at(19).file, "big.json");
     // 200 steps of a 400 KiB scene parse 80 MiB: past the 64 MiB (four largest scenes) a lesson may parse.
-    // Each step counts 409,600 + 20 bytes of file and its own 37 bytes: the 164th passes 64 MiB.
+    // Each step counts its file (409,619 bytes) and its own 32: the 164th passes 64 MiB.
     const std::string refused = refusal(stepsNaming(200), counting);
     EXPECT_NE(refused.find("lesson.json: steps[163]: the steps so far parse 64 MiB of scene text in all"),
               std::string::npos)
