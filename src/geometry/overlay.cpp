@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "shadelab/scene/camera.h"
+
 namespace shadelab {
 namespace {
 
@@ -13,7 +15,25 @@ void segment(std::vector<LineVertex>& lines, const glm::dvec3& from, const glm::
 
 } // namespace
 
-std::vector<LineVertex> overlayLines(const SphereMesh& mesh, Overlay overlay) {
+namespace {
+
+// Where a normal line drawn from `from` ends, in object space: once the object's matrix M (its linear part
+// `worldFromObject`) is applied, the line runs from M·from along `normalWorldFromObject`·n, the normal the
+// shading uses, and is `worldLength` long. A line drawn in object space and then taken through M would turn
+// along M·n whatever the rule, which is the shading's normal only under rotations and uniform scales.
+struct NormalTips {
+    glm::dmat3 objectFromWorld, normalWorldFromObject;
+    double worldLength;
+    glm::dvec3 operator()(const glm::dvec3& from, const glm::dvec3& normalObject) const {
+        const glm::dvec3 normalWorld = glm::normalize(normalWorldFromObject * normalObject);
+        return from + objectFromWorld * (worldLength * normalWorld);
+    }
+};
+
+} // namespace
+
+std::vector<LineVertex> overlayLines(const SphereMesh& mesh, Overlay overlay,
+                                     const glm::dmat3& worldFromObject, NormalMatrixRule rule) {
     std::vector<LineVertex> lines;
     if (overlay == Overlay::None) return lines;
     const double lift = kOverlayLift;
@@ -24,16 +44,21 @@ std::vector<LineVertex> overlayLines(const SphereMesh& mesh, Overlay overlay) {
             if (a < b) segment(lines, lift * mesh.positions[a], lift * mesh.positions[b], kEdgeColor);
         }
     if (overlay != Overlay::Normals) return lines;
-    // A little longer than an edge (about 1.63 / 2^level), but never a hair nor a spike.
+    // A little longer than an edge (about 1.63 / 2^level), but never a hair nor a spike; in world space, as
+    // long on every side of a stretched object (the cube root of |det M| is its mean scale).
     const double length = std::clamp(0.7 * 1.63 / std::exp2(mesh.level), 0.05, 0.35);
+    const NormalTips tip{glm::inverse(worldFromObject),
+                         normalViewFromObject(glm::dmat4(worldFromObject), rule),
+                         length * std::cbrt(std::abs(glm::determinant(worldFromObject)))};
     for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
         const glm::uvec3 t = mesh.triangles[f];
         const glm::dvec3 centroid = (mesh.positions[t.x] + mesh.positions[t.y] + mesh.positions[t.z]) / 3.0;
-        segment(lines, centroid, centroid + length * mesh.faceNormals[f], kFaceNormalColor);
+        segment(lines, centroid, tip(centroid, mesh.faceNormals[f]), kFaceNormalColor);
     }
-    for (std::size_t v = 0; v < mesh.positions.size(); ++v)
-        segment(lines, lift * mesh.positions[v], mesh.positions[v] + length * mesh.vertexNormals[v],
-                kVertexNormalColor);
+    for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+        const glm::dvec3 from = lift * mesh.positions[v];
+        segment(lines, from, tip(from, mesh.vertexNormals[v]), kVertexNormalColor);
+    }
     return lines;
 }
 

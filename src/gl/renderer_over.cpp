@@ -1,6 +1,7 @@
 // What Renderer draws over a scene it rendered: the overlay's edges and normals, lines given in view space
 // (the probe's vectors), the outside view's world-space faces and lines, and CPU-made images (labels), with
 // the line program they share.
+#include <array>
 #include <span>
 
 #include <glm/gtc/type_ptr.hpp>
@@ -27,15 +28,29 @@ const Renderer::LineProgram& Renderer::lineProgram() {
     return *lineProgram_;
 }
 
+namespace {
+
+// The overlays kept on the GPU: a scene's objects and a few scales or levels tried in the panel.
+constexpr std::size_t kMaxCachedOverlays = 64;
+
+} // namespace
+
 void Renderer::drawOverlay(const Scene& sized, const SceneView& view) {
     const LineProgram& lines = lineProgram();
     glUseProgram(lines.program.get());
     for (const SceneObject& object : sized.objects) {
         const int level = subdivisionLevel(sized, object);
-        auto& edges = overlays_[{level, sized.vertexNormals, sized.overlay}];
+        const glm::dmat4 world = worldFromObject(object);
+        // The edges alone are the same lines for every object; the normals follow its M and the rule.
+        const bool normals = sized.overlay == Overlay::Normals;
+        const std::array<double, 3> scale =
+            normals ? std::array{world[0][0], world[1][1], world[2][2]} : std::array{1.0, 1.0, 1.0};
+        const NormalMatrixRule rule = normals ? sized.normalMatrix : NormalMatrixRule::InverseTranspose;
+        if (overlays_.size() > kMaxCachedOverlays) overlays_.clear(); // a scale edited again and again
+        auto& edges = overlays_[{level, sized.vertexNormals, sized.overlay, scale, rule}];
         if (!edges)
-            edges = std::make_unique<GpuLines>(
-                overlayLines(buildSphere(level, sized.vertexNormals), sized.overlay));
+            edges = std::make_unique<GpuLines>(overlayLines(buildSphere(level, sized.vertexNormals),
+                                                            sized.overlay, glm::dmat3(world), rule));
         const glm::mat4 clipFromObject(ndcObserver_.value_or(glm::dmat4(1)) * view.clipFromView *
                                        view.viewFromWorld * worldFromObject(object));
         glUniformMatrix4fv(lines.clipFromSpace, 1, GL_FALSE, glm::value_ptr(clipFromObject));

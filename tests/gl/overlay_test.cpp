@@ -118,6 +118,27 @@ TEST(Overlay, NormalsStickOutOfTheSilhouette) {
     EXPECT_GT(c.inside, changedPixels(plain, wire, coverage(plain, 2)).inside);
 }
 
+// The normals drawn are the ones the shading uses: on the lecture's ellipsoid (scenes/normal_matrix.json)
+// under the ambient term alone, which no normal changes, the pictures with normals by (M⁻¹)ᵀ and by M
+// differ only by the overlay, and they do differ (the lines were M·n under both rules).
+TEST(Overlay, NormalsFollowTheNormalMatrix) {
+    SHADELAB_REQUIRE_GL(renderer);
+    Scene scene = overlayScene(Overlay::Normals);
+    scene.objects[0].scale = {1.8, 0.45, 0.9};
+    scene.term = LightingTerm::Ambient;
+    Scene byM = scene;
+    byM.normalMatrix = NormalMatrixRule::Model;
+    Scene plain = scene, plainByM = byM;
+    plain.overlay = plainByM.overlay = Overlay::None;
+    const Image plainImage = renderer->render(plain);
+    ASSERT_EQ(changedPixels(plainImage, renderer->render(plainByM), coverage(plainImage, 0)).inside, 0u)
+        << "the ambient term is the same under both rules";
+    const Changed c = changedPixels(renderer->render(scene), renderer->render(byM), coverage(plainImage, 8));
+    std::printf("normals by (M^-1)^T and by M differ in %zu pixels on the object, %zu off it\n", c.inside,
+                c.outside);
+    EXPECT_GT(c.inside + c.outside, 200u);
+}
+
 // A mirrored ellipsoid (its faces turn clockwise, its normal matrix flips) keeps its edges on it.
 TEST(Overlay, MirroredEllipsoidKeepsTheEdgesOnTheObject) {
     SHADELAB_REQUIRE_GL(renderer);

@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include "shadelab/geometry/sphere.h"
+#include "shadelab/scene/camera.h"
 #include "shadelab/scene/scene.h"
 #include "shadelab/shading/probe.h"
 
@@ -34,8 +35,13 @@ inline constexpr glm::vec3 kProbeMarkColor{1.0f, 0.35f, 0.1f};
 inline constexpr float kOverlayLift = 1.003f;
 
 // In object space: every edge once (Wireframe, Normals), and with Normals each face normal from its
-// centroid and each vertex normal (of the mesh's kind) from its vertex, a little longer than an edge.
-std::vector<LineVertex> overlayLines(const SphereMesh& mesh, Overlay overlay);
+// centroid and each vertex normal (of the mesh's kind) from its vertex, a little longer than an edge. The
+// normals are the ones the shading uses: drawn through the object's matrix M (`worldFromObject`, its
+// linear part), each line runs along the normal matrix of `rule` times n, (M⁻¹)ᵀ·n or, wrong on purpose,
+// M·n (DESIGN §2), and is as long in world space whichever way it points.
+std::vector<LineVertex> overlayLines(const SphereMesh& mesh, Overlay overlay,
+                                     const glm::dmat3& worldFromObject = glm::dmat3(1),
+                                     NormalMatrixRule rule = NormalMatrixRule::InverseTranspose);
 
 // In view space: the probe's n, v, l and r/h from the point where the mode evaluates the lighting, each
 // `length` long (l and r/h only where a light is not ambient), then a cross of two segments across the

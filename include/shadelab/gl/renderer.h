@@ -2,6 +2,7 @@
 // Scene into whatever framebuffer is bound. Programs and meshes are built on first use and cached.
 #pragma once
 
+#include <array>
 #include <map>
 #include <memory>
 #include <optional>
@@ -101,7 +102,9 @@ private:
     std::map<ProgramVariant, std::unique_ptr<SurfaceProgram>> programs_;
     std::map<std::tuple<int, VertexNormals, MeshLayout>, std::unique_ptr<GpuMesh>> meshes_;
     std::unique_ptr<LineProgram> lineProgram_;
-    std::map<std::tuple<int, VertexNormals, Overlay>, std::unique_ptr<GpuLines>> overlays_;
+    // By level, normals, overlay and, for the normals, the object's scale and the normal-matrix rule.
+    using OverlayKey = std::tuple<int, VertexNormals, Overlay, std::array<double, 3>, NormalMatrixRule>;
+    std::map<OverlayKey, std::unique_ptr<GpuLines>> overlays_;
     std::unique_ptr<GpuLines> streamedLines_, streamedTriangles_;
     std::unique_ptr<ImagePass> imagePass_;   // drawSpriteOver's, made at its first use
     Sprite imageOver_;                       // drawImageOver's image, uploaded at every call
