@@ -222,7 +222,13 @@ void checkStandardDepthRange(const Scene& scene) {
 void checkAttenuation(const glm::dvec3& a, const std::string& path) {
     for (int i = 0; i < 3; ++i) {
         checkAtLeast(a[i], 0, indexPath(path, i));
-        checkCarriedByFloat(a[i], indexPath(path, i), "attenuation is");
+        // A tiny term becomes 0 in the float uniform and the light grows unbounded; a huge one becomes Inf,
+        // which gives att = 0 as the reference's ~0 does
+        // (egl.Lighting.HugeQuadraticAttenuationLooksAmbientOnly).
+        if (a[i] != 0 && a[i] < kMinFloatExtent)
+            fail(indexPath(path, i), "must be 0 or at least " + formatNumber(kMinFloatExtent) +
+                                         " (attenuation is 32-bit float on the GPU), got " +
+                                         formatNumber(a[i]) + "; use 0 for no such term");
     }
     if (!(a.x + a.y + a.z > 0)) fail(path, "components must have a positive sum, got " + formatVec(a));
 }

@@ -500,7 +500,7 @@ const std::vector<ErrorCase> kErrorCases = {
      {"lights[0].position: lies 1e+39 from the eye", "got [1e+39, 0, 4]", "directional light"}},
     {"AttenuationDenormal",
      light(R"({"type": "point", "position": [0, 0, 9], "attenuation": [1, 0, 1e-40]})"),
-     {"lights[0].attenuation[2]: must be 0 or between 1e-30 and 1e+30", "got 1e-40"}},
+     {"lights[0].attenuation[2]: must be 0 or at least 1e-30", "got 1e-40", "use 0"}},
     {"RadiusZero", object(R"({"radius": 0})"), {"objects[0].radius: must be > 0, got 0"}},
     {"RadiusNegativeSecondObject",
      object(R"({}, {"radius": -2})"),
