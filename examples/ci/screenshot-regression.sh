@@ -17,7 +17,11 @@
 # TOLERANCE array below. Exit: 0 every scene within tolerance, 1 one or more not, 2 a missing reference or
 # bad arguments.
 set -euo pipefail
-here=$(cd "$(dirname "$0")" && pwd)
+# The folder of the script itself, links resolved: a job may run it through a link in another folder, and the
+# scenes, references and masks are beside the file. No cd: with CDPATH exported, bash's cd prints the folder
+# it found, and `$(cd ... && pwd)` would hold it twice; CDPATH is unset for any later cd too.
+unset CDPATH
+here=$(dirname -- "$(readlink -f -- "$0")")
 
 # Per channel on 0..255: at most 2 apart, a mean under 0.05 over the compared pixels, and up to 8 pixels
 # beyond the 2 (an edge pixel a driver covers differently). The same driver gives the same pixels, so these

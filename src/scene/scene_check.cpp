@@ -123,6 +123,42 @@ void checkDistinct(double value, double other, std::string_view otherName, std::
                        formatNumber(value));
 }
 
+// The values that feed the GPU's matrices and uniforms reach it as 32-bit float (DESIGN §2: composed in
+// double, uploaded as float; normal range 1.2e-38..3.4e38, and the entries are products and quotients of
+// these values): outside kMinFloatExtent..kMaxFloatExtent in magnitude one became 0 or Inf there and drew
+// nothing. Refuse what float cannot carry instead of drawing a wrong picture; a scene that needs more can
+// change its units.
+bool carriedByFloat(double magnitude) {
+    return magnitude >= kMinFloatExtent && magnitude <= kMaxFloatExtent;
+}
+
+std::string floatRange() {
+    return "between " + formatNumber(kMinFloatExtent) + " and " + formatNumber(kMaxFloatExtent);
+}
+
+// `value` itself; 0 passes (a plane through the eye, a missing attenuation term) where no other check has
+// refused it already.
+void checkCarriedByFloat(double value, std::string_view path, std::string_view carrier,
+                         bool zeroAllowed = true) {
+    if (value != 0 && !carriedByFloat(std::abs(value)))
+        fail(path, std::string(zeroAllowed ? "must be 0 or " : "must be ") + floatRange() +
+                       " in magnitude (" + std::string(carrier) + " 32-bit float on the GPU), got " +
+                       formatNumber(value) + "; change the scene's units");
+}
+
+// A difference the projection divides by (right - left, top - bottom, far - near), named by its first
+// field: the message gives the field's own value and the difference.
+void checkDifferenceCarriedByFloat(double value, double other, std::string_view name,
+                                   std::string_view otherName, std::string_view path) {
+    const double difference = value - other;
+    if (!carriedByFloat(std::abs(difference)))
+        fail(path,
+             "got " + formatNumber(value) + ", which makes " + std::string(name) + " - " +
+                 std::string(otherName) + " " + formatNumber(difference) +
+                 "; the projection divides by that difference in 32-bit float on the GPU, so it must be " +
+                 floatRange() + " in magnitude: change the scene's units");
+}
+
 void checkMaterial(const Material& m, const std::string& path) {
     checkColor(m.ambient, keyPath(path, "ambient"));
     checkColor(m.diffuse, keyPath(path, "diffuse"));
@@ -185,7 +221,16 @@ void checkStandardDepthRange(const Scene& scene) {
 }
 
 void checkAttenuation(const glm::dvec3& a, const std::string& path) {
-    for (int i = 0; i < 3; ++i) checkAtLeast(a[i], 0, indexPath(path, i));
+    for (int i = 0; i < 3; ++i) {
+        checkAtLeast(a[i], 0, indexPath(path, i));
+        // A tiny term becomes 0 in the float uniform and the light grows unbounded; a huge one becomes Inf,
+        // which gives att = 0 as the reference's ~0 does
+        // (egl.Lighting.HugeQuadraticAttenuationLooksAmbientOnly).
+        if (a[i] != 0 && a[i] < kMinFloatExtent)
+            fail(indexPath(path, i), "must be 0 or at least " + formatNumber(kMinFloatExtent) +
+                                         " (attenuation is 32-bit float on the GPU), got " +
+                                         formatNumber(a[i]) + "; use 0 for no such term");
+    }
     if (!(a.x + a.y + a.z > 0)) fail(path, "components must have a positive sum, got " + formatVec(a));
 }
 
@@ -236,6 +281,36 @@ void checkCamera(const Scene& scene) {
     }
 }
 
+namespace {
+
+// The window of a frustum or an orthographic projection: its planes, its widths and, for a frustum, the
+// matrix's 2·near/width (the cotangent of half the field of view).
+void checkWindow(const Projection& p) {
+    checkCarriedByFloat(p.left, "projection.left", "the projection is");
+    checkCarriedByFloat(p.right, "projection.right", "the projection is");
+    checkCarriedByFloat(p.bottom, "projection.bottom", "the projection is");
+    checkCarriedByFloat(p.top, "projection.top", "the projection is");
+    checkDifferenceCarriedByFloat(p.right, p.left, "right", "left", "projection.right");
+    checkDifferenceCarriedByFloat(p.top, p.bottom, "top", "bottom", "projection.top");
+    if (p.type != ProjectionType::Frustum) return;
+    // 2·near/(value − other) in float; the message names `value`'s field.
+    auto checkSlope = [&](double value, double other, std::string_view name, std::string_view otherName) {
+        const double slope = 2 * p.near / std::abs(value - other);
+        if (!carriedByFloat(slope))
+            fail("projection." + std::string(name),
+                 "got " + formatNumber(value) + ", which with " + std::string(otherName) + " " +
+                     formatNumber(other) + " and near " + formatNumber(p.near) +
+                     " makes the frustum matrix's 2 near / (" + std::string(name) + " - " +
+                     std::string(otherName) + ") " + formatNumber(slope) +
+                     ", which 32-bit float cannot carry (" + floatRange() + "): " +
+                     (slope > 1 ? "widen the window or lower near" : "narrow the window or raise near"));
+    };
+    checkSlope(p.right, p.left, "right", "left");
+    checkSlope(p.top, p.bottom, "top", "bottom");
+}
+
+} // namespace
+
 void checkProjection(const Projection& p) {
     if (p.type == ProjectionType::Perspective) {
         checkGreater(p.fovyDeg, 0, "projection.fovy_deg");
@@ -257,28 +332,10 @@ void checkProjection(const Projection& p) {
     checkFinite(p.far, "projection.far");
     if (!(p.far > p.near))
         fail("projection.far", "must be > near (" + formatNumber(p.near) + "), got " + formatNumber(p.far));
-    // The projection matrix reaches the GPU as 32-bit float (normal range 1.2e-38..3.4e38, and its entries
-    // are products and quotients of these values): near 1e-300 or a window of ±1e-300 became 0 there and
-    // drew nothing. Refuse what float cannot carry instead of drawing a wrong picture; a scene that needs
-    // more can change its units.
-    auto inFloatRange = [](double magnitude, std::string_view path) {
-        if (magnitude != 0 && (magnitude < kMinProjectionExtent || magnitude > kMaxProjectionExtent))
-            fail(path, "must be 0 or between " + formatNumber(kMinProjectionExtent) + " and " +
-                           formatNumber(kMaxProjectionExtent) +
-                           " in magnitude (the projection is 32-bit float on the GPU), got " +
-                           formatNumber(magnitude) + "; change the scene's units");
-    };
-    inFloatRange(p.near, "projection.near");
-    inFloatRange(p.far, "projection.far");
-    if (p.type == ProjectionType::Orthographic) {
-        inFloatRange(std::abs(p.left), "projection.left");
-        inFloatRange(std::abs(p.right), "projection.right");
-        inFloatRange(std::abs(p.bottom), "projection.bottom");
-        inFloatRange(std::abs(p.top), "projection.top");
-        inFloatRange(std::abs(p.right - p.left), "projection.right");
-        inFloatRange(std::abs(p.top - p.bottom), "projection.top");
-    }
-    inFloatRange(p.far - p.near, "projection.far");
+    checkCarriedByFloat(p.near, "projection.near", "the projection is", false);
+    checkCarriedByFloat(p.far, "projection.far", "the projection is", false);
+    checkDifferenceCarriedByFloat(p.far, p.near, "far", "near", "projection.far");
+    if (p.type != ProjectionType::Perspective) checkWindow(p);
 }
 
 void checkObject(const SceneObject& object, const std::string& path) {
@@ -287,10 +344,84 @@ void checkObject(const SceneObject& object, const std::string& path) {
     std::string scalePath = keyPath(path, "scale");
     checkFiniteVec(object.scale, scalePath);
     // Negative components mirror (allowed); zero flattens the ellipsoid and its normal matrix.
-    for (int i = 0; i < 3; ++i)
-        if (object.scale[i] == 0) fail(indexPath(scalePath, i), "must be non-zero, got 0");
+    checkCarriedByFloat(object.radius, keyPath(path, "radius"), "the model matrix is", false);
+    for (int i = 0; i < 3; ++i) {
+        const std::string componentPath = indexPath(scalePath, i);
+        if (object.scale[i] == 0) fail(componentPath, "must be non-zero, got 0");
+        // The model matrix holds radius·scale: each semi-axis of the ellipsoid.
+        const double semiAxis = object.radius * std::abs(object.scale[i]);
+        if (!carriedByFloat(semiAxis))
+            fail(componentPath, "got " + formatNumber(object.scale[i]) +
+                                    ", which makes the semi-axis radius x " + "scale[" + std::to_string(i) +
+                                    "] " + formatNumber(semiAxis) +
+                                    "; the model matrix is 32-bit float on the GPU, so it must be " +
+                                    floatRange() + ": change the scene's units");
+    }
     checkSubdivisions(object.subdivisions, keyPath(path, "subdivisions"));
     checkMaterial(object.material, keyPath(path, "material"));
+}
+
+namespace {
+
+// |point - eye| without overflowing on the way (scaled by the largest component, as unitDirection does),
+// and in words: "lies 2e+31 from the eye [0, 0, 4]".
+std::string distanceFromEye(const glm::dvec3& point, const Scene& scene, double& distance) {
+    const glm::dvec3 d = point - scene.eye;
+    const double k = std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)});
+    distance = k == 0 ? 0 : std::isfinite(k) ? k * glm::length(d / k) : k;
+    return "lies " + (std::isfinite(distance) ? formatNumber(distance) : std::string("beyond double range")) +
+           " from the eye " + formatVec(scene.eye);
+}
+
+// The smallest semi-axis of `object`, and which scale component makes it.
+int thinnestAxis(const SceneObject& object) {
+    const glm::dvec3 s = glm::abs(object.scale);
+    return s.x <= s.y && s.x <= s.z ? 0 : s.y <= s.z ? 1 : 2;
+}
+
+// An object within float's reach of the eye, in the eye's units and in its own (kMaxRayCastReach).
+void checkObjectPlacement(const Scene& scene, const SceneObject& object, const std::string& path) {
+    double distance = 0;
+    const std::string where = distanceFromEye(object.center, scene, distance);
+    if (!(distance <= kMaxFloatExtent))
+        fail(keyPath(path, "center"), where + ", beyond " + formatNumber(kMaxFloatExtent) +
+                                          " (view-space positions are 32-bit float on the GPU), got " +
+                                          formatVec(object.center) + "; move it or the eye");
+    const int axis = thinnestAxis(object);
+    const double semiAxis = object.radius * std::abs(object.scale[axis]);
+    const double extent = object.radius * std::max({std::abs(object.scale.x), std::abs(object.scale.y),
+                                                    std::abs(object.scale.z)});
+    // An orthographic ray's direction is the unit vector, 1/semiAxis long in the object's units.
+    const bool orthographic = scene.projection.type == ProjectionType::Orthographic;
+    const double reach = orthographic ? std::max(distance + extent, 1.0) : distance + extent;
+    if (reach / semiAxis > kMaxRayCastReach)
+        fail(indexPath(keyPath(path, "scale"), axis),
+             "got " + formatNumber(object.scale[axis]) + ", which makes the semi-axis radius x scale[" +
+                 std::to_string(axis) + "] " + formatNumber(semiAxis) + " while the object reaches " +
+                 formatNumber(reach) + " from the eye: " + formatNumber(reach / semiAxis) +
+                 " of those semi-axes, and exact shading squares that in 32-bit float (at most " +
+                 formatNumber(kMaxRayCastReach) + "): make the semi-axis at least " +
+                 formatNumber(reach / kMaxRayCastReach) + " or bring the eye closer");
+}
+
+} // namespace
+
+// Eye-relative values, so checked once the camera, the objects and the lights are all known: the view-space
+// positions the GPU receives (DESIGN §2 composes them in double, camera-relative) must be float too.
+void checkPlacement(const Scene& scene) {
+    for (std::size_t i = 0; i < scene.objects.size(); ++i)
+        checkObjectPlacement(scene, scene.objects[i], indexPath("objects", i));
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+        const Light& light = scene.lights[i];
+        if (!hasPosition(light.type)) continue;
+        double distance = 0;
+        const std::string where = distanceFromEye(light.position, scene, distance);
+        if (!(distance <= kMaxFloatExtent))
+            fail(keyPath(indexPath("lights", i), "position"),
+                 where + ", beyond " + formatNumber(kMaxFloatExtent) +
+                     " (view-space positions are 32-bit float on the GPU), got " + formatVec(light.position) +
+                     "; move it closer (a light that far is a directional light)");
+    }
 }
 
 void checkObjectCount(std::size_t count) {
@@ -376,6 +507,7 @@ void validateSceneValues(const Scene& scene) {
         checkObject(scene.objects[i], indexPath("objects", i));
     checkLightCount(scene.lights.size());
     for (std::size_t i = 0; i < scene.lights.size(); ++i) checkLight(scene.lights[i], indexPath("lights", i));
+    checkPlacement(scene);
     if (scene.view.at) checkViewAt(*scene.view.at);
     checkObserver(scene.view.observer);
     // The NDC view transforms the mesh; exact shading has none (also as a split's side).

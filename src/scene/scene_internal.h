@@ -57,6 +57,7 @@ void checkObjectCount(std::size_t count);
 void checkLightCount(std::size_t count);
 // Only the fields the light's type uses are checked: the others are ignored by the lighting code.
 void checkLight(const Light& light, const std::string& path);
+void checkPlacement(const Scene& scene);
 
 bool hasPosition(LightType type);
 bool hasDirection(LightType type);

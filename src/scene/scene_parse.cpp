@@ -341,6 +341,7 @@ Scene detail::sceneFromJson(const Json& root) {
     }
     if (const Json* objects = member(root, "objects")) scene.objects = readObjects(*objects);
     if (const Json* lights = member(root, "lights")) scene.lights = readLights(*lights);
+    checkPlacement(scene);
     return scene;
 }
 

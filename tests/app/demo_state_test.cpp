@@ -1404,6 +1404,80 @@ TEST(MatricesText, TheNormalMatrixIsTheInverseTransposeOrMItself) {
     EXPECT_EQ(model[0], (std::vector<double>{2, 0, 0, 0.5}));
 }
 
+// Every matrix and vector row of `text`: "[", then entries of kEntryDigits + 1 characters, then " ]".
+std::vector<std::string> matrixRows(const std::string& text) {
+    std::vector<std::string> rows;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) {
+        const std::size_t open = line.find('[');
+        if (open != std::string::npos && line.ends_with(" ]") && !std::isalpha(line[open + 1]))
+            rows.push_back(line.substr(open + 1, line.size() - open - 3));
+    }
+    return rows;
+}
+
+// True when some entry of the scene's M_cam is float noise around a whole number (not one exactly).
+bool mCamHasNoise(const Scene& scene) {
+    const glm::dmat4 m = sceneView(scene).viewFromWorld;
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (m[c][r] != std::round(m[c][r]) && std::abs(m[c][r] - std::round(m[c][r])) <= 1e-12)
+                return true;
+    return false;
+}
+
+// The panel, the page and render --print-matrices share this text. Entries stand in columns of one width
+// with a space before each, up to 1e29 and negative; float noise around a whole number shows as
+// that number, and 0 never as -0.
+TEST(MatricesText, EntriesStandInFixedWidthColumnsWithASpaceBetween) {
+    Scene far;
+    far.eye = {1e29, 0, -1e29}; // M_cam's -w.e is -1.41e+29, beside 0.7071
+    far.projection = {ProjectionType::Frustum, 40, -1e20, 1e20, -1e20, 1e20, 1e29, 1e30};
+    Scene noisy;
+    noisy.eye = {-3, 0, 1}; // an entry of M_cam is -1.11e-16
+    noisy.target = {0, 0.5, 0};
+    ASSERT_TRUE(mCamHasNoise(noisy)) << "this scene no longer shows float noise: choose another eye";
+    for (const Scene& scene : {far, noisy}) {
+        const std::string text = cameraMatricesText(scene) + objectMatricesText(scene, 0);
+        const std::vector<std::string> rows = matrixRows(text);
+        ASSERT_EQ(rows.size(), 4u + 4 + 4 + 4 + 3) << text; // e u v w, M_cam, M_proj, M, normal matrix
+        for (const std::string& row : rows) {
+            ASSERT_EQ(row.size() % (kEntryDigits + 1), 0u) << "columns of one width:\n" << text;
+            for (std::size_t at = 0; at < row.size(); at += kEntryDigits + 1) {
+                const std::string entry = row.substr(at, kEntryDigits + 1);
+                EXPECT_EQ(entry[0], ' ') << "an entry touches the one before it: [" << row << "]\n" << text;
+                std::istringstream in(entry);
+                std::string token, rest;
+                in >> token >> rest;
+                EXPECT_TRUE(rest.empty()) << "one number per column: [" << row << "]";
+                EXPECT_NE(token, "-0") << row;
+                EXPECT_EQ(token.find("e-1"), std::string::npos) << "float noise shown as a number: " << row;
+            }
+        }
+    }
+    EXPECT_NE(cameraMatricesText(far).find("-1.41e+29"), std::string::npos);
+}
+
+TEST(MatricesText, FloatNoiseShowsAsTheWholeNumberAndZeroHasNoSign) {
+    auto shown = [](double x) {
+        std::istringstream in(matrixEntry(x));
+        std::string token;
+        in >> token;
+        return token;
+    };
+    EXPECT_EQ(shown(-1.11e-16), "0");
+    EXPECT_EQ(shown(-0.0), "0");
+    EXPECT_EQ(shown(1 - 2e-16), "1");
+    EXPECT_EQ(shown(-1 - 1e-13), "-1");
+    EXPECT_EQ(shown(0.70710678), "0.7071");
+    EXPECT_EQ(shown(-0.1919), "-0.1919");
+    EXPECT_EQ(shown(-1e-11), "-1.00e-11") << "beyond 1e-12 of a whole number the value shows";
+    EXPECT_EQ(shown(-1e300), "-1.0e+300");
+    EXPECT_EQ(shown(-999.99996), "-1.00e+03") << "rounding to 4 decimals would take 10 characters";
+    for (double x : {-1e300, -1.11e-16, -999.99996, 1e-300, -0.1919, 12345.678, 4.9e-324})
+        EXPECT_EQ(matrixEntry(x).size(), kEntryDigits + 1) << x;
+}
+
 } // namespace
 } // namespace shadelab::app
 

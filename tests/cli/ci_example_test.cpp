@@ -40,10 +40,12 @@ protected:
         if (!dir_.empty()) fs::remove_all(dir_, ignored);
     }
 
-    // Runs the example job with the shadelab under test; `environment` adds NAME=value entries.
-    Outcome job(std::vector<std::string> args = {}, const std::vector<std::string>& environment = {}) {
-        args.insert(args.begin(), {(example_ / "screenshot-regression.sh").string(), "--shadelab",
-                                   shadelabExe(), "--artifacts", artifacts_.string()});
+    // Runs the example job with the shadelab under test; `environment` adds NAME=value entries. `script` is
+    // the path bash is given, from dir_ (the copy's script by default; a relative path or a link to it).
+    Outcome job(std::vector<std::string> args = {}, const std::vector<std::string>& environment = {},
+                std::string script = {}) {
+        if (script.empty()) script = (example_ / "screenshot-regression.sh").string();
+        args.insert(args.begin(), {script, "--shadelab", shadelabExe(), "--artifacts", artifacts_.string()});
         RunOptions options;
         options.program = "/bin/bash";
         options.environment = childEnvironment(Display::Inherit, environment);
@@ -107,6 +109,26 @@ TEST_F(CiExample, ADriverWithoutReferencesIsToldToBlessThem) {
     EXPECT_TRUE(fs::exists(example_ / "references" / "softpipe" / "toon-spot.png"));
     const Outcome again = job({}, softpipe);
     EXPECT_EQ(again.exitCode, 0) << describe(again);
+}
+
+// A CI image or a developer's shell may export CDPATH: bash's cd then prints the folder it found through it,
+// and a script that takes its own folder from `cd ... && pwd` gets the path twice. Started by a relative
+// path (CDPATH applies to relative paths only), the job must still find its scenes.
+TEST_F(CiExample, PassesWithCdpathExported) {
+    const Outcome run = job({}, {"CDPATH=" + dir_.string()}, "ci/screenshot-regression.sh");
+    EXPECT_EQ(run.exitCode, 0) << describe(run);
+    EXPECT_NE(run.out.find("pass: phong-sphere"), std::string::npos) << describe(run);
+}
+
+// A job started through a symbolic link in another folder (a CI step's bin/ of links) reads the scenes,
+// references and masks beside the script itself, not beside the link.
+TEST_F(CiExample, PassesWhenRunThroughASymbolicLinkInAnotherFolder) {
+    const fs::path bin = dir_ / "bin";
+    fs::create_directory(bin);
+    fs::create_symlink(example_ / "screenshot-regression.sh", bin / "screenshot-regression");
+    const Outcome run = job({}, {}, (bin / "screenshot-regression").string());
+    EXPECT_EQ(run.exitCode, 0) << describe(run);
+    EXPECT_NE(run.out.find("pass: toon-spot"), std::string::npos) << describe(run);
 }
 
 TEST_F(CiExample, AnUnknownArgumentIsRefused) {

@@ -123,7 +123,7 @@ TEST_F(CliTest, PrintMatricesPrintsTheCameraAndEveryObject) {
     ASSERT_EQ(alone.exitCode, 0) << describe(alone);
     EXPECT_TRUE(listing(dir_).empty()) << "nothing is written without --out";
     for (const char* part :
-         {"e = [   0.0000   0.0000   4.0000 ]", "M_cam = [u v w e]^-1", "M_proj, perspective", "w = z < 0",
+         {"e = [    0         0         4      ]", "M_cam = [u v w e]^-1", "M_proj, perspective", "w = z < 0",
           "M (object 1", "normal matrix ((M_cam M)^-1)^T"})
         EXPECT_NE(alone.out.find(part), std::string::npos) << part << " in\n" << alone.out;
     writeFile(dir_ / "two.json", R"({"image": {"width": 32, "height": 32},
@@ -132,6 +132,11 @@ TEST_F(CliTest, PrintMatricesPrintsTheCameraAndEveryObject) {
     ASSERT_EQ(both.exitCode, 0) << describe(both);
     EXPECT_NE(both.out.find("M (object 2"), std::string::npos) << both.out;
     EXPECT_TRUE(pngSize(readFile(dir_ / "two.png"))) << "--out still renders";
+    // Entries of any magnitude stand apart: M_cam's -w.e is -1.41e+17 here, beside -0.7071.
+    writeFile(dir_ / "far.json", R"({"camera": {"eye": [1e17, 0, -1e17]}})");
+    const Outcome far = shadelab({"render", "far.json", "--print-matrices"});
+    ASSERT_EQ(far.exitCode, 0) << describe(far);
+    EXPECT_NE(far.out.find("   0.7071    0        -0.7071 -1.41e+17 ]"), std::string::npos) << far.out;
     const Outcome piped = shadelab({"render", "--print-matrices", "--out", "-"});
     EXPECT_EQ(piped.exitCode, 2) << describe(piped);
     EXPECT_NE(piped.err.find("--print-matrices"), std::string::npos) << piped.err;

@@ -10,19 +10,44 @@
 namespace shadelab::app {
 namespace {
 
-// Eight characters a number: fixed point where that shows it, otherwise exponent form.
-std::string number(double x) {
-    char text[32];
-    const double magnitude = std::abs(x);
-    if (x == 0) x = 0; // no "-0.0000"
-    std::snprintf(text, sizeof text,
-                  magnitude != 0 && (magnitude < 1e-3 || magnitude >= 1e4) ? "%9.2e" : "%9.4f", x);
+// printf into a string.
+template <typename... Args> std::string printed(const char* format, Args... args) {
+    char text[48];
+    std::snprintf(text, sizeof text, format, args...);
     return text;
 }
 
+constexpr int kDecimals = 4;
+
+// Fixed point where that shows the number in kEntryDigits characters (4 decimals, magnitudes 1e-3..999),
+// otherwise exponent form (3 significant digits, 2 with a three-digit exponent); a whole number, or one
+// within float noise of it (1e-12: -1.11e-16 is 0, never -0), as its digits alone, aligned with the units
+// of the fixed-point entries.
+std::string entryDigits(double x) {
+    const double whole = std::round(x) + 0.0; // + 0.0 turns -0 into 0
+    if (std::abs(x - whole) <= 1e-12 && std::abs(whole) < 1e3)
+        return printed("%.0f", whole) + std::string(kDecimals + 1, ' ');
+    if (std::abs(x) >= 1e-3) {
+        std::string fixed = printed("%.*f", kDecimals, x);
+        if (fixed.size() <= kEntryDigits) return fixed;
+    }
+    std::string exponent = printed("%.2e", x);
+    return exponent.size() <= kEntryDigits ? exponent : printed("%.1e", x);
+}
+
+} // namespace
+
+// Right-aligned after one space: columns line up and entries never touch, whatever their magnitude.
+std::string matrixEntry(double x) {
+    const std::string digits = entryDigits(x);
+    return std::string(kEntryDigits + 1 - digits.size(), ' ') + digits;
+}
+
+namespace {
+
 std::string row(std::initializer_list<double> values) {
     std::string text = "[";
-    for (double v : values) text += number(v);
+    for (double v : values) text += matrixEntry(v);
     return text + " ]\n";
 }
 
@@ -49,7 +74,7 @@ std::string shortNumber(double x) {
 }
 
 // What the projection matrix normalizes, in the lecture's terms (n and f are z-coordinates, DESIGN §2).
-// Lines of at most 41 characters, as wide as a matrix row: the panel's column is narrow.
+// Lines of at most 45 characters, as wide as a matrix row: the panel's column is narrow.
 std::string projectionHeading(const Scene& scene, const SceneView& view) {
     const ViewVolume& v = view.volume;
     std::string text = std::string(view.orthographic ? "M_orth" : "M_proj") + ", " +

@@ -12,6 +12,11 @@
 
 namespace shadelab::app {
 
+// One entry of a printed matrix or vector: kEntryDigits + 1 characters, a space first (matrices_text.cpp
+// says how a number is written).
+inline constexpr std::size_t kEntryDigits = 9;
+std::string matrixEntry(double x);
+
 // Monospaced text for the scene as drawn (its image size gives the perspective aspect). The camera's: e, u,
 // v, w, M_cam and the projection matrix with its view volume. Throws InputError for a scene sceneView
 // refuses.
