@@ -122,7 +122,8 @@ TEST_F(LessonHostileTest, CheckRefusesWhatRenderRefusesNamingLessonStepAndFile) 
     std::string budget = R"({"objects": [)";
     for (int i = 0; i < 17; ++i) budget += std::string(i ? "," : "") + R"({"subdivisions": 10})";
     const std::pair<std::string, std::string> cases[] = {
-        {R"({"view": "outside", "objects": [{"center": [0, 0, -1e30]}]})", "view: the outside view"},
+        {R"({"view": "outside", "lights": [{"type": "point", "position": [0, 0, -9e29]}]})",
+         "view: the outside view"},
         {budget + "]}", "objects: the scene draws 71303168 triangles per frame"},
         {R"({"projection": {"near": 1e-10, "far": 10}})", "projection.near: with \"depth\": \"standard\""}};
     for (const auto& [scene, refusal] : cases) {
