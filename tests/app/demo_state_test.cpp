@@ -1625,6 +1625,13 @@ TEST(DemoObjects, ScaleEditsTheChosenObjectOrAllAndJTogglesTheNormalMatrix) {
         EXPECT_STREQ(e.what(), "objects[1].scale[1]: must be finite and non-zero, got 0");
     }
     EXPECT_THROW(state.editScale({std::nan(""), 1, 1}), shadelab::InputError);
+    // What 32-bit float cannot carry is refused as a scene file's scale is (exact shading drew nothing).
+    try {
+        state.editScale({1, 1, 1e-20});
+        ADD_FAILURE() << "a scale of 1e-20 was accepted";
+    } catch (const shadelab::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("objects[1]"), std::string::npos) << e.what();
+    }
     EXPECT_EQ(state.scene().objects[1].scale, glm::dvec3(1.5, 0.5, 1)) << "a refused edit changed the scale";
     state.chooseEditedObject(0); // all: the first object's scale shows; y changes on both, x stays each's
     state.editScale({1, 2, 1});

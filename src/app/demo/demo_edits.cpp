@@ -80,14 +80,19 @@ void DemoState::editScale(const glm::dvec3& scale) {
             throw InputError("objects[" + std::to_string(*shown) + "].scale[" + std::to_string(i) +
                              "]: must be finite and non-zero, got " + value);
         }
-    const glm::dvec3 before = scene_.objects[*shown].scale;
+    // The edit is made on a copy and checked as a scene file's values are (a semi-axis 32-bit float cannot
+    // carry, an object too thin for exact shading at its distance), then kept.
+    Scene edited = scene_;
+    const glm::dvec3 before = edited.objects[*shown].scale;
     if (editedObject != kAllObjects) {
-        scene_.objects[*shown].scale = scale;
+        edited.objects[*shown].scale = scale;
     } else { // as editMaterial: only the component that changed, on every object
-        for (SceneObject& o : scene_.objects)
+        for (SceneObject& o : edited.objects)
             for (int i = 0; i < 3; ++i)
                 if (scale[i] != before[i]) o.scale[i] = scale[i];
     }
+    validateSceneValues(edited);
+    scene_.objects = std::move(edited.objects);
 }
 
 void DemoState::editViewVolume(const Projection& edited) {
