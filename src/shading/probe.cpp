@@ -50,7 +50,7 @@ struct ObjectFrame {
 ProbeSample sampleAt(const SurfacePoint& point, const Material& material,
                      const std::vector<Light>& lightsView, int light, const ShadeOptions& options) {
     ProbeSample sample{point, shadeTerms(point, material, lightsView, options), {}, {}, {}};
-    sample.color = clampColor(sample.terms.total());
+    sample.color = clampColor(sample.terms.of(options.term)); // what is drawn: the sum, or the term shown
     if (light >= 0) {
         sample.toLight = toLight(lightsView[std::size_t(light)], point).first;
         sample.specularVector = specularVector(point, sample.toLight, options.model);
@@ -89,7 +89,8 @@ ProbeReport probeSurface(const Scene& scene, const ProbePoint& point, const Sphe
         if (light < 0 && l.type != LightType::Ambient) light = int(lightsView.size());
         lightsView.push_back(transformLight(l, view.viewFromWorld));
     }
-    const ShadeOptions options{scene.lighting, scene.shading == ShadingMode::Toon, scene.toonBands};
+    const ShadeOptions options{scene.lighting, scene.shading == ShadingMode::Toon, scene.toonBands,
+                               scene.term};
     auto surface = [&](const glm::dvec3& positionObject, const glm::dvec3& normalObject) {
         const glm::dvec3 p = frame.positionView(positionObject);
         const glm::dvec3 n = frame.normalView(normalObject);
@@ -134,7 +135,7 @@ ProbeReport probeSurface(const Scene& scene, const ProbePoint& point, const Sphe
             terms.ambient += w[i] * atVertex.ambient;
             terms.diffuse += w[i] * atVertex.diffuse;
             terms.specular += w[i] * atVertex.specular;
-            color += w[i] * clampColor(atVertex.total()); // clamped per vertex, then interpolated
+            color += w[i] * clampColor(atVertex.of(options.term)); // clamped per vertex, then interpolated
         }
         report.mode.terms = terms;
         report.mode.color = color;

@@ -156,54 +156,58 @@ TEST(Overlay, MirroredEllipsoidKeepsTheEdgesOnTheObject) {
 // colour at the surface point a pixel sees is that pixel, within the float/8-bit rounding (flat, away
 // from triangle edges) or within what the radial and the view ray's mesh points differ by (Gouraud, Phong):
 // the probe's mesh point lies radially under the exact point, the pixel's on the view ray.
+// With one term shown (the demo's K) as with the whole sum.
 TEST(Probe, PredictsTheRenderedPixel) {
     SHADELAB_REQUIRE_GL(renderer);
-    for (const ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong}) {
-        Scene scene = litSphereScene(128, LightType::Point);
-        scene.shading = mode;
-        scene.objects[0].subdivisions = 3;
-        const Image image = renderer->render(scene);
-        const SphereMesh mesh = buildSphere(3, scene.vertexNormals);
-        double worst = 0;
-        int probed = 0;
-        // Within 0.7 of the sphere's radius on screen (44 px): nearer the rim the view ray and the radial
-        // ray from the centre meet the coarse mesh in different triangles, and its silhouette lies inside
-        // the exact sphere's.
-        for (int j = 34; j < 95; j += 3)
-            for (int i = 34; i < 95; i += 3) {
-                if (std::hypot(i + 0.5 - 64, j + 0.5 - 64) > 0.7 * 44) continue;
-                const auto point = pickSurfacePoint(scene, i + 0.5, j + 0.5);
-                if (!point) continue;
-                const ProbeReport probe = probeSurface(scene, *point, mesh);
-                if (std::min({probe.barycentric.x, probe.barycentric.y, probe.barycentric.z}) < 0.08)
-                    continue;
-                const glm::u8vec3 pixel = rgbAt(image, i, j);
-                if (std::getenv("PROBE_DEBUG"))
-                    std::printf("%d,%d probe %.1f %.1f %.1f pixel %d %d %d\n", i, j, probe.mode.color.x * 255,
-                                probe.mode.color.y * 255, probe.mode.color.z * 255, pixel.x, pixel.y,
-                                pixel.z);
-                // Flat: the pixel itself. Otherwise the probe's point is within a pixel of the pixel's own
-                // point, so its value lies within the 3 × 3 neighbourhood's range (the highlight changes
-                // by up to ~15/255 per pixel at level 3).
-                const int reach = mode == ShadingMode::Flat ? 0 : 1;
-                for (int k = 0; k < 3; ++k) {
-                    double low = 255, high = 0;
-                    for (int dy = -reach; dy <= reach; ++dy)
-                        for (int dx = -reach; dx <= reach; ++dx) {
-                            const double v = rgbAt(image, i + dx, j + dy)[k];
-                            low = std::min(low, v);
-                            high = std::max(high, v);
-                        }
-                    const double value = probe.mode.color[k] * 255;
-                    worst = std::max(worst, std::max(low - value, value - high));
+    for (const LightingTerm term : {LightingTerm::All, LightingTerm::Diffuse})
+        for (const ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong}) {
+            Scene scene = litSphereScene(128, LightType::Point);
+            scene.shading = mode;
+            scene.term = term;
+            scene.objects[0].subdivisions = 3;
+            const Image image = renderer->render(scene);
+            const SphereMesh mesh = buildSphere(3, scene.vertexNormals);
+            double worst = 0;
+            int probed = 0;
+            // Within 0.7 of the sphere's radius on screen (44 px): nearer the rim the view ray and the radial
+            // ray from the centre meet the coarse mesh in different triangles, and its silhouette lies inside
+            // the exact sphere's.
+            for (int j = 34; j < 95; j += 3)
+                for (int i = 34; i < 95; i += 3) {
+                    if (std::hypot(i + 0.5 - 64, j + 0.5 - 64) > 0.7 * 44) continue;
+                    const auto point = pickSurfacePoint(scene, i + 0.5, j + 0.5);
+                    if (!point) continue;
+                    const ProbeReport probe = probeSurface(scene, *point, mesh);
+                    if (std::min({probe.barycentric.x, probe.barycentric.y, probe.barycentric.z}) < 0.08)
+                        continue;
+                    const glm::u8vec3 pixel = rgbAt(image, i, j);
+                    if (std::getenv("PROBE_DEBUG"))
+                        std::printf("%d,%d probe %.1f %.1f %.1f pixel %d %d %d\n", i, j,
+                                    probe.mode.color.x * 255, probe.mode.color.y * 255,
+                                    probe.mode.color.z * 255, pixel.x, pixel.y, pixel.z);
+                    // Flat: the pixel itself. Otherwise the probe's point is within a pixel of the pixel's
+                    // own point, so its value lies within the 3 × 3 neighbourhood's range (the highlight
+                    // changes by up to ~15/255 per pixel at level 3).
+                    const int reach = mode == ShadingMode::Flat ? 0 : 1;
+                    for (int k = 0; k < 3; ++k) {
+                        double low = 255, high = 0;
+                        for (int dy = -reach; dy <= reach; ++dy)
+                            for (int dx = -reach; dx <= reach; ++dx) {
+                                const double v = rgbAt(image, i + dx, j + dy)[k];
+                                low = std::min(low, v);
+                                high = std::max(high, v);
+                            }
+                        const double value = probe.mode.color[k] * 255;
+                        worst = std::max(worst, std::max(low - value, value - high));
+                    }
+                    ++probed;
                 }
-                ++probed;
-            }
-        std::printf("%s: %d points, largest distance of the probe from the pixels' range %.2f/255\n",
-                    std::string(toString(mode)).c_str(), probed, worst);
-        EXPECT_GT(probed, 60);
-        EXPECT_LT(worst, 1.01) << toString(mode); // float against double, and the 8-bit rounding
-    }
+            std::printf("%s, %s: %d points, largest distance of the probe from the pixels' range %.2f/255\n",
+                        std::string(toString(mode)).c_str(), std::string(toString(term)).c_str(), probed,
+                        worst);
+            EXPECT_GT(probed, 60);
+            EXPECT_LT(worst, 1.01) << toString(mode) << ", " << toString(term); // float against double, 8-bit
+        }
 }
 
 } // namespace

@@ -52,25 +52,47 @@ double largestDifference(const glm::dvec3& a, const glm::dvec3& b) {
 }
 
 // The exact sample at a pixel's surface point is what the analytic reference shows at that pixel.
+// Under every term (the demo's K): the pixel row is what is drawn, one term alone where one is shown.
 TEST(Probe, ExactSampleIsTheReferencePixel) {
-    for (const bool orthographic : {false, true}) {
-        Scene scene = probeScene(ShadingMode::Phong, LightingModel::Phong, 3);
-        if (orthographic)
-            scene.projection = {ProjectionType::Orthographic, 40, -1.5, 1.5, -1.5, 1.5, 0.5, 20};
-        const ReferenceImage reference = renderReference(scene);
-        int probed = 0;
-        for (int j = 8; j < 96; j += 11)
-            for (int i = 8; i < 96; i += 11) {
-                if (reference.objectId[std::size_t(j) * 96 + std::size_t(i)] < 0) continue;
-                const ProbeReport probe = probeAtPixel(scene, i, j);
-                const float* pixel = reference.color.pixel(i, j);
-                EXPECT_LT(largestDifference(probe.exact.color, glm::dvec3(pixel[0], pixel[1], pixel[2])),
-                          1e-6)
-                    << "pixel " << i << "," << j << (orthographic ? " orthographic" : " perspective");
-                ++probed;
-            }
-        EXPECT_GE(probed, 15);
-    }
+    for (const bool orthographic : {false, true})
+        for (const LightingTerm term : kLightingTerms) {
+            Scene scene = probeScene(ShadingMode::Phong, LightingModel::Phong, 3);
+            scene.term = term;
+            if (orthographic)
+                scene.projection = {ProjectionType::Orthographic, 40, -1.5, 1.5, -1.5, 1.5, 0.5, 20};
+            const ReferenceImage reference = renderReference(scene);
+            int probed = 0;
+            for (int j = 8; j < 96; j += 11)
+                for (int i = 8; i < 96; i += 11) {
+                    if (reference.objectId[std::size_t(j) * 96 + std::size_t(i)] < 0) continue;
+                    const ProbeReport probe = probeAtPixel(scene, i, j);
+                    const float* pixel = reference.color.pixel(i, j);
+                    EXPECT_LT(largestDifference(probe.exact.color, glm::dvec3(pixel[0], pixel[1], pixel[2])),
+                              1e-6)
+                        << "pixel " << i << "," << j << (orthographic ? " orthographic" : " perspective")
+                        << ", " << toString(term);
+                    ++probed;
+                }
+            EXPECT_GE(probed, 15);
+        }
+}
+
+// The mode's pixel follows the term too, for every mode: the term's own value, clamped, and the difference
+// row (mode against exact) is between the two drawn values.
+TEST(Probe, PixelAndDifferenceFollowTheTermShown) {
+    for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong})
+        for (const LightingTerm term :
+             {LightingTerm::Ambient, LightingTerm::Diffuse, LightingTerm::Specular}) {
+            Scene scene = probeScene(mode, LightingModel::BlinnPhong, 2);
+            scene.term = term;
+            const ProbeReport probe = probeAtPixel(scene, 40, 44);
+            scene.term = LightingTerm::All;
+            const ProbeReport all = probeAtPixel(scene, 40, 44);
+            EXPECT_NE(probe.mode.color, all.mode.color) << toString(mode) << ", " << toString(term);
+            if (mode != ShadingMode::Gouraud) // Gouraud interpolates the vertices' clamped colours
+                EXPECT_EQ(probe.mode.color, clampColor(probe.mode.terms.of(term))) << toString(mode);
+            EXPECT_EQ(probe.exact.color, clampColor(probe.exact.terms.of(term))) << toString(mode);
+        }
 }
 
 TEST(Probe, BackgroundPicksNothing) {

@@ -35,7 +35,8 @@ struct ProbeSample {
     // and its exact normal.
     SurfacePoint pointView;
     LightTerms terms; // unclamped; Gouraud: the three vertices' terms interpolated, as the rasterizer does
-    glm::dvec3 color; // what reaches the pixel: clamped (Gouraud: the clamped vertex colours interpolated)
+    glm::dvec3 color; // what reaches the pixel: the sum, or the scene's term alone (the demo's K), clamped
+                      // (Gouraud: the clamped vertex colours interpolated)
     // For the first light that is not ambient: l, and r (Phong lighting) or h (Blinn-Phong); 0 without one.
     glm::dvec3 toLight{0.0}, specularVector{0.0};
     bool operator==(const ProbeSample&) const = default;
