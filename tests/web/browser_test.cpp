@@ -24,6 +24,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <thread>
 #include <vector>
@@ -1412,6 +1413,70 @@ TEST_F(Browser, ServeGivesThePageAndNothingElse) {
     ::kill(server, SIGTERM);
     int status = 0;
     ::waitpid(server, &status, 0);
+}
+
+// A client that asks for `target` and resets the connection (SO_LINGER 0) after reading a little, as a tab
+// closed mid-download does. Its small receive buffer keeps the server writing when the reset arrives.
+void requestAndHangUp(int port, const std::string& target) {
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    const int small = 4096;
+    ::setsockopt(fd, SOL_SOCKET, SO_RCVBUF, &small, sizeof small);
+    const timeval limit{5, 0};
+    ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &limit, sizeof limit);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    address.sin_port = htons(std::uint16_t(port));
+    if (::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0) {
+        const std::string request = "GET " + target + " HTTP/1.0\r\nHost: 127.0.0.1\r\n\r\n";
+        if (::write(fd, request.data(), request.size()) == ssize_t(request.size())) {
+            char buffer[256];
+            (void)!::read(fd, buffer, sizeof buffer); // the answer has started
+        }
+        const linger reset{1, 0};
+        ::setsockopt(fd, SOL_SOCKET, SO_LINGER, &reset, sizeof reset);
+    }
+    ::close(fd);
+}
+
+// web/serve.py answers a path Python cannot look up (a NUL: realpath raised, the connection closed with no
+// answer and a traceback) with 400, and a client that hangs up mid-answer (a ConnectionReset or BrokenPipe
+// traceback) leaves nothing on standard error; the server goes on answering. Served: a folder with a
+// 64 MB file, more than loopback's socket buffers take (the page's 1.3 MB wasm fit in them whole).
+TEST_F(Browser, ServeAnswersBadPathsAndIsSilentWhenAClientHangsUp) {
+    fs::create_directories(dir_ / "site");
+    std::ofstream(dir_ / "site" / "index.html") << "<!doctype html>\n";
+    std::ofstream(dir_ / "site" / "big.bin").close();
+    fs::resize_file(dir_ / "site" / "big.bin", 64 << 20); // sparse: no 64 MB written to /tmp
+    const int port = freePort();
+    ASSERT_GT(port, 0);
+    const fs::path serve = fs::path(SHADELAB_WEB_DRIVER).parent_path() / "serve.py";
+    const fs::path errors = dir_ / "serve.err";
+    const pid_t server = ::fork();
+    if (server == 0) {
+        const int err = ::open(errors.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+        if (err < 0 || ::dup2(err, STDERR_FILENO) < 0) ::_exit(126);
+        ::execl("/usr/bin/python3", "/usr/bin/python3", serve.c_str(), (dir_ / "site").c_str(),
+                std::to_string(port).c_str(), static_cast<char*>(nullptr));
+        ::_exit(127);
+    }
+    ASSERT_GT(server, 0);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    int index = -1;
+    while ((index = httpStatus(port, "/")) < 0 && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    EXPECT_EQ(index, 200) << "index.html (the server did not answer within 20 s if -1)";
+    for (const char* bad : {"/%00", "/scenes/%00.json", "/index.html%00"})
+        EXPECT_EQ(httpStatus(port, bad), 400) << bad;
+    for (int i = 0; i < 3; ++i) requestAndHangUp(port, "/big.bin");
+    std::this_thread::sleep_for(std::chrono::milliseconds(500)); // the handlers' threads meet the resets
+    EXPECT_EQ(httpStatus(port, "/"), 200) << "the server answers after the hang-ups";
+    ::kill(server, SIGTERM);
+    int status = 0;
+    ::waitpid(server, &status, 0);
+    std::ifstream in(errors);
+    const std::string err((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(err, "") << "the server's standard error";
 }
 
 // scripts/web.sh render: the browser's `shadelab render` (a PNG of the scene's size; exit 2 with the CLI's
