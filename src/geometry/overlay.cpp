@@ -13,10 +13,6 @@ void segment(std::vector<LineVertex>& lines, const glm::dvec3& from, const glm::
     lines.push_back({glm::vec3(to), color});
 }
 
-} // namespace
-
-namespace {
-
 // Where a normal line drawn from `from` ends, in object space: once the object's matrix M (its linear part
 // `worldFromObject`) is applied, the line runs from M·from along `normalWorldFromObject`·n, the normal the
 // shading uses, and is `worldLength` long. A line drawn in object space and then taken through M would turn
@@ -32,6 +28,11 @@ struct NormalTips {
 
 } // namespace
 
+NormalsShown normalsShown(int level) {
+    const int shown = std::min(level, kNormalsOverlayLevel);
+    return {shown, std::size_t(1) << (2 * (level - shown))};
+}
+
 std::vector<LineVertex> overlayLines(const SphereMesh& mesh, Overlay overlay,
                                      const glm::dmat3& worldFromObject, NormalMatrixRule rule) {
     std::vector<LineVertex> lines;
@@ -44,18 +45,23 @@ std::vector<LineVertex> overlayLines(const SphereMesh& mesh, Overlay overlay,
             if (a < b) segment(lines, lift * mesh.positions[a], lift * mesh.positions[b], kEdgeColor);
         }
     if (overlay != Overlay::Normals) return lines;
-    // A little longer than an edge (about 1.63 / 2^level), but never a hair nor a spike; in world space, as
-    // long on every side of a stretched object (the cube root of |det M| is its mean scale).
-    const double length = std::clamp(0.7 * 1.63 / std::exp2(mesh.level), 0.05, 0.35);
+    // Past kNormalsOverlayLevel the normals would be a hairball: each face of that level shows the normal
+    // of its centre descendant (the middle child, four[3] in sphere.cpp, again and again: face f of level
+    // L descends from face f / 4^(L-k) of level k), and the vertices of that level show theirs (the
+    // coarser levels' vertices come first). A little longer than an edge of the level shown (about
+    // 1.63 / 2^level), but never a hair nor a spike; in world space, as long on every side of a stretched
+    // object (the cube root of |det M| is its mean scale).
+    const NormalsShown shown = normalsShown(mesh.level);
+    const double length = std::clamp(0.7 * 1.63 / std::exp2(shown.level), 0.05, 0.35);
     const NormalTips tip{glm::inverse(worldFromObject),
                          normalViewFromObject(glm::dmat4(worldFromObject), rule),
                          length * std::cbrt(std::abs(glm::determinant(worldFromObject)))};
-    for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+    for (std::size_t f = shown.faceStride - 1; f < mesh.triangles.size(); f += shown.faceStride) {
         const glm::uvec3 t = mesh.triangles[f];
         const glm::dvec3 centroid = (mesh.positions[t.x] + mesh.positions[t.y] + mesh.positions[t.z]) / 3.0;
         segment(lines, centroid, tip(centroid, mesh.faceNormals[f]), kFaceNormalColor);
     }
-    for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+    for (std::size_t v = 0; v < std::min(mesh.positions.size(), sphereVertexCount(shown.level)); ++v) {
         const glm::dvec3 from = lift * mesh.positions[v];
         segment(lines, from, tip(from, mesh.vertexNormals[v]), kVertexNormalColor);
     }

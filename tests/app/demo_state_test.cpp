@@ -1706,3 +1706,21 @@ TEST(DemoPresentation, LabelImageIsLargeStableAndNeverClipped) {
     EXPECT_GT(presentationLabelImage(label, 1920, 1080).image.height, wide.image.height)
         << "scaled with the window";
 }
+
+// The normals overlay past level 3 is thinned (overlay.h); the status line (window and page) says how, and
+// says nothing at level 3 or without the overlay.
+TEST(DemoStatus, SaysWhichNormalsTheThinnedOverlayShows) {
+    shadelab::Scene scene =
+        shadelab::parseScene(R"({"overlay": "normals", "objects": [{"subdivisions": 6}]})");
+    EXPECT_NE(shadelab::app::statusText(shadelab::app::DemoState(scene))
+                  .find("normals shown: level 3's vertices and 1 face in 64 (of level 6)"),
+              std::string::npos)
+        << shadelab::app::statusText(shadelab::app::DemoState(scene));
+    scene.objects[0].subdivisions = 3;
+    EXPECT_EQ(shadelab::app::statusText(shadelab::app::DemoState(scene)).find("normals shown"),
+              std::string::npos);
+    scene.objects[0].subdivisions = 6;
+    scene.overlay = shadelab::Overlay::Wireframe;
+    EXPECT_EQ(shadelab::app::statusText(shadelab::app::DemoState(scene)).find("normals shown"),
+              std::string::npos);
+}

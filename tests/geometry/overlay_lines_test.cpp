@@ -67,5 +67,32 @@ TEST(OverlayLines, UniformScaleAndIdentityKeepTheMeshsNormals) {
         EXPECT_NEAR(glm::length(a[i].position - b[i].position), 0, 1e-6);
 }
 
+// Past level 3 the normals are thinned so that they read: level 3's vertices, and each level-3 face's centre
+// descendant, whose centroid lies near its ancestor's (the middle child of the middle child ...).
+TEST(OverlayLines, FineLevelsShowTheNormalsOfLevelThree) {
+    const SphereMesh coarse = buildSphere(3, VertexNormals::Averaged);
+    const std::size_t coarseEdges = 6 * 64, coarseNormals = coarse.triangles.size() + coarse.positions.size();
+    EXPECT_EQ(overlayLines(coarse, Overlay::Normals).size(), 2 * (coarseEdges + coarseNormals));
+    for (const int level : {4, 6}) {
+        const SphereMesh mesh = buildSphere(level, VertexNormals::Averaged);
+        const auto lines = overlayLines(mesh, Overlay::Normals);
+        const std::size_t edges = 6 * (std::size_t(1) << (2 * level));
+        ASSERT_EQ(lines.size(), 2 * (edges + coarseNormals)) << "level " << level;
+        EXPECT_EQ(normalsShown(level).faceStride, std::size_t(1) << (2 * (level - 3)));
+        // The vertex normals start at level 3's vertices, the face normals near level 3's centroids.
+        for (std::size_t v = 0; v < coarse.positions.size(); ++v) {
+            const glm::dvec3 from(lines[2 * (edges + coarse.triangles.size() + v)].position);
+            EXPECT_NEAR(glm::length(from - double(kOverlayLift) * coarse.positions[v]), 0, 1e-6);
+        }
+        for (std::size_t f = 0; f < coarse.triangles.size(); ++f) {
+            const glm::uvec3 t = coarse.triangles[f];
+            const glm::dvec3 centroid =
+                (coarse.positions[t.x] + coarse.positions[t.y] + coarse.positions[t.z]) / 3.0;
+            const glm::dvec3 from(lines[2 * (edges + f)].position);
+            EXPECT_LT(glm::length(glm::normalize(from) - glm::normalize(centroid)), 0.03) << "face " << f;
+        }
+    }
+}
+
 } // namespace
 } // namespace shadelab

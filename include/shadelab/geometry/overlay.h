@@ -2,6 +2,7 @@
 // W key) and the probe's vectors l, n, v and r or h. Plain CPU data; the GL layer draws it (gl/renderer.h).
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -34,11 +35,22 @@ inline constexpr glm::vec3 kProbeMarkColor{1.0f, 0.35f, 0.1f};
 // and hides those behind the object without fighting the faces they lie on.
 inline constexpr float kOverlayLift = 1.003f;
 
+// The normals overlay thins a mesh finer than kNormalsOverlayLevel so that it reads at any level: it draws
+// the normals of that level's vertices, and of one face in faceStride (4^(level - shown level)), the
+// centre descendant of each face of that level. The window's and the page's status line say so.
+inline constexpr int kNormalsOverlayLevel = 3;
+struct NormalsShown {
+    int level;              // the level whose vertices and faces show a normal: min(level, 3)
+    std::size_t faceStride; // one face normal drawn in this many (1 up to level 3)
+};
+NormalsShown normalsShown(int level);
+
 // In object space: every edge once (Wireframe, Normals), and with Normals each face normal from its
-// centroid and each vertex normal (of the mesh's kind) from its vertex, a little longer than an edge. The
-// normals are the ones the shading uses: drawn through the object's matrix M (`worldFromObject`, its
-// linear part), each line runs along the normal matrix of `rule` times n, (M⁻¹)ᵀ·n or, wrong on purpose,
-// M·n (DESIGN §2), and is as long in world space whichever way it points.
+// centroid and each vertex normal (of the mesh's kind) from its vertex, a little longer than an edge,
+// thinned past kNormalsOverlayLevel (normalsShown). The normals are the ones the shading uses: drawn through
+// the object's matrix M (`worldFromObject`, its linear part), each line runs along the normal matrix of
+// `rule` times n, (M⁻¹)ᵀ·n or, wrong on purpose, M·n (DESIGN §2), and is as long in world space whichever way
+// it points.
 std::vector<LineVertex> overlayLines(const SphereMesh& mesh, Overlay overlay,
                                      const glm::dmat3& worldFromObject = glm::dmat3(1),
                                      NormalMatrixRule rule = NormalMatrixRule::InverseTranspose);

@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "app/demo/demo_format.h"
+#include "shadelab/geometry/overlay.h"
 #include "shadelab/geometry/subdivision.h"
 #include "shadelab/io/text.h"
 
@@ -42,6 +43,19 @@ std::string geometry(const DemoState& state, const Scene& drawn) {
     return "level " + std::to_string(state.level()) + (state.autoLevel() ? " (auto)" : "");
 }
 
+// The normals overlay past kNormalsOverlayLevel draws a thinned set (overlay.h): said, so that nobody reads
+// the missing normals as missing faces.
+std::string normalsOverlayNote(const Scene& drawn) {
+    if (drawn.overlay != Overlay::Normals || drawn.shading == ShadingMode::Exact) return "";
+    int finest = 0;
+    for (const SceneObject& object : drawn.objects)
+        finest = std::max(finest, subdivisionLevel(drawn, object));
+    const NormalsShown shown = normalsShown(finest);
+    if (shown.faceStride == 1) return "";
+    return "\nnormals shown: level " + std::to_string(shown.level) + "'s vertices and 1 face in " +
+           std::to_string(shown.faceStride) + " (of level " + std::to_string(finest) + ")";
+}
+
 } // namespace
 
 std::string windowTitle(const DemoState& state, double frameMs) {
@@ -65,7 +79,7 @@ std::string statusText(const DemoState& state) {
            (state.orthographic() ? "orthographic" : "perspective") + ", " +
            (scene.vertexNormals == VertexNormals::Averaged ? "averaged" : "exact") +
            " normals\nmaterial: " + state.materialName() + ", lights: " + state.lightsName() +
-           "\npanel edits: " + state.editedObjectName() +
+           "\npanel edits: " + state.editedObjectName() + normalsOverlayNote(scene) +
            (state.viewReport.empty() ? "" : "\n" + state.viewReport) +
            (state.levelRefusal.empty() ? "" : "\n" + state.levelRefusal);
 }
