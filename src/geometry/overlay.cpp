@@ -77,6 +77,12 @@ std::vector<LineVertex> probeLines(const ProbeReport& probe, double length) {
         segment(lines, p.position, p.position + length * probe.mode.toLight, kToLightColor);
         segment(lines, p.position, p.position + length * probe.mode.specularVector, kSpecularVectorColor);
     }
+    if (const NormalMatrixArgument& a = probe.normalMatrix; a.unevenScale) {
+        segment(lines, p.position, p.position + length * a.tangentByM, kTangentByMColor);
+        segment(lines, p.position, p.position + length * a.normalByM, kNormalByMColor);
+        segment(lines, p.position, p.position + length * a.normalByInverseTranspose,
+                kNormalByInverseTransposeColor);
+    }
     const double arm = 0.1 * length;
     segment(lines, p.position - glm::dvec3(arm, 0, 0), p.position + glm::dvec3(arm, 0, 0), kProbeMarkColor);
     segment(lines, p.position - glm::dvec3(0, arm, 0), p.position + glm::dvec3(0, arm, 0), kProbeMarkColor);

@@ -75,6 +75,36 @@ std::optional<ProbePoint> pickSurfacePoint(const Scene& scene, double x, double 
     return ProbePoint{std::size_t(hit.object), unitDirection(hit.pointObject)};
 }
 
+namespace {
+
+// The normal-matrix argument at the unit sphere's point u of `object` (NormalMatrixArgument).
+NormalMatrixArgument normalMatrixArgument(const SceneObject& object, const glm::dmat4& viewFromObject,
+                                          const glm::dvec3& u) {
+    NormalMatrixArgument a;
+    const glm::dvec3 scale = glm::abs(object.scale);
+    a.unevenScale = scale.x != scale.y || scale.y != scale.z;
+    // The most stretched axis first; the next one where u lies along it (no tangent part).
+    int axes[3] = {0, 1, 2};
+    std::sort(axes, axes + 3, [&](int i, int j) { return scale[i] > scale[j]; });
+    for (const int axis : axes) {
+        glm::dvec3 e(0.0);
+        e[axis] = 1;
+        const glm::dvec3 tangent = e - glm::dot(e, u) * u;
+        if (glm::length(tangent) > 1e-3) {
+            a.tangentObject = glm::normalize(tangent);
+            break;
+        }
+    }
+    const glm::dmat3 m(viewFromObject);
+    a.tangentByM = safeNormalize(m * a.tangentObject, glm::dvec3(1, 0, 0));
+    a.normalByM = safeNormalize(m * u, glm::dvec3(0, 0, 1));
+    a.normalByInverseTranspose = safeNormalize(
+        normalViewFromObject(viewFromObject, NormalMatrixRule::InverseTranspose) * u, glm::dvec3(0, 0, 1));
+    return a;
+}
+
+} // namespace
+
 ProbeReport probeSurface(const Scene& scene, const ProbePoint& point, const SphereMesh& mesh) {
     if (point.object >= scene.objects.size())
         throw InputError("probe: object " + std::to_string(point.object) + " of a scene with " +
@@ -103,6 +133,7 @@ ProbeReport probeSurface(const Scene& scene, const ProbePoint& point, const Sphe
     report.light = light;
     const glm::dvec3 u = unitDirection(point.directionObject);
     report.exact = sampleAt(surface(u, u), object.material, lightsView, light, options);
+    report.normalMatrix = normalMatrixArgument(object, frame.viewFromObject, u);
 
     const auto [t, w] = triangleUnder(mesh, u);
     report.triangle = t;

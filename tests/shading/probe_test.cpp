@@ -187,6 +187,42 @@ TEST(Probe, VectorsAreTheEquationsLNVRH) {
     }
 }
 
+// The lecture's argument for (M⁻¹)ᵀ at the probed point of an uneven ellipsoid: t is tangent (n·t = 0), M·t
+// stays tangent to the drawn surface, (M⁻¹)ᵀ·n is perpendicular to it and M·n is not; each vector against
+// its own computation here (a diagonal M's inverse transpose is 1/s per axis).
+TEST(Probe, NormalMatrixArgumentAtThePoint) {
+    Scene scene = probeScene(ShadingMode::Phong, LightingModel::BlinnPhong, 3);
+    scene.objects[0].scale = {1.8, 0.45, 0.9};
+    const glm::dvec3 s = scene.objects[0].radius * scene.objects[0].scale;
+    const glm::dmat3 viewFromWorld(sceneView(scene).viewFromWorld);
+    int probed = 0;
+    double largestLean = 0;
+    for (const auto& [i, j] : {std::pair{30, 40}, std::pair{60, 35}, std::pair{48, 60}, std::pair{25, 50}}) {
+        const auto point = pickSurfacePoint(scene, i + 0.5, j + 0.5);
+        ASSERT_TRUE(point) << i << "," << j;
+        const ProbeReport probe = probeSurface(scene, *point, buildSphere(3));
+        const NormalMatrixArgument& a = probe.normalMatrix;
+        ASSERT_TRUE(a.unevenScale);
+        const glm::dvec3 n = glm::normalize(point->directionObject);
+        EXPECT_NEAR(glm::dot(n, a.tangentObject), 0, 1e-12);
+        EXPECT_NEAR(glm::length(a.tangentObject), 1, 1e-12);
+        EXPECT_LT(glm::length(a.tangentByM - glm::normalize(viewFromWorld * (s * a.tangentObject))), 1e-9);
+        EXPECT_LT(glm::length(a.normalByM - glm::normalize(viewFromWorld * (s * n))), 1e-9);
+        EXPECT_LT(glm::length(a.normalByInverseTranspose - glm::normalize(viewFromWorld * (n / s))), 1e-9);
+        EXPECT_NEAR(glm::dot(a.tangentByM, a.normalByInverseTranspose), 0, 1e-9);
+        largestLean = std::max(largestLean, std::abs(glm::dot(a.tangentByM, a.normalByM)));
+        ++probed;
+    }
+    EXPECT_EQ(probed, 4);
+    EXPECT_GT(largestLean, 0.2) << "M·n leans off the surface's normal on an uneven ellipsoid";
+    // Under a uniform scale the two normals agree, and nothing extra is drawn.
+    scene.objects[0].scale = {2, 2, 2};
+    const ProbeReport uniform = probeAtPixel(scene, 48, 48);
+    EXPECT_FALSE(uniform.normalMatrix.unevenScale);
+    EXPECT_LT(glm::length(uniform.normalMatrix.normalByM - uniform.normalMatrix.normalByInverseTranspose),
+              1e-12);
+}
+
 TEST(Probe, ObjectOutsideTheSceneIsAnInputError) {
     const Scene scene = probeScene(ShadingMode::Phong, LightingModel::Phong, 1);
     EXPECT_THROW(probeSurface(scene, ProbePoint{3, {0, 0, 1}}, buildSphere(1)), InputError);
@@ -219,10 +255,17 @@ TEST(OverlayLines, ProbeLinesFollowTheVectors) {
     const Scene scene = probeScene(ShadingMode::Flat, LightingModel::Phong, 3);
     const ProbeReport probe = probeAtPixel(scene, 48, 48);
     const auto lines = probeLines(probe, 0.5);
-    ASSERT_EQ(lines.size(), 12u); // four vectors and the two arms of the cross
-    const glm::dvec3 vectors[] = {probe.mode.pointView.normal, probe.mode.pointView.toViewer,
-                                  probe.mode.toLight, probe.mode.specularVector};
-    for (std::size_t k = 0; k < 4; ++k) {
+    // Four vectors, the normal matrix's three on this ellipsoid (M·t, M·n, (M⁻¹)ᵀ·n), the cross's two arms.
+    ASSERT_EQ(lines.size(), 18u);
+    const NormalMatrixArgument& a = probe.normalMatrix;
+    const glm::dvec3 vectors[] = {probe.mode.pointView.normal,
+                                  probe.mode.pointView.toViewer,
+                                  probe.mode.toLight,
+                                  probe.mode.specularVector,
+                                  a.tangentByM,
+                                  a.normalByM,
+                                  a.normalByInverseTranspose};
+    for (std::size_t k = 0; k < 7; ++k) {
         EXPECT_LT(glm::length(glm::dvec3(lines[2 * k].position) - probe.mode.pointView.position), 1e-6);
         EXPECT_LT(
             glm::length(glm::dvec3(lines[2 * k + 1].position - lines[2 * k].position) - 0.5 * vectors[k]),

@@ -28,6 +28,10 @@ inline constexpr glm::vec3 kToLightColor{1.0f, 0.95f, 0.1f};
 inline constexpr glm::vec3 kNormalColor{1.0f, 1.0f, 1.0f};
 inline constexpr glm::vec3 kToViewerColor{0.2f, 1.0f, 0.3f};
 inline constexpr glm::vec3 kSpecularVectorColor{1.0f, 0.2f, 1.0f};
+// The normal matrix's argument where M scales unevenly: M·t blue, M·n red, (M⁻¹)ᵀ·n cyan.
+inline constexpr glm::vec3 kTangentByMColor{0.45f, 0.5f, 1.0f};
+inline constexpr glm::vec3 kNormalByMColor{1.0f, 0.15f, 0.15f};
+inline constexpr glm::vec3 kNormalByInverseTransposeColor{0.2f, 0.95f, 0.95f};
 // An orange cross marks the point: n and v often face the camera and show as dots.
 inline constexpr glm::vec3 kProbeMarkColor{1.0f, 0.35f, 0.1f};
 
@@ -56,8 +60,9 @@ std::vector<LineVertex> overlayLines(const SphereMesh& mesh, Overlay overlay,
                                      NormalMatrixRule rule = NormalMatrixRule::InverseTranspose);
 
 // In view space: the probe's n, v, l and r/h from the point where the mode evaluates the lighting, each
-// `length` long (l and r/h only where a light is not ambient), then a cross of two segments across the
-// point in the view plane, `length`/5 wide.
+// `length` long (l and r/h only where a light is not ambient); where M scales unevenly, M·t, M·n and
+// (M⁻¹)ᵀ·n from the same point (NormalMatrixArgument); then a cross of two segments across the point in
+// the view plane, `length`/5 wide.
 std::vector<LineVertex> probeLines(const ProbeReport& probe, double length);
 
 } // namespace shadelab

@@ -42,6 +42,18 @@ struct ProbeSample {
     bool operator==(const ProbeSample&) const = default;
 };
 
+// The lecture's argument for the normal matrix at the probed point, at the exact point, in view space (unit
+// vectors): a tangent t of the unit sphere there (along the object axis M stretches most, projected into
+// the tangent plane: n·t = 0), M·t tangent to the drawn surface, and the normal taken both ways: M·n, which
+// stays perpendicular to M·t only under rotations and uniform scales, and (M⁻¹)ᵀ·n, which always does
+// ((M⁻¹)ᵀn)·(Mt) = nᵀM⁻¹Mt = n·t = 0 (DESIGN §2).
+struct NormalMatrixArgument {
+    glm::dvec3 tangentObject{0.0};                                             // t, in object space
+    glm::dvec3 tangentByM{0.0}, normalByM{0.0}, normalByInverseTranspose{0.0}; // view space
+    bool unevenScale = false; // M scales unevenly: the two normals differ (drawn only then)
+    bool operator==(const NormalMatrixArgument&) const = default;
+};
+
 struct ProbeReport {
     ProbePoint point;
     int level = 0;               // the drawn level of the object's mesh
@@ -49,6 +61,7 @@ struct ProbeReport {
     glm::dvec3 barycentric{0.0}; // of the mesh point in that triangle
     int light = -1;              // the light whose l and r/h are given, −1 for none
     ProbeSample mode, exact;
+    NormalMatrixArgument normalMatrix;
     bool operator==(const ProbeReport&) const = default;
 };
 

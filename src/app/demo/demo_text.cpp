@@ -128,6 +128,15 @@ std::string probeText(const ProbeReport& probe, ShadingMode mode, LightingModel 
                 (lighting == LightingModel::Phong ? "r (magenta) " : "h (magenta) ") +
                 formatVector(probe.mode.specularVector) + "\n";
     }
+    if (const NormalMatrixArgument& a = probe.normalMatrix; a.unevenScale) {
+        // The lecture's argument: n·t = 0 before M; after it only (M⁻¹)ᵀn stays perpendicular to M·t.
+        std::snprintf(
+            line, sizeof line, "normal matrix, M uneven: (M t).(M n) = %.3f, (M t).((M^-1)^T n) = %.3f\n",
+            glm::dot(a.tangentByM, a.normalByM), glm::dot(a.tangentByM, a.normalByInverseTranspose));
+        text += std::string("t (object)  ") + formatVector(a.tangentObject) + "\nM t (blue)  " +
+                formatVector(a.tangentByM) + "\nM n (red)   " + formatVector(a.normalByM) +
+                "\n(M^-1)^T n (cyan) " + formatVector(a.normalByInverseTranspose) + "\n" + line;
+    }
     return text;
 }
 
