@@ -1,6 +1,7 @@
 """The native command line's rules for a scene file and an output path (src/scene/scene_json.cpp readSceneFile,
-src/io/atomic_file.cpp resolveOutput / PendingOutput), with its messages word for word, for web.sh render:
-the browser's `shadelab render` reads and writes files as `shadelab render` does. Keep the two in step
+src/io/output_path.cpp resolveOutput and refuseOverwritingInput, src/io/atomic_file.cpp PendingOutput), with
+its messages word for word, for web.sh render: the browser's `shadelab render` reads and writes files as
+`shadelab render` does. Keep the two in step
 (tests/web/browser_test.cpp RenderScript* compare them).
 """
 import errno
@@ -85,6 +86,11 @@ def read_scene(path):
 
 
 def _descriptor_named_by(path):
+    # std::filesystem's lexically_normal keeps a trailing separator ("/dev/fd/1/" and "/dev/fd/1/." stay
+    # "/dev/fd/1/"), so the command line names no descriptor there and then finds "/dev/fd/1" is no
+    # folder; os.path.normpath drops it, and "/dev/fd/1/" was taken for descriptor 1.
+    if path.endswith('/') or path.endswith('/.'):
+        return None
     text = os.path.normpath(path)
     named = {'/dev/stdin': 0, '/dev/stdout': 1, '/dev/stderr': 2}
     if text in named:
@@ -157,13 +163,32 @@ def resolve_output(user_path, name='--out'):
         raise InputError('%s: %s is a loop of symbolic links; give a path that ends at a file'
                          % (name, quoted(user_path)))
     folder = os.path.dirname(path) or '.'
-    if not os.path.isdir(folder):
-        if os.path.exists(folder):
-            raise InputError('%s: %s is a file, not a folder; choose a path inside a folder' % (name, quoted(folder)))
+    try:
+        folder_mode = os.stat(folder).st_mode
+    except OSError as e:
+        if e.errno == errno.ENOTDIR:  # FILE/sub/x.png: a regular file on the way, not a missing folder
+            raise InputError('%s: a part of %s is a file, not a folder; choose a path inside a folder'
+                             % (name, quoted(folder))) from None
         raise InputError('%s: the folder %s does not exist; create it first or choose another path'
-                         % (name, quoted(folder)))
+                         % (name, quoted(folder))) from None
+    if not stat.S_ISDIR(folder_mode):
+        raise InputError('%s: %s is a file, not a folder; choose a path inside a folder' % (name, quoted(folder)))
     _writable(path, folder, name)
     return 'regular', path
+
+
+def refuse_overwriting_input(output, field, input_path):
+    """refuseOverwritingInput: the output is the input file under any name, as stat() follows it (a link,
+    /dev/stdout or /dev/fd/N open on it, as in `--out /dev/stdout >> scene.json`)."""
+    if not output or output == '-' or not input_path or input_path == '-':
+        return
+    try:
+        a, b = os.stat(output), os.stat(input_path)
+    except (OSError, ValueError):
+        return
+    if (a.st_dev, a.st_ino) == (b.st_dev, b.st_ino):
+        raise InputError('%s: %s is the input file %s; writing it would destroy the input: choose another output '
+                         'path' % (field, quoted(output), quoted(input_path)))
 
 
 def _descriptor(user_path, fd, name):
@@ -176,6 +201,9 @@ def _descriptor(user_path, fd, name):
     if flags & os.O_ACCMODE == os.O_RDONLY:
         raise InputError('%s: %s names descriptor %d, which is open for reading only; give a file name, or - '
                          'for standard output' % (name, quoted(user_path), fd))
+    if stat.S_ISDIR(os.fstat(fd).st_mode):
+        raise InputError('%s: %s names descriptor %d, which is a directory; give a file name, or - for standard '
+                         'output' % (name, quoted(user_path), fd))
     return 'descriptor', fd
 
 

@@ -194,14 +194,10 @@ def render(argv):
     # (a regular file of at most 16 MiB, or -), and that one is not the other.
     try:
         target = cli_rules.resolve_output(out)
+        cli_rules.refuse_overwriting_input(out, '--out', scene_path)
         text, name = b'{}', 'defaults'
         if scene_path is not None:
             text, name = cli_rules.read_scene(scene_path), scene_path
-            if target[0] == 'regular' and os.path.exists(target[1]) and scene_path != '-' and \
-                    os.path.samefile(target[1], scene_path):
-                raise cli_rules.InputError('--out: %s is the input file %s; writing it would destroy the input: '
-                                           'choose another output path' % (cli_rules.quoted(out),
-                                                                           cli_rules.quoted(scene_path)))
     except cli_rules.InputError as e:
         return fail(2, str(e))
     page = Page()

@@ -1341,6 +1341,53 @@ TEST_F(Browser, RenderScriptFollowsTheCommandLinesRules) {
     EXPECT_TRUE(c.passed) << c.summary();
 }
 
+// scripts/web.sh render refuses what `shadelab render` refuses before any work, with its message and exit
+// code: standard output appended to the scene (`--out /dev/stdout >> scene.json`, and its other names)
+// wrote the PNG into its own input; a descriptor's name with a trailing slash (/dev/fd/1/ was taken for
+// descriptor 1) and a path under a regular file ("does not exist" where the command line says "a part of
+// ... is a file") were judged otherwise. The scene is the same after each run.
+TEST_F(Browser, RenderScriptRefusesOutputsAsTheCommandLineDoes) {
+    const std::string scene = R"({"image": {"width": 16, "height": 12}})"
+                              "\n";
+    std::ofstream(dir_ / "scene.json") << scene;
+    std::ofstream(dir_ / "afile") << "a regular file\n";
+    struct Case {
+        std::vector<std::string> args;
+        bool stdoutToScene; // standard output appended to scene.json, as `>> scene.json`
+    };
+    const std::vector<Case> cases = {
+        {{"render", "scene.json", "--out", "/dev/stdout"}, true},
+        {{"render", "scene.json", "--out", "/dev/fd/1"}, true},
+        {{"render", "scene.json", "--out", "/proc/self/fd/1"}, true},
+        {{"render", "scene.json", "--out", "/dev/fd/1/"}, false},
+        {{"render", "scene.json", "--out", "/dev/stdout/"}, false},
+        {{"render", "scene.json", "--out", "/proc/self/fd/1/."}, false},
+        {{"render", "scene.json", "--out", "afile/sub/x.png"}, false},
+        {{"render", "scene.json", "--out", "afile/x.png"}, false},
+    };
+    for (const Case& c : cases) {
+        const std::string shown = c.args.back() + (c.stdoutToScene ? " >> scene.json" : "");
+        RunOptions options;
+        options.timeout = std::chrono::seconds(60);
+        if (c.stdoutToScene) {
+            options.stdoutPath = dir_ / "scene.json";
+            options.stdoutAppends = true;
+        }
+        options.program = SHADELAB_EXE;
+        const Outcome cli = runWith(c.args, dir_, options);
+        options.program = SHADELAB_WEB_SH;
+        const Outcome web = runWith(c.args, dir_, options);
+        EXPECT_EQ(cli.exitCode, 2) << shown << ": " << cli.err;
+        EXPECT_EQ(web.exitCode, cli.exitCode) << shown << ": " << web.err;
+        EXPECT_EQ(web.err, cli.err) << shown;
+        std::ifstream in(dir_ / "scene.json", std::ios::binary);
+        const std::string after((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        EXPECT_EQ(after, scene) << shown << ": the scene was written to";
+        std::ofstream(dir_ / "scene.json", std::ios::trunc) << scene; // whole again for the next case
+    }
+    EXPECT_FALSE(fs::exists(dir_ / "afile" / "sub"));
+}
+
 // A free TCP port on 127.0.0.1 (bound and released; the server takes it right after).
 int freePort() {
     const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
