@@ -22,11 +22,13 @@
 #include <ostream>
 #include <regex>
 #include <set>
+#include <sstream>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
+#include <glm/glm.hpp>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <png.h>
@@ -141,6 +143,111 @@ TEST_F(CliTest, PrintMatricesPrintsTheCameraAndEveryObject) {
     EXPECT_EQ(piped.exitCode, 2) << describe(piped);
     EXPECT_NE(piped.err.find("--print-matrices"), std::string::npos) << piped.err;
     EXPECT_EQ(piped.out, "") << "neither matrices nor a PNG";
+}
+
+// The `count` rows of numbers printed under the first line of `text` that starts with `heading` (its own
+// row too when it holds one, as "u = [ ... ]" does): each "[ a b c ]" read as numbers. Note lines such as
+// "[l,r] = ..." are skipped.
+std::vector<std::vector<double>> printedRows(const std::string& text, std::string_view heading,
+                                             std::size_t count) {
+    std::vector<std::vector<double>> rows;
+    std::istringstream in(text);
+    bool found = false;
+    for (std::string line; rows.size() < count && std::getline(in, line);) {
+        found = found || line.starts_with(heading);
+        const std::size_t open = line.find('[');
+        if (!found || open == std::string::npos || line.find(']') == std::string::npos ||
+            std::isalpha(static_cast<unsigned char>(line[open + 1])))
+            continue;
+        std::istringstream numbers(line.substr(open + 1));
+        std::vector<double> row;
+        for (double x; numbers >> x;) row.push_back(x);
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+// The printed entries have 4 decimals (or 3 significant digits below 1e-3): half a unit of the last one,
+// with room for a tie rounded either way.
+constexpr double kPrintedTolerance = 5.1e-5;
+
+void expectPrinted(const std::vector<std::vector<double>>& printed,
+                   const std::vector<std::vector<double>>& expected, const std::string& name,
+                   const std::string& text) {
+    ASSERT_EQ(printed.size(), expected.size()) << name << " in\n" << text;
+    for (std::size_t r = 0; r < expected.size(); ++r) {
+        ASSERT_EQ(printed[r].size(), expected[r].size()) << name << " row " << r << " in\n" << text;
+        for (std::size_t c = 0; c < expected[r].size(); ++c)
+            EXPECT_NEAR(printed[r][c], expected[r][c], kPrintedTolerance)
+                << name << " [" << r << "][" << c << "]";
+    }
+}
+
+// Rows of a 3x3 given by its columns.
+std::vector<std::vector<double>> rowsOf(const glm::dvec3& c0, const glm::dvec3& c1, const glm::dvec3& c2) {
+    return {{c0.x, c1.x, c2.x}, {c0.y, c1.y, c2.y}, {c0.z, c1.z, c2.z}};
+}
+
+// The printed matrices of a rotated camera and an object whose M_cam M is a rotation times a non-uniform,
+// mirrored scale, held to the lecture's formulas computed here: the camera frame, M_cam's rows (u, -u.e),
+// (v, -v.e), (w, -w.e), M = translate(c) scale(r s), and the normal matrix ((M_cam M)^-1)^T (DESIGN §2; the
+// heading names no other scale). An axis-aligned camera and a diagonal M would not tell the normal matrix
+// from (M_cam M)^-1, nor from M_cam M up to a scale: here all three differ.
+TEST_F(CliTest, PrintMatricesOfARotatedCameraAndAScaledObjectAreTheLecturesFormulas) {
+    const glm::dvec3 eyeWorld{2.3, 1.7, 3.1}, targetWorld{0.2, -0.4, 0.5}, upWorld{0.2, 1, 0.1};
+    const glm::dvec3 centerWorld{0.4, -0.3, 0.2}, scale{1.8, -0.45, 0.9};
+    const double radius = 1.3;
+    writeFile(dir_ / "tilted.json", R"({"camera": {"eye": [2.3, 1.7, 3.1], "target": [0.2, -0.4, 0.5],
+                                                   "up": [0.2, 1, 0.1]},
+                                        "objects": [{"center": [0.4, -0.3, 0.2], "radius": 1.3,
+                                                     "scale": [1.8, -0.45, 0.9]}]})");
+    const Outcome run = shadelab({"render", "tilted.json", "--print-matrices"});
+    ASSERT_EQ(run.exitCode, 0) << describe(run);
+    const std::string& text = run.out;
+
+    // The lecture's camera frame, and M_cam = [u v w e]^-1 written out by rows.
+    const glm::dvec3 w = glm::normalize(eyeWorld - targetWorld);
+    const glm::dvec3 u = glm::normalize(glm::cross(upWorld, w));
+    const glm::dvec3 v = glm::cross(w, u);
+    expectPrinted(printedRows(text, "e = ", 1), {{eyeWorld.x, eyeWorld.y, eyeWorld.z}}, "e", text);
+    expectPrinted(printedRows(text, "u = ", 1), {{u.x, u.y, u.z}}, "u", text);
+    expectPrinted(printedRows(text, "v = ", 1), {{v.x, v.y, v.z}}, "v", text);
+    expectPrinted(printedRows(text, "w = ", 1), {{w.x, w.y, w.z}}, "w", text);
+    expectPrinted(printedRows(text, "M_cam", 4),
+                  {{u.x, u.y, u.z, -glm::dot(u, eyeWorld)},
+                   {v.x, v.y, v.z, -glm::dot(v, eyeWorld)},
+                   {w.x, w.y, w.z, -glm::dot(w, eyeWorld)},
+                   {0, 0, 0, 1}},
+                  "M_cam", text);
+    const glm::dvec3 semiAxes = radius * scale;
+    expectPrinted(printedRows(text, "M (object 1", 4),
+                  {{semiAxes.x, 0, 0, centerWorld.x},
+                   {0, semiAxes.y, 0, centerWorld.y},
+                   {0, 0, semiAxes.z, centerWorld.z},
+                   {0, 0, 0, 1}},
+                  "M", text);
+
+    // The upper 3x3 of M_cam M has columns R s_i e_i, R's rows being u, v, w; the rows of its inverse are
+    // the cross products of its columns over its determinant, so these are the columns of the inverse's
+    // transpose.
+    const glm::dvec3 a0 = semiAxes.x * glm::dvec3(u.x, v.x, w.x), a1 = semiAxes.y * glm::dvec3(u.y, v.y, w.y),
+                     a2 = semiAxes.z * glm::dvec3(u.z, v.z, w.z);
+    const double det = glm::dot(a0, glm::cross(a1, a2));
+    const glm::dvec3 n0 = glm::cross(a1, a2) / det, n1 = glm::cross(a2, a0) / det,
+                     n2 = glm::cross(a0, a1) / det;
+    const std::vector<std::vector<double>> normalExpected = rowsOf(n0, n1, n2);
+    // This scene tells the normal matrix from the inverse (its transpose) and from M_cam M itself.
+    double fromInverse = 0, fromModelView = 0;
+    const std::vector<std::vector<double>> modelView = rowsOf(a0, a1, a2);
+    for (std::size_t r = 0; r < 3; ++r)
+        for (std::size_t c = 0; c < 3; ++c) {
+            fromInverse = std::max(fromInverse, std::abs(normalExpected[r][c] - normalExpected[c][r]));
+            fromModelView = std::max(fromModelView, std::abs(normalExpected[r][c] - modelView[r][c]));
+        }
+    ASSERT_GT(fromInverse, 0.1) << "choose a camera and scale where (M_cam M)^-1 is not symmetric";
+    ASSERT_GT(fromModelView, 0.1);
+    EXPECT_NE(text.find("normal matrix ((M_cam M)^-1)^T, 3x3"), std::string::npos) << text;
+    expectPrinted(printedRows(text, "normal matrix", 3), normalExpected, "normal matrix", text);
 }
 
 TEST_F(CliTest, RenderSceneFileToAbsolutePath) {

@@ -275,13 +275,19 @@ TEST(OutsideView, ObjectsAreDrawnAsTheObserverSeesThemUnderTheTranslucentFaces) 
     EXPECT_NE(renderer->render(empty).rgba, outside.rgba);
 }
 
+// Which of the cube's bounds the analytic image clips a hit to: all of |x|, |y|, |z| <= 1 (the clipper's
+// test), or only |x| and |y| (what the picture would show if the NDC view forgot to clip in z).
+enum class NdcClip { Cube, XyOnly };
+
 // Pixels of an NDC view picture of one flat red unit sphere where the sphere drawn and its analytic image
 // under `analytic`'s M_proj·M_cam disagree, 2 px or more from the analytic silhouette (the level-7 mesh
 // lies within 0.02 px of it); `inside` counts the analytic sphere's pixels compared. Each pixel's ray from
 // the observer, a line in NDC, is a line in world space too (a projective map keeps lines): taken back
 // through inverse(M_proj·M_cam), intersected with the exact sphere, a hit counts if it lies in the cube
-// and in front of the observer.
-std::size_t ndcMismatches(const Image& image, const Scene& analytic, std::size_t& inside) {
+// (or its xy-slab, `clip`) and in front of the observer. Both roots are tried: where the near or far plane
+// cuts the sphere, the observer sees its inside through the cut.
+std::size_t ndcMismatches(const Image& image, const Scene& analytic, std::size_t& inside,
+                          NdcClip clip = NdcClip::Cube) {
     const glm::dmat4 cameraClipFromWorld =
         webGlClipFromView(analytic) * glm::lookAt(analytic.eye, analytic.target, analytic.up);
     const glm::dmat4 worldFromNdc = glm::inverse(cameraClipFromWorld);
@@ -304,10 +310,11 @@ std::size_t ndcMismatches(const Image& image, const Scene& analytic, std::size_t
             const double disc = qb * qb - 4 * qa * qc;
             if (disc < 0) continue;
             for (double t : {(-qb - std::sqrt(disc)) / (2 * qa), (-qb + std::sqrt(disc)) / (2 * qa)}) {
-                const glm::dvec4 clip = cameraClipFromWorld * glm::dvec4(aWorld + t * d, 1);
-                if (!(clip.w > 0)) continue;
-                const glm::dvec3 ndc = glm::dvec3(clip) / clip.w;
-                if (glm::all(glm::lessThanEqual(glm::abs(ndc), glm::dvec3(1))) &&
+                const glm::dvec4 cameraClip = cameraClipFromWorld * glm::dvec4(aWorld + t * d, 1);
+                if (!(cameraClip.w > 0)) continue;
+                const glm::dvec3 ndc = glm::dvec3(cameraClip) / cameraClip.w;
+                const bool inZ = clip == NdcClip::XyOnly || std::abs(ndc.z) <= 1;
+                if (std::abs(ndc.x) <= 1 && std::abs(ndc.y) <= 1 && inZ &&
                     (observerClipFromNdc * glm::dvec4(ndc, 1)).w > 0)
                     covered[std::size_t(j * width + i)] = 1;
             }
@@ -332,10 +339,9 @@ std::size_t ndcMismatches(const Image& image, const Scene& analytic, std::size_t
     return wrong;
 }
 
-// The NDC view: the sphere drawn after M_proj·M_cam and the divide covers what the exact sphere covers
-// there, under perspective (the egg) and orthographic projection.
-TEST(NdcView, TheSpheresSilhouetteIsItsAnalyticImageUnderTheProjection) {
-    SHADELAB_REQUIRE_GL(renderer);
+// The NDC view of one flat red unit sphere at the origin, seen from the default eye (0, 0, 4): it spans
+// distances 3 to 5, inside near 2.2 and far 6.
+Scene flatRedSphereNdcScene() {
     Scene scene;
     scene.width = scene.height = 200;
     scene.projection = {ProjectionType::Perspective, 40, -1.4, 1.4, -1.4, 1.4, 2.2, 6};
@@ -349,6 +355,14 @@ TEST(NdcView, TheSpheresSilhouetteIsItsAnalyticImageUnderTheProjection) {
     ambient.ambient = {1, 1, 1};
     ambient.diffuse = ambient.specular = glm::dvec3(0);
     scene.lights = {ambient};
+    return scene;
+}
+
+// The NDC view: the sphere drawn after M_proj·M_cam and the divide covers what the exact sphere covers
+// there, under perspective (the egg) and orthographic projection.
+TEST(NdcView, TheSpheresSilhouetteIsItsAnalyticImageUnderTheProjection) {
+    SHADELAB_REQUIRE_GL(renderer);
+    Scene scene = flatRedSphereNdcScene();
     for (ProjectionType type : {ProjectionType::Perspective, ProjectionType::Orthographic}) {
         SCOPED_TRACE(std::string(toString(type)));
         scene.projection.type = type;
@@ -363,6 +377,40 @@ TEST(NdcView, TheSpheresSilhouetteIsItsAnalyticImageUnderTheProjection) {
         otherNear.projection.near = 1.6;
         EXPECT_GT(ndcMismatches(image, otherNear, inside), 100u);
     }
+}
+
+// The NDC view clips in z as the clipper does (DESIGN §2: near -> NDC z = +1, far -> -1): a sphere the near
+// plane cuts shows no front cap beyond the cube's near face, one the far plane cuts no back beyond its far
+// face; through the cut the observer sees the sphere's inside. Each cut is seen from the side of the face
+// that cuts it, where a cap left standing out of the cube covers pixels the cut sphere does not (from the
+// near side the far cap hides behind the sphere). The eye stands at 8, so that the sphere, small in NDC x
+// and y, stays clear of the corner labels' dark boxes (which would hide it from the red test).
+TEST(NdcView, ASphereTheNearOrFarPlaneCutsEndsAtTheCubesFace) {
+    SHADELAB_REQUIRE_GL(renderer);
+    struct Cut {
+        const char* name;
+        double near, far;  // distances from the eye: the sphere spans 7 to 9
+        double azimuthDeg; // the observer's
+    };
+    for (const Cut& cut : {Cut{"near plane at 7.5 cuts the front cap", 7.5, 10, 40},
+                           Cut{"far plane at 8.4 cuts the back", 6, 8.4, 110}})
+        for (ProjectionType type : {ProjectionType::Perspective, ProjectionType::Orthographic}) {
+            SCOPED_TRACE(std::string(cut.name) + ", " + std::string(toString(type)));
+            Scene scene = flatRedSphereNdcScene();
+            scene.eye = {0, 0, 8};
+            // Orthographic: a window of ±2.4 makes the sphere about as large in NDC x and y (±0.42) as
+            // perspective's 40 degrees do.
+            scene.projection = {type, 40, -2.4, 2.4, -2.4, 2.4, cut.near, cut.far};
+            scene.view.observer = {cut.azimuthDeg, 20, 1};
+            const Image image = renderer->render(scene);
+            std::size_t inside = 0;
+            const std::size_t wrong = ndcMismatches(image, scene, inside);
+            EXPECT_GT(inside, 1000u) << "the analytic cut sphere covers a good part of the picture";
+            EXPECT_EQ(wrong, 0u) << "pixels where the drawn sphere and its analytic cut image disagree";
+            if (wrong) writePng(image, "ndc_view_cut_failed.png"); // to look at
+            // The cut shows: the same sphere left whole in z would cover other pixels of this picture.
+            EXPECT_GT(ndcMismatches(image, scene, inside, NdcClip::XyOnly), 100u);
+        }
 }
 
 } // namespace
