@@ -197,10 +197,11 @@ void checkWork(const Scene& scene) {
                             " are allowed: use a smaller image or fewer objects");
 }
 
-// Standard depth (DESIGN's [-1, 1] mapping, near → +1) puts a point at distance d at NDC z ≈ 1 − 2·near/d
-// in 32-bit float, whose spacing just below 1 is 6e-8: past d ≈ 3e7·near whole objects round onto the near
-// plane and are clipped (measured: the default sphere at d = 3 loses a third of its pixels with near 1e-7
-// and vanishes with near 1e-10, while the reversed modes draw it whole). Refuse before that, with a margin.
+// Standard depth (DESIGN's [-1, 1] mapping, near → +1, far → −1) puts a point at distance d ≫ near at
+// NDC z ≈ −1 + 2·near/d, so its depth (z + 1)/2 ≈ near/d: past d ≈ 3e7·near that is below half a 24-bit
+// step (3e-8) and rounds to 0, the clear value, which GL_GREATER never passes, and whole objects vanish
+// (measured: the default sphere at d = 3 loses a third of its pixels with near 1e-7 and vanishes with near
+// 1e-10, while the reversed modes draw it whole). Refuse before that, with a margin.
 void checkStandardDepthRange(const Scene& scene) {
     if (scene.depth != DepthMode::Standard || scene.projection.type != ProjectionType::Perspective) return;
     const double near = scene.projection.near;
@@ -213,9 +214,10 @@ void checkStandardDepthRange(const Scene& scene) {
             fail("projection.near",
                  "with \"depth\": \"standard\", " + indexPath("objects", i) + " reaches " +
                      formatNumber(farthest / near) +
-                     " x near from the eye; 32-bit depth rounds points beyond " +
+                     " x near from the eye; the depth buffer rounds points beyond " +
                      formatNumber(kMaxStandardDepthRatio) +
-                     " x near onto the near plane and clips them: raise near to at least " +
+                     " x near to depth 0, the far plane's and the clear value, which the depth test never "
+                     "passes: raise near to at least " +
                      formatNumber(farthest / kMaxStandardDepthRatio) + " or use \"depth\": \"reversed\"");
     }
 }

@@ -82,7 +82,7 @@ TEST(DepthPrecision, ReversedZResolvesGapsProportionalToDistanceAtAnyNear) {
     for (double near : {0.1, 1e-4}) {
         for (double distance : {1.0, 10.0, 100.0, 1e3, 1e4, 1e5}) {
             // Standard depth refuses scenes reaching past kMaxStandardDepthRatio near distances (their
-            // objects round onto the near plane): those rows must be ones it could not resolve anyway.
+            // objects' depth rounds to the clear value): those rows must be ones it could not resolve anyway.
             bool refused = false;
             try {
                 validateScene(twoSpheres(distance, distance, near, far, DepthMode::Standard));

@@ -80,8 +80,8 @@ inline constexpr double kMinFloatExtent = 1e-30, kMaxFloatExtent = 1e30;
 // square, 1e36, stays below float's 3.4e38; measured: [1, 1, 1e-19] at distance 4 draws, 1e-20 drew
 // nothing).
 inline constexpr double kMaxRayCastReach = 1e18;
-// With standard depth, no object may reach farther than this many near distances from the eye (32-bit NDC
-// z rounds farther points onto the near plane: measured onset about 3e7).
+// With standard depth, no object may reach farther than this many near distances from the eye (their depth
+// near/d rounds to 0, the clear value, and GL_GREATER drops them: measured onset about 3e7).
 inline constexpr double kMaxStandardDepthRatio = 1e7;
 inline constexpr double kMinFovyDeg = 1e-6; // projection.fovy_deg: narrower views overflow float
 
