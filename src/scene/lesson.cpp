@@ -29,6 +29,7 @@ std::vector<std::string_view> allowedStepKeys() {
     std::vector<std::string_view> keys(kStepKeys.begin(), kStepKeys.end());
     keys.insert(keys.end(), kSceneKeys.begin(), kSceneKeys.end());
     keys.emplace_back("subdivisions");
+    keys.emplace_back("all_objects");
     return keys;
 }
 
@@ -137,14 +138,64 @@ Json stepBase(const Json& scene, const std::string& path, StepFiles& files, std:
     return tree;
 }
 
+// The scene's objects array, made the one default sphere when the scene has none (DESIGN §4).
+Json& objectsOf(Json& scene) {
+    if (!scene.contains("objects")) scene["objects"] = Json::array({Json::object()});
+    return scene["objects"];
+}
+
+// "objects" written as an object, {"1": {...}}: each named object (by its index in the scene's list)
+// merged with its changes, the list kept; "all_objects": {...} merged into every object. `changed` gets
+// the objects' indices.
+void patchObjects(const Json& patch, const std::string& path, Json& scene,
+                  std::vector<std::size_t>& changed) {
+    Json& objects = objectsOf(scene);
+    if (!objects.is_array()) return; // the scene parser names it
+    for (auto it = patch.begin(); it != patch.end(); ++it) {
+        const std::string& key = it.key();
+        const bool digits =
+            !key.empty() && key.size() <= 9 && key.find_first_not_of("0123456789") == std::string::npos;
+        if (!digits || std::stoul(key) >= objects.size())
+            fail(keyPath(path, key),
+                 (objects.empty()
+                      ? std::string("the scene has no objects to change")
+                      : "must be the index of one of the scene's " + std::to_string(objects.size()) +
+                            " objects (0.." + std::to_string(objects.size() - 1) + ")") +
+                     ", got " + quotedValue(key) +
+                     "; \"all_objects\" changes every object, an array replaces the list");
+        if (!it->is_object())
+            fail(keyPath(path, key), "must be an object's changes (an object), got " + describe(*it));
+        const std::size_t index = std::stoul(key);
+        objects[index].merge_patch(*it);
+        changed.push_back(index);
+    }
+}
+
 // The step's changes merged into its base: objects merge key by key (RFC 7386), anything else replaces.
-// "subdivisions" sets every object's level, as --subdivisions does.
-void applyChanges(const Json& step, const std::string& path, Json& scene) {
+// "subdivisions" sets every object's level, as --subdivisions does; "objects" written as an object and
+// "all_objects" change objects of the list without replacing it (patchObjects).
+void applyChanges(const Json& step, const std::string& path, Json& scene, LessonStep& out) {
     for (auto it = step.begin(); it != step.end(); ++it) {
         const std::string& key = it.key();
         if (std::find(kStepKeys.begin(), kStepKeys.end(), key) != kStepKeys.end()) continue;
         if (it->is_null()) fail(keyPath(path, key), "must be a value, got null");
         if (key == "subdivisions") continue;
+        if (key == "objects" && it->is_object()) {
+            patchObjects(*it, keyPath(path, key), scene, out.changedObjects);
+            continue;
+        }
+        if (key == "all_objects") {
+            if (!it->is_object())
+                fail(keyPath(path, key),
+                     "must be the changes every object takes (an object), got " + describe(*it));
+            Json& objects = objectsOf(scene);
+            if (!objects.is_array()) continue; // the scene parser names it
+            for (std::size_t i = 0; i < objects.size(); ++i) {
+                objects[i].merge_patch(*it);
+                out.changedObjects.push_back(i);
+            }
+            continue;
+        }
         Json patch = Json::object();
         patch[key] = *it;
         scene.merge_patch(patch);
@@ -153,9 +204,9 @@ void applyChanges(const Json& step, const std::string& path, Json& scene) {
         if (!level->is_number() && !level->is_string())
             fail(keyPath(path, "subdivisions"),
                  "must be a level (a number) or \"auto\", got " + describe(*level));
-        if (!scene.contains("objects")) scene["objects"] = Json::array({Json::object()});
-        if (!scene["objects"].is_array()) return; // the scene parser names it
-        for (Json& object : scene["objects"])
+        Json& objects = objectsOf(scene);
+        if (!objects.is_array()) return; // the scene parser names it
+        for (Json& object : objects)
             if (object.is_object()) object["subdivisions"] = *level;
     }
 }
@@ -182,7 +233,10 @@ LessonStep readStep(const Json& step, const std::string& path, StepFiles& files,
         base.scene = stepBase(*scene, keyPath(path, "scene"), files, base.bytes, base.file);
     files.countStep(base.bytes + step.dump().size(), path);
     out.file = base.file;
-    applyChanges(step, path, base.scene);
+    applyChanges(step, path, base.scene, out);
+    std::sort(out.changedObjects.begin(), out.changedObjects.end());
+    out.changedObjects.erase(std::unique(out.changedObjects.begin(), out.changedObjects.end()),
+                             out.changedObjects.end());
     try {
         out.scene = sceneFromJson(base.scene);
     } catch (const InputError& e) {

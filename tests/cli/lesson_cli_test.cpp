@@ -159,11 +159,20 @@ TEST_F(LessonCliTest, SlidesFolderFollowsTheOutputRules) {
 
 TEST_F(LessonCliTest, CheckSaysWhatAFileIsAndDrawsNothing) {
     writeFile(dir_ / "missing.json", R"({"title": "t", "steps": [{"title": "a", "scene": "gone.json"}]})");
+    writeFile(dir_ / "patch.json", "");
     const std::set<std::string> before = listing(dir_);
     const Outcome lesson = shadelab({"check", "lesson.json"});
     EXPECT_EQ(lesson.exitCode, 0) << describe(lesson);
     EXPECT_NE(lesson.out.find("a lesson, valid: \"Shading\", 3 steps"), std::string::npos) << lesson.out;
     EXPECT_NE(lesson.out.find("3. Phong, Blinn-Phong lighting"), std::string::npos) << lesson.out;
+    // A step that patches objects says which.
+    writeFile(dir_ / "patch.json",
+              R"({"title": "P", "steps": [{"title": "Three", "scene": {"objects": [{}, {}, {}]}},
+        {"title": "Shiny", "objects": {"1": {"material": {"shininess": 200}}}}]})");
+    const Outcome patch = shadelab({"check", "patch.json"});
+    EXPECT_EQ(patch.exitCode, 0) << describe(patch);
+    EXPECT_NE(patch.out.find("  1. Three\n  2. Shiny (changes objects[1])\n"), std::string::npos)
+        << patch.out;
     const Outcome scene = shadelab({"check", "base.json"});
     EXPECT_EQ(scene.exitCode, 0) << describe(scene);
     EXPECT_NE(scene.out.find("a scene, valid"), std::string::npos) << scene.out;

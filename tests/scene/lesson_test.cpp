@@ -151,7 +151,7 @@ TEST(Lesson, EveryRefusalNamesItsJsonPath) {
          "lesson.json: steps[0].shadng: unknown key; expected one of title, caption, scene, image, camera, "
          "projection, perspective_matrix, shading, lighting, term, toon_bands, tolerance_px, depth, "
          "vertex_normals, normal_matrix, overlay, view, view_at, view_observer, objects, lights, "
-         "subdivisions"},
+         "subdivisions, all_objects"},
         {R"({"title": "T", "steps": [{"title": "A", "shading": null}]})",
          "lesson.json: steps[0].shading: must be a value, got null"},
         {R"({"title": "T", "steps": [{"title": "A", "scene": 3}]})",
@@ -247,6 +247,66 @@ TEST(Lesson, TitlesAndCaptionsRefuseFormatCharacters) {
     }
     // Letters of any script pass, as do the caption's line breaks.
     EXPECT_EQ(refusal(R"({"title": "Phong α = 8, ß, я", "steps": [{"title": "é", "caption": "a\nb"}]})"), "");
+}
+
+// "The same teapot with different parameters": a step changes one object, or every object, and keeps the
+// scene's list; an array still replaces the list.
+TEST(Lesson, AStepPatchesOneObjectOrEveryObjectAndKeepsTheList) {
+    const Lesson lesson = parseLesson(R"({"title": "T", "steps": [
+        {"title": "Three", "scene": {"objects": [{"center": [-2, 0, 0]}, {"center": [0, 0, 0]},
+                                                 {"center": [2, 0, 0], "material": {"shininess": 8}}]}},
+        {"title": "Shiny middle", "objects": {"1": {"material": {"shininess": 200}}}},
+        {"title": "All red", "all_objects": {"material": {"diffuse": [1, 0, 0]}}},
+        {"title": "Both", "all_objects": {"radius": 0.5}, "objects": {"2": {"radius": 0.25}}},
+        {"title": "One", "objects": [{"center": [0, 1, 0]}]}]})",
+                                      "lesson.json", kNoFiles);
+    const auto& steps = lesson.steps;
+    ASSERT_EQ(steps.size(), 5u);
+    EXPECT_TRUE(steps[0].changedObjects.empty());
+    ASSERT_EQ(steps[1].scene.objects.size(), 3u);
+    EXPECT_EQ(steps[1].scene.objects[1].material.shininess, 200);
+    EXPECT_EQ(steps[1].scene.objects[2].material.shininess, 8) << "the others keep theirs";
+    EXPECT_EQ(steps[1].scene.objects[1].center, glm::dvec3(0)) << "merged, not replaced";
+    EXPECT_EQ(steps[1].changedObjects, std::vector<std::size_t>{1});
+    for (const SceneObject& object : steps[2].scene.objects)
+        EXPECT_EQ(object.material.diffuse, glm::dvec3(1, 0, 0));
+    EXPECT_EQ(steps[2].scene.objects[1].material.shininess, 200) << "the earlier change stays";
+    EXPECT_EQ(steps[2].changedObjects, (std::vector<std::size_t>{0, 1, 2}));
+    // "all_objects" first, then the one object named.
+    EXPECT_EQ(steps[3].scene.objects[0].radius, 0.5);
+    EXPECT_EQ(steps[3].scene.objects[2].radius, 0.25);
+    ASSERT_EQ(steps[4].scene.objects.size(), 1u);
+    EXPECT_TRUE(steps[4].changedObjects.empty());
+    // A first step without a scene patches the default sphere.
+    const Lesson defaults = parseLesson(
+        R"({"title": "T", "steps": [{"title": "A", "objects": {"0": {"radius": 2}}}]})", "l", kNoFiles);
+    EXPECT_EQ(defaults.steps[0].scene.objects.at(0).radius, 2);
+}
+
+TEST(Lesson, AnObjectPatchNamesAnObjectOfTheList) {
+    const std::string two = R"({"title": "T", "steps": [{"title": "A", "scene": {"objects": [{}, {}]}, )";
+    EXPECT_EQ(
+        refusal(two + R"("objects": {"2": {"radius": 2}}}]})"),
+        "lesson.json: steps[0].objects.2: must be the index of one of the scene's 2 objects (0..1), got "
+        "\"2\"; \"all_objects\" changes every object, an array replaces the list");
+    EXPECT_NE(refusal(two + R"("objects": {"first": {"radius": 2}}}]})").find("got \"first\""),
+              std::string::npos);
+    EXPECT_EQ(refusal(two + R"("objects": {"1": 3}}]})"),
+              "lesson.json: steps[0].objects.1: must be an object's changes (an object), got number 3");
+    EXPECT_EQ(
+        refusal(two + R"("all_objects": [1]}]})"),
+        "lesson.json: steps[0].all_objects: must be the changes every object takes (an object), got array "
+        "of 1 element");
+    // A change the scene refuses is named with the object's path.
+    EXPECT_NE(refusal(two + R"("objects": {"1": {"radius": -1}}}]})")
+                  .find("lesson.json: steps[0]: objects[1].radius"),
+              std::string::npos)
+        << refusal(two + R"("objects": {"1": {"radius": -1}}}]})");
+    EXPECT_EQ(
+        refusal(
+            R"({"title": "T", "steps": [{"title": "A", "scene": {"objects": []}, "objects": {"0": {}}}]})"),
+        "lesson.json: steps[0].objects.0: the scene has no objects to change, got \"0\"; \"all_objects\" "
+        "changes every object, an array replaces the list");
 }
 
 TEST(Lesson, TellsALessonFromAScene) {

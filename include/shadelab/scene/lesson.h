@@ -9,7 +9,9 @@
 //
 // A step's changes use the scene's own names ("shading", "camera", "lights", ...): an object value is merged
 // into the scene's (RFC 7386: "camera": {"eye": [0, 0, 6]} changes only the eye), any other value replaces
-// it. "subdivisions" (a level or "auto") sets every object's level, as --subdivisions does. Every value goes
+// it. "subdivisions" (a level or "auto") sets every object's level, as --subdivisions does. "objects" written
+// as an object patches objects of the scene's list by index, {"1": {"material": {"shininess": 200}}}, and
+// "all_objects": {…} patches every object, the list kept (an array still replaces it). Every value goes
 // through parseScene, so a lesson refuses what a scene refuses, in the same words, with the step's JSON path.
 #pragma once
 
@@ -29,6 +31,7 @@ struct LessonStep {
     Scene scene;         // as the step is written: its scene with its changes
     std::string file;    // the scene file its scene starts from (its own or an earlier step's), as the
                          // lesson writes it; "" for an inline scene or the defaults
+    std::vector<std::size_t> changedObjects; // the objects its "objects": {"i": …} or "all_objects" change
 };
 
 struct Lesson {

@@ -104,7 +104,11 @@ int runCheck(const fs::path& file) {
                 lesson.steps.size(), lesson.steps.size() == 1 ? "" : "s");
     for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
         const LessonStep& step = lesson.steps[i];
-        std::printf("  %zu. %s\n", i + 1, printable(step.title).c_str());
+        std::string changes;
+        for (const std::size_t object : step.changedObjects)
+            changes += (changes.empty() ? " (changes objects[" : ", objects[") + std::to_string(object) + "]";
+        std::printf("  %zu. %s%s\n", i + 1, printable(step.title).c_str(),
+                    changes.empty() ? "" : (changes + ")").c_str());
         printWarnings(step.scene, "steps[" + std::to_string(i) + "]: ");
         for (const std::string& warning : glyphWarnings(step, i))
             std::printf("  warning: %s\n", printable(warning).c_str());
