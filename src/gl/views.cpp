@@ -78,8 +78,9 @@ Views::Views(Renderer& renderer)
 
 Views::~Views() = default;
 
-void Views::draw(const Scene& scene, int width, int height, int x) {
+void Views::draw(const Scene& scene, int width, int height, int x, ViewOptions options) {
     if (width <= 0 || height <= 0) return;
+    options_ = options;
     GLint destination = 0;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &destination);
     switch (scene.view.kind) {

@@ -10,6 +10,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "gl/gl_test_support.h"
+#include "shadelab/gl/renderer.h"
 #include "shadelab/gl/views.h"
 #include "shadelab/image/image_file.h"
 #include "shadelab/scene/outside_view.h"
@@ -238,6 +239,30 @@ TEST(OutsideView, ViewVolumeCornersLandOnTheDrawnCorners) {
     Scene moved = volumeOnlyScene();
     moved.projection.near = 2.8;
     EXPECT_FALSE(outsideCornerMisses(renderer->render(moved), volumeOnlyScene()).empty());
+}
+
+// "DRAG: OBSERVER  WHEEL: ZOOM" is for the window, where a pointer drives the observer: a headless picture,
+// a slide and presentation mode leave it out. The two pictures differ only under the title's label.
+TEST(OutsideView, InteractionHintsOnlyWhereAPointerReachesThem) {
+    SHADELAB_REQUIRE_GL(renderer);
+    for (const ViewKind kind : {ViewKind::Outside, ViewKind::Ndc}) {
+        Scene scene = volumeOnlyScene();
+        scene.objects = {SceneObject{}};
+        scene.view.kind = kind;
+        const Image picture = renderer->render(scene);
+        const Image window = renderer->render(scene, [&](gl::Renderer& drawing) {
+            drawing.render(scene, scene.width, scene.height, 0, {.interactionHints = true});
+        });
+        int differing = 0, lowest = 0;
+        for (int y = 0; y < scene.height; ++y)
+            for (int x = 0; x < scene.width; ++x)
+                if (!std::equal(picture.pixel(x, y), picture.pixel(x, y) + 3, window.pixel(x, y))) {
+                    ++differing;
+                    lowest = std::max(lowest, y);
+                }
+        EXPECT_GT(differing, 40) << toString(scene.view) << ": the hint's letters";
+        EXPECT_LT(lowest, scene.height / 4) << toString(scene.view) << ": only under the title's label";
+    }
 }
 
 TEST(OutsideView, ObjectsAreDrawnAsTheObserverSeesThemUnderTheTranslucentFaces) {

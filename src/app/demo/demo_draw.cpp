@@ -33,7 +33,8 @@ std::string viewReport(const Scene& scene, const gl::ViewFigures& figures) {
 
 void FramedPicture::drawPicture(gl::Renderer& renderer, DemoState& state, int width, int height) {
     const Scene scene = state.drawn();
-    renderer.render(scene, width, height);
+    // The window's pointer drives the observer; presentation mode is a slide, which none reaches.
+    renderer.render(scene, width, height, 0, {.interactionHints = !state.presenting});
     const gl::ViewFigures& figures = renderer.viewFigures();
     const ReportFacts reported{scene.view,
                                figures.interiorMean,
