@@ -24,7 +24,7 @@ import time
 import zlib
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from serve import PageHandler  # noqa: E402  (the page's files only, as scripts/web.sh serve)
+from serve import PageHandler, PageServer  # noqa: E402  (the page's files only, as scripts/web.sh serve)
 import cli_rules  # noqa: E402  (the command line's rules for scene files and outputs)
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'build-web', 'site')
@@ -37,16 +37,61 @@ CHROME_ARGS = ['--headless=new', '--use-angle=swiftshader', '--enable-unsafe-swi
 REQUEST_TIMEOUT = 60  # seconds: one WebDriver request, page load or script (the tests allow 240 s a session)
 
 
+class TestFilesHandler(PageHandler):
+    """The page's files, and for the browser tests (a session's "files" folder) two more places on the same
+    origin: /files/NAME, that folder's files, and /stream/N.json (/stream/N-declared.json), a scene of N MiB
+    sent in 1 MiB chunks without a Content-Length (with one saying N MiB), counting what it could send before
+    the page hung up. Every path asked for is logged, so a test can tell a request that was never made."""
+    files = None
+    requested = []
+    streamed = {}
+
+    def send_head(self):
+        self.requested.append(self.path)
+        if self.path.startswith('/files/'):
+            self.directory = self.files
+            self.path = self.path[len('/files'):]
+        return super().send_head()
+
+    def do_GET(self):
+        name = self.path[len('/stream/'):] if self.path.startswith('/stream/') else ''
+        size = name[:-len('-declared.json')] if name.endswith('-declared.json') else name[:-len('.json')]
+        if not size.isdigit():
+            return super().do_GET()
+        self.requested.append(self.path)
+        mib = int(size)
+        self.send_response(200)
+        self.send_header('Content-Type', 'application/json')
+        if name.endswith('-declared.json'):
+            self.send_header('Content-Length', str(mib << 20))
+        self.end_headers()
+        sent = 0
+        try:
+            for _ in range(mib):
+                self.wfile.write(b' ' * (1 << 20))
+                sent += 1 << 20
+        except ConnectionError:
+            pass  # the page hung up: what it took is the point
+        self.streamed[self.path] = sent
+        self.close_connection = True
+
+
 class Page:
     """One Chromium with the page loaded and ready (window.shadelab.ready)."""
 
-    def __init__(self, root=ROOT, query='', extra_args=(), downloads=None):
+    def __init__(self, root=ROOT, query='', extra_args=(), downloads=None, files=None):
         from selenium import webdriver
         from selenium.webdriver.chrome.service import Service
         if not os.path.exists(os.path.join(root, 'shadelab.wasm')):
             raise RuntimeError(root + ' holds no browser build: run scripts/web.sh build')
-        handler = functools.partial(PageHandler, directory=root)
-        self.server = http.server.ThreadingHTTPServer(('127.0.0.1', 0), handler)
+        if files:
+            handler_class = type('Handler', (TestFilesHandler,), {'files': os.path.abspath(files), 'requested': [],
+                                                                  'streamed': {}})
+            self.handler_class = handler_class
+        else:
+            handler_class = PageHandler
+        handler = functools.partial(handler_class, directory=root)
+        self.server = PageServer(('127.0.0.1', 0), handler)
         threading.Thread(target=self.server.serve_forever, daemon=True).start()
         options = webdriver.ChromeOptions()
         options.binary_location = '/usr/bin/chromium'
@@ -233,13 +278,17 @@ def session():
                 if page:
                     page.close()
                 page = Page(query=request.get('query', ''), extra_args=request.get('args', []),
-                            downloads=request.get('downloads'))
+                            downloads=request.get('downloads'), files=request.get('files'))
                 answer = {'failed': page.failed}
             elif op == 'load':
                 answer = {'message': page.load(request['text'], request['name'])}
             elif op == 'load-file':  # a scene too large for one request line (tests/web/)
                 with open(request['path'], encoding='utf-8') as scene:
                     answer = {'message': page.load(scene.read(), request['name'])}
+            elif op == 'load-url':  # as the picker loads a bundled scene: fetched by the page
+                answer = {'message': page.js('return window.shadelab.loadUrl(arguments[0])', request['url'])}
+            elif op == 'served':  # what the test files' server was asked for and sent (TestFilesHandler)
+                answer = {'requested': page.handler_class.requested, 'streamed': page.handler_class.streamed}
             elif op == 'flags':
                 answer = {'message': page.flags(request['flags'])}
             elif op == 'key':

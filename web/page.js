@@ -106,18 +106,11 @@ async function shadelabStarted() {
   const url = params.get('scene');
   const lessonUrl = params.get('lesson');
   let message = '';
-  if (lessonUrl) {
-    message = await loadUrl(lessonUrl);
-    const bundled = lessons.find((name) => lessonUrl === 'lessons/' + name || lessonUrl === './lessons/' + name);
-    $('bundled').value = bundled ? 'lesson:' + bundled : '';
-  } else if (url) {
-    message = await loadUrl(url);
-    // The picker names the scene shown: a bundled one by its name, anything else as another scene.
-    const bundled = names.find((name) => url === 'scenes/' + name || url === './scenes/' + name);
-    $('bundled').value = bundled || '';
-  } else {
-    $('bundled').value = 'showcase.json';
-    message = await loadUrl('scenes/showcase.json', 'showcase.json');
+  try {
+    message = await loadStartingScene(url, lessonUrl, names, lessons);
+  } catch (e) {
+    // Whatever a URL did, the page starts and says it: an exception here left it never ready and silent.
+    message = (lessonUrl || url) + ': cannot load it (' + e.message + ')';
   }
   if (!message) message = applyUrlFlags();
   // ?present (for a class): the presentation label on and larger panel text; ?ui-scale=S scales the panel.
@@ -133,6 +126,25 @@ async function shadelabStarted() {
   setInterval(() => refresh(true), 500);
 }
 
+// The scene or lesson the page opens with (?lesson=URL, ?scene=URL or the showcase), the picker set to it.
+async function loadStartingScene(url, lessonUrl, names, lessons) {
+  let message = '';
+  if (lessonUrl) {
+    message = await loadUrl(lessonUrl);
+    const bundled = lessons.find((name) => lessonUrl === 'lessons/' + name || lessonUrl === './lessons/' + name);
+    $('bundled').value = bundled ? 'lesson:' + bundled : '';
+  } else if (url) {
+    message = await loadUrl(url);
+    // The picker names the scene shown: a bundled one by its name, anything else as another scene.
+    const bundled = names.find((name) => url === 'scenes/' + name || url === './scenes/' + name);
+    $('bundled').value = bundled || '';
+  } else {
+    $('bundled').value = 'showcase.json';
+    message = await loadUrl('scenes/showcase.json', 'showcase.json');
+  }
+  return message;
+}
+
 // The command-line flags, given as ?shading=flat&size=256x256…, through the CLI's own parser.
 function applyUrlFlags() {
   const flags = {};
@@ -141,28 +153,87 @@ function applyUrlFlags() {
   return Object.keys(flags).length ? api.applyFlags(JSON.stringify(flags)) : '';
 }
 
-async function loadUrl(url, name) {
-  let text;
-  try {
-    const response = await fetch(url);
-    if (!response.ok) return url + ': cannot fetch the scene (HTTP ' + response.status + ')';
-    text = await response.text();
-  } catch (e) {
-    return url + ': cannot fetch the scene (' + e.message + ')';
+// ---- scenes and lessons from URLs ----
+// The command line's bounds (include/shadelab/scene/scene.h kMaxSceneBytes, scene/lesson.h
+// kMaxLessonSceneBytes): a scene file at most 16 MiB, and a lesson's steps at most 64 MiB of scene text in
+// all, each step counting its whole scene — so its distinct files together too, as each is some step's.
+// The page stops reading at them: a hostile lesson (15 steps of 40 MB each ended in a RangeError after
+// 1.3 GB) costs at most what the command line would read.
+const kMaxSceneBytes = 16 << 20;
+const kMaxLessonSceneBytes = 64 << 20;
+const kMiB = 1 << 20;
+
+// The text at `url`, read at most to `limit` bytes: {text, bytes}, {tooLarge: true}, {status} for an HTTP
+// error. A Content-Length over the limit is refused before the body is read (it is the size on the wire, so
+// only when the body is not compressed); a body without one is read chunk by chunk and cancelled as soon as
+// it passes the limit. Throws what fetch throws (no network, a URL fetch rejects).
+async function fetchBounded(url, limit) {
+  const response = await fetch(url);
+  const stop = () => response.body && response.body.cancel().catch(() => {});
+  if (!response.ok) {
+    stop();
+    return {status: response.status};
   }
-  // A lesson's scene files are fetched beside it, as the command line reads them beside the lesson file.
-  const base = new URL(url, location.href);
-  return loadText(text, name || fileNameOf(url), (path) => fetchText(new URL(path, base)));
+  const encoding = (response.headers.get('Content-Encoding') || 'identity').toLowerCase();
+  if (encoding === 'identity' && Number(response.headers.get('Content-Length')) > limit) {
+    stop();
+    return {tooLarge: true};
+  }
+  const chunks = [];
+  let bytes = 0;
+  if (response.body) {
+    const reader = response.body.getReader();
+    for (;;) {
+      const {done, value} = await reader.read();
+      if (done) break;
+      bytes += value.byteLength;
+      if (bytes > limit) {
+        reader.cancel().catch(() => {});
+        return {tooLarge: true};
+      }
+      chunks.push(value);
+    }
+  }
+  const whole = new Uint8Array(bytes);
+  let at = 0;
+  for (const chunk of chunks) {
+    whole.set(chunk, at);
+    at += chunk.byteLength;
+  }
+  return {text: new TextDecoder().decode(whole), bytes}; // as response.text() decodes: UTF-8, BOM dropped
 }
 
-// The text at `url`, or null when it cannot be fetched (the lesson parser then names the step and file).
-async function fetchText(url) {
+// The command line's message for a scene file over 16 MiB (scene_json.cpp checkSceneTextSize).
+function tooLargeMessage(name) {
+  return printable(name) + ': cannot read scene file: larger than ' + (kMaxSceneBytes >> 20) + ' MiB; not a scene file';
+}
+
+// Loads the scene or lesson at `url`; "" or the message shown. A lesson's scene files are fetched beside it,
+// as the command line reads them beside the lesson file.
+async function loadUrl(url, name) {
+  name = name || fileNameOf(url);
+  let got;
   try {
-    const response = await fetch(url);
-    return response.ok ? await response.text() : null;
+    got = await fetchBounded(url, kMaxSceneBytes);
   } catch (e) {
-    return null;
+    return showLoadMessage(url + ': cannot fetch the scene (' + e.message + ')');
   }
+  if (got.status) return showLoadMessage(url + ': cannot fetch the scene (HTTP ' + got.status + ')');
+  if (got.tooLarge) return showLoadMessage(tooLargeMessage(name));
+  let base = null;
+  try {
+    base = new URL(url, location.href).href;
+  } catch (e) {
+    base = null; // fetched, yet no URL: the steps are named as unfetchable by lessonFiles
+  }
+  return loadText(got.text, name, {base});
+}
+
+// A message shown as loadText shows one, for a load that never reached the C++.
+function showLoadMessage(message) {
+  showMessage(message);
+  refresh();
+  return message;
 }
 
 // A lesson rather than a scene: a JSON object with "steps" (as isLessonText in C++ decides).
@@ -175,12 +246,122 @@ function lessonOf(text) {
   }
 }
 
-// The scene files a lesson's steps name, each path as written → its text (or null), through `read`.
-async function lessonFiles(lesson, read) {
-  const files = {};
-  for (const step of Array.isArray(lesson.steps) ? lesson.steps : [])
-    if (step && typeof step.scene === 'string' && !(step.scene in files)) files[step.scene] = await read(step.scene);
-  return files;
+// ---- a lesson's step paths: the command line's rule, and the page's own ----
+// shadelab's printable() (src/io/text.cpp): control characters, format characters and line separators
+// as the \xNN of their UTF-8 bytes.
+function printable(text) {
+  let out = '';
+  for (const ch of text) {
+    const code = ch.codePointAt(0);
+    const unsafe = code < 0x20 || (code >= 0x7f && code <= 0x9f) || /[\p{Cf}\p{Zl}\p{Zp}]/u.test(ch);
+    if (!unsafe) out += ch;
+    else for (const b of new TextEncoder().encode(ch)) out += '\\x' + b.toString(16).padStart(2, '0');
+  }
+  return out;
+}
+
+// shadelab's quotedValue(): the first 40 bytes, JSON-quoted, "..." inside the quotes when cut.
+function quotedValue(text) {
+  const bytes = new TextEncoder().encode(text);
+  const shown = JSON.stringify(new TextDecoder().decode(bytes.subarray(0, 40)));
+  return bytes.length > 40 ? shown.slice(0, -1) + '..."' : shown;
+}
+
+// Why a step's "scene" path cannot be read beside the lesson at `base`, or "". The command line's own
+// refusals first, word for word (src/scene/lesson.cpp checkStepPath); then the page's: a path the browser
+// would take for another place — a scheme (http:, data:, javascript:), or anything resolving to another
+// origin ("\\host", " //host": the URL parser turns \ into / and drops leading spaces) — where the command
+// line reads only files beside the lesson.
+function stepPathProblem(path, base) {
+  if (path === '') return 'must name a scene file, got an empty string';
+  if (path.includes('\0'))
+    return 'must be a path without a NUL byte, got ' + quotedValue(path) +
+           "; name the scene file relative to the lesson's folder";
+  if (path === '-')
+    return 'must name a scene file relative to the lesson\'s folder, got "-" (standard input is no step\'s ' +
+           'scene); write "./-" for a file named -';
+  const elsewhere = "must be a path relative to the lesson's folder, got " + quotedValue(path);
+  if (path.startsWith('/') || /^[A-Za-z][A-Za-z0-9+.-]*:/.test(path)) return elsewhere;
+  if (base === null) return '';
+  let url;
+  try {
+    url = new URL(path, base);
+  } catch (e) {
+    // A data: or blob: lesson has no folder to resolve a step in.
+    return 'the page cannot fetch it beside the lesson, whose URL ' + quotedValue(base) + ' has no folder; ' +
+           'open the lesson by its http URL, or pick or drop its scene files together with it';
+  }
+  return url.origin === new URL(base).origin ? '' : elsewhere;
+}
+
+// The scene files a lesson's steps name: {files} (each path as written → its text, or null where it
+// could not be fetched, which the C++ then names) or {message} (the command line's form, "NAME:
+// steps[i].scene ..."). `source.base` is the URL the steps are relative to (null: none, nothing is
+// fetched), `source.given(path)` a text given with the lesson (picked or dropped files) or undefined.
+// Every step's path is checked before anything is fetched. Then the steps are walked in order as the C++
+// parser walks them (src/scene/lesson.cpp readStep), each distinct file fetched once and at most 16 MiB, and
+// fetching stops where the parser will stop: past the 64 MiB of scene text the steps may parse in all (the
+// C++ names that step itself, from the files fetched so far).
+async function lessonFiles(lesson, name, source) {
+  const given = source.given || (() => undefined);
+  const steps = Array.isArray(lesson.steps) ? lesson.steps : [];
+  const checked = new Set();
+  for (let i = 0; i < steps.length; ++i) {
+    const path = steps[i] && steps[i].scene;
+    if (typeof path !== 'string' || checked.has(path)) continue;
+    // A lone surrogate ("\ud800") is refused by the C++ JSON parser, which names it; nothing is fetched.
+    const base = given(path) === undefined ? source.base : null;
+    const problem = path.isWellFormed() ? stepPathProblem(path, base) : '';
+    if (problem) return {message: name + ': steps[' + i + '].scene: ' + problem};
+    checked.add(path);
+  }
+  const utf8Bytes = (text) => new TextEncoder().encode(text).length;
+  const files = new Map(); // path → {text, bytes}; text null where it could not be had
+  let stepBytes = 0;
+  let sceneBytes = 2; // a first step without a scene starts from the defaults, "{}"
+  for (let i = 0; i < steps.length; ++i) {
+    const step = steps[i];
+    if (!step || typeof step !== 'object' || Array.isArray(step)) break; // the C++ refuses this step
+    const path = step.scene;
+    if (typeof path === 'string') {
+      if (!path.isWellFormed()) break;
+      if (!files.has(path)) {
+        const file = await stepFile(path, source, given);
+        if (file.tooLarge)
+          return {message: name + ': steps[' + i + '].scene (' + quotedValue(path) + '): ' + tooLargeMessage(path)};
+        files.set(path, file);
+      }
+      if (files.get(path).text === null) break; // the C++ names the step and the file it could not have
+      sceneBytes = files.get(path).bytes;
+    } else if (path && typeof path === 'object' && !Array.isArray(path)) {
+      sceneBytes = utf8Bytes(JSON.stringify(path)); // an inline scene, as nlohmann's dump() counts it
+    } else if (path !== undefined) {
+      break;
+    }
+    stepBytes += sceneBytes + utf8Bytes(JSON.stringify(step));
+    // JSON.stringify and nlohmann's dump() may write a number differently (1.0 and 1): a MiB of slack, so
+    // the C++, not the page, finds the step that passes its bound, with every file before it at hand.
+    if (stepBytes > kMaxLessonSceneBytes + kMiB) break;
+  }
+  const texts = Array.from(files, ([path, file]) => [path, file.text]);
+  return {files: Object.fromEntries(texts)}; // own keys: a step named "__proto__" or "constructor" is a file too
+}
+
+// A step's file: {text, bytes} ({text: null, bytes: 0} when it cannot be had), or {tooLarge: true}.
+async function stepFile(path, source, given) {
+  let text = given(path);
+  if (text === undefined && source.base !== null) {
+    try {
+      const got = await fetchBounded(new URL(path, source.base), kMaxSceneBytes);
+      if (got.tooLarge) return {tooLarge: true};
+      text = got.text;
+    } catch (e) {
+      text = undefined; // no network, or a URL fetch refuses: the C++ says the page could not fetch it
+    }
+  }
+  if (text === undefined) return {text: null, bytes: 0};
+  const bytes = new TextEncoder().encode(text).length;
+  return bytes > kMaxSceneBytes ? {tooLarge: true} : {text, bytes};
 }
 
 // The last part of a URL for messages, its %-escapes decoded; a % that is no escape stays as it is (a
@@ -195,13 +376,17 @@ function fileNameOf(url) {
 }
 
 // "" or the message, which stays on the page; the previous scene stays drawn behind it. A lesson's scene
-// files come through `read` (path as the lesson writes it → text or null).
-async function loadText(text, name, read = async () => null) {
+// files are read through `source` (lessonFiles says how); without one, none is fetched.
+async function loadText(text, name, source = {base: null}) {
   const lesson = lessonOf(text);
-  const message = lesson ? api.loadLesson(text, name, await lessonFiles(lesson, read)) : api.loadScene(text, name);
-  showMessage(message);
-  refresh();
-  return message;
+  let message;
+  if (lesson) {
+    const got = await lessonFiles(lesson, name, source);
+    message = got.message || api.loadLesson(text, name, got.files);
+  } else {
+    message = api.loadScene(text, name);
+  }
+  return showLoadMessage(message);
 }
 
 // ---- the canvas: its drawing buffer follows its CSS size and the device pixel ratio ----

@@ -45,6 +45,7 @@ function save() {
 // For scripts/web.sh render and the browser tests (tests/web/): the same calls the panel makes.
 Object.assign(window.shadelab, {
   loadText: (text, name) => loadText(text, name),
+  loadUrl: (url, name) => loadUrl(url, name),
   applyFlags: (flags) => { const m = api.applyFlags(JSON.stringify(flags)); showMessage(m); refresh(); return m; },
   press: (code) => press(code),
   ui: () => api.ui(),

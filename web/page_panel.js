@@ -260,11 +260,12 @@ function wireControls() {
     if (!all.length) return;
     const texts = await Promise.all(all.map((file) => file.text()));
     const index = Math.max(0, texts.findIndex((text) => lessonOf(text)));
-    const read = async (path) => {
-      const given = all.findIndex((file) => file.name === path.split('/').pop());
-      return given >= 0 ? texts[given] : fetchText(new URL(path, new URL('lessons/', location.href)));
+    const given = (path) => {
+      const found = all.findIndex((file) => file.name === path.split('/').pop());
+      return found >= 0 ? texts[found] : undefined;
     };
-    if (!(await loadText(texts[index], all[index].name, read))) $('bundled').value = '';
+    const source = {base: new URL('lessons/', location.href).href, given};
+    if (!(await loadText(texts[index], all[index].name, source))) $('bundled').value = '';
   };
   $('file').addEventListener('change', (e) => loadOther(e.target.files));
   document.addEventListener('dragover', (e) => e.preventDefault());

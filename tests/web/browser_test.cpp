@@ -39,6 +39,7 @@
 #include "gl/projected_mesh.h"
 #include "shadelab/context/window.h"
 #include "shadelab/image/image_file.h"
+#include "shadelab/io/text.h"
 #include "shadelab/scene/lesson.h"
 #include "shadelab/scene/scene_file.h"
 #include "shadelab/shading/probe.h"
@@ -85,6 +86,13 @@ public:
         if (!downloads.empty()) request["downloads"] = downloads.string();
         return add(request);
     }
+    // The page with `files` served beside it at /files/ and the streamed scenes at /stream/ (driver.py
+    // TestFilesHandler).
+    std::size_t openWithFiles(const std::string& query, const fs::path& files) {
+        return add({{"op", "open"}, {"query", query}, {"files", files.string()}});
+    }
+    std::size_t loadUrl(const std::string& url) { return add({{"op", "load-url"}, {"url", url}}); }
+    std::size_t served() { return add({{"op", "served"}}); }
     std::size_t waitFiles(const std::vector<fs::path>& paths) {
         json list = json::array();
         for (const fs::path& p : paths) list.push_back(p.string());
@@ -1278,6 +1286,146 @@ TEST_F(Browser, APercentThatIsNoEscapeInTheSceneUrlIsAMessage) {
     EXPECT_EQ(session.answer(open).at("failed"), "") << session.answer(open);
     const std::string shown = session.answer(message).at("message").get<std::string>();
     EXPECT_NE(shown.find("50%off.json: cannot fetch the scene (HTTP 404)"), std::string::npos) << shown;
+}
+
+// A lesson's step paths and files on the page, as the command line bounds them. Every step's path is checked
+// before anything is fetched: the command line's refusals ("-", a NUL, an absolute path) with its messages,
+// and what the page alone would take for another place (a scheme, another origin; "http://[" threw outside
+// any handler and the page never became ready) in the same form. A step file over 16 MiB is refused with
+// the command line's message without reading it whole (a Content-Length over it: not read at all; a stream
+// without one: cancelled past 16 MiB), each distinct file is fetched once, and fetching stops where the
+// lesson's steps pass what the parser takes (the native message names the step).
+TEST_F(Browser, LessonStepPathsAreCheckedFirstAndTheirFilesBounded) {
+    const fs::path files = dir_ / "files";
+    fs::create_directories(files);
+    const std::string small = R"({"image": {"width": 32, "height": 24}})";
+    std::ofstream(files / "s.json") << small;
+    const auto lessonWith = [](const std::vector<std::string>& scenes) {
+        json lesson = {{"title", "t"}, {"steps", json::array()}};
+        for (const std::string& scene : scenes)
+            lesson["steps"].push_back(
+                {{"title", "step " + std::to_string(lesson["steps"].size())}, {"scene", scene}});
+        return lesson.dump();
+    };
+    // The text the page's C++ is handed for a path (web/main.cpp shadelab_load_lesson's reader), so the
+    // native parser gives the message the page must give.
+    const auto pageReader = [&files](const std::string& path) -> std::string {
+        if (path.starts_with("../stream/")) checkSceneTextSize(kMaxSceneBytes + 1, path);
+        std::ifstream in(files / path, std::ios::binary);
+        if (!in) throw InputError("no such test file");
+        std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        checkSceneTextSize(text.size(), path);
+        return text;
+    };
+    const auto nativeMessage = [&](const std::string& text, const std::string& name) {
+        try {
+            (void)parseLesson(text, name, pageReader);
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("(the native parser took it)");
+    };
+    const std::string elsewhere = ": steps[1].scene: must be a path relative to the lesson's folder, got ";
+
+    // Refused before any request: the command line's rules, then the page's.
+    struct Refusal {
+        std::string path, expected;
+    };
+    std::vector<Refusal> refusals;
+    for (const std::string& path :
+         {std::string("/files/abs.json"), std::string("-"), std::string("a\0b.json", 8), std::string()})
+        refusals.push_back({path, ""}); // expected: the native parser's message
+    for (const std::string path :
+         {"http://127.0.0.2:9/x.json", "//127.0.0.2:9/x.json", "data:application/json,{}",
+          "javascript:alert(1)", "\\\\127.0.0.2:9\\x.json", " http://127.0.0.2:9/x.json", "http://["})
+        refusals.push_back({path, elsewhere + quotedValue(path)});
+    for (std::size_t i = 0; i < refusals.size(); ++i) {
+        const std::string name = "refused-" + std::to_string(i) + ".json";
+        const std::string text = lessonWith({"s.json", refusals[i].path});
+        std::ofstream(files / name) << text;
+        refusals[i].expected =
+            refusals[i].expected.empty() ? nativeMessage(text, name) : name + refusals[i].expected;
+    }
+    std::ofstream(files / "bad-url.json") << lessonWith({"http://["});
+    const std::string badUrlExpected =
+        "bad-url.json: steps[0].scene: must be a path relative to the lesson's "
+        "folder, got \"http://[\"";
+    // A data: lesson has no folder for its steps.
+    const std::string dataLesson = "data:application/json," + lessonWith({"s.json"});
+
+    // Too large: one file of 17 MiB (sent with its Content-Length), 200 MiB streamed without one and with
+    // one; and steps that parse more than 64 MiB in all (15 MiB named five times: the sixth step's file is
+    // never fetched).
+    const auto padded = [&](const fs::path& path, std::size_t bytes) {
+        const std::string head = R"({"image": {"width": 8, "height": 8})";
+        std::ofstream(path, std::ios::binary) << head << std::string(bytes - head.size() - 1, ' ') << "}";
+    };
+    padded(files / "big17.json", 17 << 20);
+    padded(files / "t1.json", 15 << 20);
+    padded(files / "t2.json", 1 << 20);
+    const std::vector<std::pair<std::string, std::string>> large = {
+        {"big-file.json", lessonWith({"s.json", "big17.json"})},
+        {"streamed.json", lessonWith({"s.json", "../stream/200.json"})},
+        {"declared.json", lessonWith({"s.json", "../stream/200-declared.json"})},
+        {"steps-total.json", lessonWith({"t1.json", "t1.json", "t1.json", "t1.json", "t1.json", "t2.json"})},
+    };
+    for (const auto& [name, text] : large) std::ofstream(files / name) << text;
+
+    Session session;
+    const std::size_t open = session.openWithFiles("?lesson=files/bad-url.json", files);
+    const std::size_t openMessage = session.message();
+    std::vector<std::size_t> refused;
+    for (std::size_t i = 0; i < refusals.size(); ++i)
+        refused.push_back(session.loadUrl("files/refused-" + std::to_string(i) + ".json"));
+    const std::size_t beforeAnyFile = session.served();
+    const std::size_t data = session.loadUrl(dataLesson);
+    std::vector<std::size_t> largeLoads;
+    for (const auto& [name, text] : large) largeLoads.push_back(session.loadUrl("files/" + name));
+    session.sleep(1); // the stream's server thread notes what it sent once the page has hung up
+    const std::size_t served = session.served();
+    const std::size_t shown = session.message();
+    const std::size_t console = session.console();
+    if (!session.run(dir_)) return;
+
+    EXPECT_EQ(session.answer(open).at("failed"), "");
+    EXPECT_EQ(session.answer(openMessage).at("message"), badUrlExpected)
+        << "?lesson= with a step \"http://[\"";
+    for (std::size_t i = 0; i < refusals.size(); ++i)
+        EXPECT_EQ(session.answer(refused[i]).at("message"), refusals[i].expected) << json(refusals[i].path);
+    const json requestedFirst = session.answer(beforeAnyFile).at("requested");
+    for (const char* never : {"/files/s.json", "/files/abs.json"})
+        EXPECT_EQ(std::count(requestedFirst.begin(), requestedFirst.end(), never), 0)
+            << never << " was requested for a refused lesson: " << requestedFirst;
+    const std::string dataMessage = session.answer(data).at("message");
+    EXPECT_NE(
+        dataMessage.find(R"(steps[0].scene: the page cannot fetch it beside the lesson, whose URL "data:)"),
+        std::string::npos)
+        << dataMessage;
+    EXPECT_NE(dataMessage.find("has no folder"), std::string::npos) << dataMessage;
+    for (std::size_t i = 0; i < large.size(); ++i)
+        EXPECT_EQ(session.answer(largeLoads[i]).at("message"), nativeMessage(large[i].second, large[i].first))
+            << large[i].first;
+    const json& requested = session.answer(served).at("requested");
+    const json& streamed = session.answer(served).at("streamed");
+    const auto times = [&](const std::string& path) {
+        return std::count(requested.begin(), requested.end(), path);
+    };
+    EXPECT_EQ(times("/files/t1.json"), 1) << "t1.json, named by two steps, fetched once";
+    EXPECT_EQ(times("/files/t2.json"), 0) << "fetched after the steps passed 64 MiB of scene text";
+    // What the server could send before the page hung up: the limit, plus what the sockets' buffers and the
+    // browser's network process hold.
+    ASSERT_TRUE(streamed.contains("/stream/200.json")) << streamed;
+    ASSERT_TRUE(streamed.contains("/stream/200-declared.json")) << streamed;
+    const double mib = 1 << 20;
+    EXPECT_LT(streamed.at("/stream/200.json").get<double>() / mib, 48) << "MiB sent without a Content-Length";
+    EXPECT_LT(streamed.at("/stream/200-declared.json").get<double>() / mib, 32)
+        << "MiB sent after the header";
+    std::printf("streamed before the page hung up: %.1f MiB without a Content-Length, %.1f MiB with one\n",
+                streamed.at("/stream/200.json").get<double>() / mib,
+                streamed.at("/stream/200-declared.json").get<double>() / mib);
+    EXPECT_FALSE(session.answer(shown).at("message").get<std::string>().empty()) << "the last refusal shows";
+    for (const json& entry : session.answer(console).at("console"))
+        EXPECT_EQ(entry.value("message", "").find("Uncaught"), std::string::npos) << entry;
 }
 
 // scripts/web.sh render follows the command line's rules with its messages: a FIFO scene (it waited
