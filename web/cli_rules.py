@@ -180,15 +180,22 @@ def resolve_output(user_path, name='--out'):
 def refuse_overwriting_input(output, field, input_path):
     """refuseOverwritingInput: the output is the input file under any name, as stat() follows it (a link,
     /dev/stdout or /dev/fd/N open on it, as in `--out /dev/stdout >> scene.json`)."""
-    if not output or output == '-' or not input_path or input_path == '-':
+    if not output or not input_path or input_path == '-':
         return
     try:
-        a, b = os.stat(output), os.stat(input_path)
+        if output == '-':  # standard output redirected onto the input: `--out - >> scene.json`
+            a = os.fstat(1)
+            if not stat.S_ISREG(a.st_mode):
+                return
+        else:
+            a = os.stat(output)
+        b = os.stat(input_path)
     except (OSError, ValueError):
         return
     if (a.st_dev, a.st_ino) == (b.st_dev, b.st_ino):
+        shown = '- (standard output)' if output == '-' else quoted(output)
         raise InputError('%s: %s is the input file %s; writing it would destroy the input: choose another output '
-                         'path' % (field, quoted(output), quoted(input_path)))
+                         'path' % (field, shown, quoted(input_path)))
 
 
 def _descriptor(user_path, fd, name):

@@ -166,9 +166,21 @@ const kMiB = 1 << 20;
 // The text at `url`, read at most to `limit` bytes: {text, bytes}, {tooLarge: true}, {status} for an HTTP
 // error. A Content-Length over the limit is refused before the body is read (it is the size on the wire, so
 // only when the body is not compressed); a body without one is read chunk by chunk and cancelled as soon as
-// it passes the limit. Throws what fetch throws (no network, a URL fetch rejects).
+// it passes the limit. Throws what fetch throws (no network, a URL fetch rejects), and gives up on a server
+// that has not sent the whole body within kFetchSeconds: nothing waits without a deadline.
+const kFetchSeconds = 60;
 async function fetchBounded(url, limit) {
-  const response = await fetch(url);
+  const controller = new AbortController();
+  const timer = setTimeout(
+    () => controller.abort(new Error('no complete answer within ' + kFetchSeconds + ' s')), kFetchSeconds * 1000);
+  try {
+    return await readBounded(await fetch(url, {signal: controller.signal}), limit);
+  } finally {
+    clearTimeout(timer);
+  }
+}
+
+async function readBounded(response, limit) {
   const stop = () => response.body && response.body.cancel().catch(() => {});
   if (!response.ok) {
     stop();

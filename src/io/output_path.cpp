@@ -252,7 +252,16 @@ void prepareOutputFolder(const fs::path& dir, std::string_view field, const std:
 }
 
 void refuseOverwritingInput(const fs::path& output, std::string_view field, const fs::path& input) {
-    if (output.empty() || output == "-" || input.empty() || input == "-") return;
+    if (output.empty() || input.empty() || input == "-") return;
+    if (output == "-") { // standard output redirected onto the input: `--out - >> scene.json`
+        struct stat out {
+        }, in{};
+        if (::fstat(STDOUT_FILENO, &out) == 0 && ::stat(input.c_str(), &in) == 0 && S_ISREG(out.st_mode) &&
+            out.st_dev == in.st_dev && out.st_ino == in.st_ino)
+            throw InputError(std::string(field) + ": - (standard output) is the input file " + quoted(input) +
+                             "; writing it would destroy the input: choose another output path");
+        return;
+    }
     if (isSameFile(output, input))
         throw InputError(std::string(field) + ": " + quoted(output) + " is the input file " + quoted(input) +
                          "; writing it would destroy the input: choose another output path");

@@ -162,6 +162,14 @@ TEST_F(LessonHostileTest, OutputsThatAreStandardOutputUnderAnotherNameAreRefused
     expectRefused(
         shadelab({"render", "lesson/base.json", "--print-matrices", "--out", "matrices.txt"}, redirected),
         {"is standard output"});
+    // Standard output appended to the scene itself (`--out - >> base.json`) would write the PNG into it.
+    RunOptions ontoScene;
+    ontoScene.stdoutPath = dir_ / "lesson" / "base.json";
+    ontoScene.stdoutAppends = true;
+    for (const std::string& out : {"-", "/dev/stdout"})
+        expectRefused(shadelab({"render", "lesson/base.json", "--out", out}, ontoScene),
+                      {"is the input file \"lesson/base.json\"; writing it would destroy the input"});
+    EXPECT_EQ(readFile(dir_ / "lesson" / "base.json"), kScene);
     // /dev/null takes both and loses nothing; a plain file is fine.
     EXPECT_EQ(shadelab({"render", "lesson/base.json", "--print-matrices", "--out", "/dev/null"}).exitCode, 0);
     EXPECT_EQ(shadelab({"render", "lesson/base.json", "--print-matrices", "--out", "m.png"}).exitCode, 0);

@@ -1504,6 +1504,7 @@ TEST_F(Browser, RenderScriptRefusesOutputsAsTheCommandLineDoes) {
         bool stdoutToScene; // standard output appended to scene.json, as `>> scene.json`
     };
     const std::vector<Case> cases = {
+        {{"render", "scene.json", "--out", "-"}, true},
         {{"render", "scene.json", "--out", "/dev/stdout"}, true},
         {{"render", "scene.json", "--out", "/dev/fd/1"}, true},
         {{"render", "scene.json", "--out", "/proc/self/fd/1"}, true},
