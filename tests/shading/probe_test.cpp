@@ -89,8 +89,9 @@ TEST(Probe, PixelAndDifferenceFollowTheTermShown) {
             scene.term = LightingTerm::All;
             const ProbeReport all = probeAtPixel(scene, 40, 44);
             EXPECT_NE(probe.mode.color, all.mode.color) << toString(mode) << ", " << toString(term);
-            if (mode != ShadingMode::Gouraud) // Gouraud interpolates the vertices' clamped colours
+            if (mode != ShadingMode::Gouraud) { // Gouraud interpolates the vertices' clamped colours
                 EXPECT_EQ(probe.mode.color, clampColor(probe.mode.terms.of(term))) << toString(mode);
+            }
             EXPECT_EQ(probe.exact.color, clampColor(probe.exact.terms.of(term))) << toString(mode);
         }
 }

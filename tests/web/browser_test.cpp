@@ -1575,6 +1575,16 @@ int httpStatus(int port, const std::string& target) {
     return reply.starts_with("HTTP/1.") && reply.size() > 12 ? std::stoi(reply.substr(9, 3)) : -1;
 }
 
+// The status of GET / from a server just started on `port`, asked every 100 ms until it answers; -1 when
+// it has not within 20 s.
+int statusOnceServing(int port) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    int index = -1;
+    while ((index = httpStatus(port, "/")) < 0 && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    return index;
+}
+
 // scripts/web.sh serve serves the page and nothing else: no build files, no listings, no links out of the
 // page's folder; a port outside 1..65535 is refused (70000 bound 4464 and printed the wrong URL).
 TEST_F(Browser, ServeGivesThePageAndNothingElse) {
@@ -1596,10 +1606,7 @@ TEST_F(Browser, ServeGivesThePageAndNothingElse) {
         ::_exit(127);
     }
     ASSERT_GT(server, 0);
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
-    int index = -1;
-    while ((index = httpStatus(port, "/")) < 0 && std::chrono::steady_clock::now() < deadline)
-        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    const int index = statusOnceServing(port);
     EXPECT_EQ(index, 200) << "the page's index.html (the server did not answer within 20 s if -1)";
     EXPECT_EQ(httpStatus(port, "/shadelab.wasm"), 200);
     EXPECT_EQ(httpStatus(port, "/scenes/index.json"), 200);
@@ -1657,10 +1664,7 @@ TEST_F(Browser, ServeAnswersBadPathsAndIsSilentWhenAClientHangsUp) {
         ::_exit(127);
     }
     ASSERT_GT(server, 0);
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
-    int index = -1;
-    while ((index = httpStatus(port, "/")) < 0 && std::chrono::steady_clock::now() < deadline)
-        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    const int index = statusOnceServing(port);
     EXPECT_EQ(index, 200) << "index.html (the server did not answer within 20 s if -1)";
     for (const char* bad : {"/%00", "/scenes/%00.json", "/index.html%00"})
         EXPECT_EQ(httpStatus(port, bad), 400) << bad;
