@@ -237,7 +237,7 @@ TEST(DemoLesson, StepKeysMoveThroughTheStepsAndRReturnsToTheStep) {
     second.shading = ShadingMode::Toon;
     second.lighting = LightingModel::Phong;
     second.objects[0].subdivisions = 2;
-    lesson->steps = {{"One", "the first", first}, {"Two", "", second}};
+    lesson->steps = {{"One", "the first", first, "", {}}, {"Two", "", second, "", {}}};
     DemoState state(Scene{});
     EXPECT_TRUE(state.apply(Command::NextStep));
     EXPECT_NE(state.lastChange().find("no lesson open"), std::string::npos) << state.lastChange();

@@ -105,7 +105,7 @@ TEST_F(LessonHostileTest, AFifoSlideAndAStandardInputStepAreRefusedAtOnce) {
     writeLesson("-");
     RunOptions withStdin = quick;
     withStdin.stdinText = kScene;
-    for (const std::string& command : {"check", "slides"}) {
+    for (const std::string command : {"check", "slides"}) {
         std::vector<std::string> args = {command, "lesson/lesson.json"};
         if (command == "slides") args.insert(args.end(), {"--out-dir", "elsewhere"});
         expectRefused(shadelab(args, withStdin),
@@ -147,7 +147,7 @@ TEST_F(LessonHostileTest, OutputsThatAreStandardOutputUnderAnotherNameAreRefused
     writeFile(dir_ / "a.png", "");
     const Outcome made = shadelab({"render", "lesson/base.json", "--out", "a.png"});
     ASSERT_EQ(made.exitCode, 0) << describe(made);
-    for (const std::string& alias : {"/dev/stdout", "/dev/fd/1", "/proc/self/fd/1"}) {
+    for (const std::string alias : {"/dev/stdout", "/dev/fd/1", "/proc/self/fd/1"}) {
         const Outcome render = shadelab({"render", "lesson/base.json", "--print-matrices", "--out", alias});
         expectRefused(render, {"--out: \"" + alias + "\" is standard output", "--print-matrices"});
         EXPECT_EQ(render.out, "") << "nothing printed before the refusal";
@@ -166,7 +166,7 @@ TEST_F(LessonHostileTest, OutputsThatAreStandardOutputUnderAnotherNameAreRefused
     RunOptions ontoScene;
     ontoScene.stdoutPath = dir_ / "lesson" / "base.json";
     ontoScene.stdoutAppends = true;
-    for (const std::string& out : {"-", "/dev/stdout"})
+    for (const std::string out : {"-", "/dev/stdout"})
         expectRefused(shadelab({"render", "lesson/base.json", "--out", out}, ontoScene),
                       {"is the input file \"lesson/base.json\"; writing it would destroy the input"});
     EXPECT_EQ(readFile(dir_ / "lesson" / "base.json"), kScene);
