@@ -192,13 +192,13 @@ const SurfaceProgram& Renderer::program(const ProgramVariant& variant) {
     return *slot;
 }
 
-void Renderer::render(const Scene& scene, int width, int height, int x, ViewOptions options) {
+void Renderer::render(const Scene& scene, int width, int height, int x) {
     if (scene.view.kind == ViewKind::Scene) {
         renderScene(scene, width, height, x);
         return;
     }
     if (!views_) views_ = std::make_unique<Views>(*this);
-    views_->draw(scene, width, height, x, options);
+    views_->draw(scene, width, height, x);
 }
 
 const ViewFigures& Renderer::viewFigures() const {

@@ -78,9 +78,8 @@ Views::Views(Renderer& renderer)
 
 Views::~Views() = default;
 
-void Views::draw(const Scene& scene, int width, int height, int x, ViewOptions options) {
+void Views::draw(const Scene& scene, int width, int height, int x) {
     if (width <= 0 || height <= 0) return;
-    options_ = options;
     GLint destination = 0;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &destination);
     switch (scene.view.kind) {

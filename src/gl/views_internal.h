@@ -94,7 +94,7 @@ struct Views::Labels {
     KeyedSprite<detail::ProfilePlot> profilePlot;
     KeyedSprite<int> profileMarker; // its width
     // The outside and NDC views: the title (a literal), the drawing of the last scene and its labels.
-    KeyedSprite<std::tuple<std::string_view, int, bool>> title; // title, text scale, with the hints
+    KeyedSprite<std::pair<std::string_view, int>> title;
     std::optional<Scene> drawnScene; // what `drawing` was made for (nullopt with a drawing: the NDC cube)
     std::optional<OutsideDrawing> drawing;
     // One per label of `drawing`, keyed by a view of its text: cleared whenever the drawing is made again.

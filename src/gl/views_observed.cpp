@@ -39,11 +39,10 @@ void Views::drawObserved(const OutsideDrawing& drawing, const Scene& observer, s
     // The labels, then the lines over them, so that no label hides a corner of the view volume.
     drawLabels(drawing.labels, observer, width, height, x);
     const int scale = textScale(width, height);
-    const bool hints = options_.interactionHints;
-    const Sprite& titleLabel = labels_->title.update(std::tuple{title, scale, hints}, [&] {
-        return hints ? labelImage({std::string(title), "DRAG: OBSERVER  WHEEL: ZOOM"}, scale)
-                     : labelImage({std::string(title)}, scale);
-    });
+    // The title alone: how to move the observer is said in the window's title and status line, which a
+    // pointer reaches; the picture is also a PNG or a slide, which none does.
+    const Sprite& titleLabel = labels_->title.update(std::pair{title, scale},
+                                                     [&] { return labelImage({std::string(title)}, scale); });
     programs_->images.draw(titleLabel, scale * 4, scale * 4, x, width, height);
     renderer_.drawWorld(observer, drawing.lines, {}, kFaceAlpha, width, height, x);
     glEnable(GL_DEPTH_TEST);

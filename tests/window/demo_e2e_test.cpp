@@ -554,6 +554,10 @@ TEST_F(DemoWindow, ExactErrorSplitProfileOutsideAndNdcShowWhatRenderGives) {
     demo.window().key("q");
     const Scene ndc = step("ndc", has("| ndc: observer at azimuth 35 deg"));
     EXPECT_EQ(ndc.view.kind, ViewKind::Ndc);
+    // How to move the observer is said in the title, where the pointer is; the picture is render's, without
+    // it.
+    EXPECT_NE(demo.window().title().find("(drag: orbit, wheel: zoom)"), std::string::npos)
+        << demo.window().title();
     expectCleanQuit(demo);
 }
 

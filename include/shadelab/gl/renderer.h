@@ -27,7 +27,7 @@ public:
     // `x` moves the viewport right (the demo's picture beside its panel); the clear covers the whole target.
     // With scene.overlay, the objects' edges (and normals) are drawn over them, depth-tested.
     // scene.view other than "scene" draws that view (gl/views.h) from renders of the scene's parts.
-    void render(const Scene& scene, int width, int height, int x = 0, ViewOptions options = {});
+    void render(const Scene& scene, int width, int height, int x = 0);
     // The scene itself, whatever its view says (what the views draw their parts with).
     void renderScene(const Scene& scene, int width, int height, int x = 0);
     // What the last view measured (the error view's mean and max, the profile's row).

@@ -16,12 +16,6 @@ namespace shadelab::gl {
 
 class Renderer;
 
-// How a frame is shown: in the window, where a person drags and scrolls, or as a picture (a PNG, a slide,
-// presentation mode) that no pointer reaches, where "DRAG: OBSERVER  WHEEL: ZOOM" would only mislead.
-struct ViewOptions {
-    bool interactionHints = false;
-};
-
 // What the last view drawn measured, for the panel, the title and the tests.
 struct ViewFigures {
     // Error view: over the interior as `shadelab report` counts it (both renders cover the 5×5 square around
@@ -46,7 +40,7 @@ public:
     // Draws scene.view (not ViewKind::Scene) over the viewport (x, 0, width, height) of the bound
     // framebuffer. Throws RuntimeError where the context lacks float colour targets (error and profile
     // views measure unrounded values; DESIGN §7: refused, never silently replaced).
-    void draw(const Scene& scene, int width, int height, int x, ViewOptions options = {});
+    void draw(const Scene& scene, int width, int height, int x);
     const ViewFigures& figures() const { return figures_; }
 
 private:
@@ -74,7 +68,6 @@ private:
     std::unique_ptr<Programs> programs_;
     std::unique_ptr<Labels> labels_;
     ViewFigures figures_;
-    ViewOptions options_; // the frame's, set by draw
 };
 
 // The scene one side of a split view draws: the scene with the side's shading, lighting and level.

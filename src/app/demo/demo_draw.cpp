@@ -23,9 +23,11 @@ std::string viewReport(const Scene& scene, const gl::ViewFigures& figures) {
                std::to_string(figures.edgeColumns.size()) + " edge crossings";
     case ViewKind::Outside:
     case ViewKind::Ndc:
-        std::snprintf(text, sizeof text, "%s: observer at azimuth %.0f deg, elevation %.0f deg, zoom %.2f",
-                      toString(scene.view).c_str(), scene.view.observer.azimuthDeg,
-                      scene.view.observer.elevationDeg, scene.view.observer.zoom);
+        std::snprintf(
+            text, sizeof text,
+            "%s: observer at azimuth %.0f deg, elevation %.0f deg, zoom %.2f (drag: orbit, wheel: zoom)",
+            toString(scene.view).c_str(), scene.view.observer.azimuthDeg, scene.view.observer.elevationDeg,
+            scene.view.observer.zoom);
         return text;
     }
     return "";
@@ -33,8 +35,7 @@ std::string viewReport(const Scene& scene, const gl::ViewFigures& figures) {
 
 void FramedPicture::drawPicture(gl::Renderer& renderer, DemoState& state, int width, int height) {
     const Scene scene = state.drawn();
-    // The window's pointer drives the observer; presentation mode is a slide, which none reaches.
-    renderer.render(scene, width, height, 0, {.interactionHints = !state.presenting});
+    renderer.render(scene, width, height);
     const gl::ViewFigures& figures = renderer.viewFigures();
     const ReportFacts reported{scene.view,
                                figures.interiorMean,
