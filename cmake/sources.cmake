@@ -10,7 +10,8 @@ set(SHADELAB_CORE_SOURCES
   src/geometry/sphere.cpp src/geometry/sphere_limits.cpp src/geometry/subdivision.cpp
   src/geometry/mesh_layout.cpp src/geometry/overlay.cpp
   src/scene/camera.cpp src/scene/view.cpp src/scene/outside_view.cpp src/scene/scene.cpp
-  src/scene/scene_check.cpp src/scene/scene_json.cpp src/scene/scene_parse.cpp src/scene/scene_write.cpp
+  src/scene/scene_check.cpp src/scene/scene_limits.cpp src/scene/scene_messages.cpp src/scene/scene_json.cpp
+  src/scene/scene_parse.cpp src/scene/scene_write.cpp
   src/scene/lesson.cpp
   src/shading/lighting.cpp src/shading/ray_cast.cpp src/shading/probe.cpp
   src/image/image.cpp src/image/font.cpp

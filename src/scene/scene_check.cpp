@@ -1,6 +1,7 @@
-// The ranges of DESIGN §4 and the pieces of every scene message. One set of check* functions serves both
-// parseScene (per entity, as it is read) and validateScene (after flags or code change a scene), so the two
-// can never disagree about what a valid scene is; the checks a flag shares are public (scene_values.h).
+// The ranges of DESIGN §4 (the message pieces are scene_messages.cpp, the whole-scene limits
+// scene_limits.cpp). One set of check* functions serves both parseScene (per entity, as it is read) and
+// validateScene (after flags or code change a scene), so the two can never disagree about what a valid scene
+// is; the checks a flag shares are public (scene_values.h).
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -17,69 +18,6 @@
 #include "shadelab/scene/outside_view.h"
 
 namespace shadelab::detail {
-
-// ---- message pieces ----
-
-// What std::to_chars(value) gives: the fewest significant digits that read back as `value`, in fixed or
-// scientific notation, whichever is shorter (fixed on a tie). Written out because the browser build's
-// libc++ has no floating-point to_chars, and the page must word a message exactly as the command line does.
-std::string formatNumber(double value) {
-    if (!std::isfinite(value)) return std::isnan(value) ? "nan" : value > 0 ? "inf" : "-inf";
-    std::array<char, 40> scientific{};
-    int digits = 1;
-    for (; digits < 17; ++digits) {
-        std::snprintf(scientific.data(), scientific.size(), "%.*e", digits - 1, value);
-        if (std::strtod(scientific.data(), nullptr) == value) break;
-    }
-    std::snprintf(scientific.data(), scientific.size(), "%.*e", digits - 1, value);
-    const int exponent = std::atoi(std::strchr(scientific.data(), 'e') + 1);
-    std::array<char, 400> fixed{}; // up to 309 integer digits
-    std::snprintf(fixed.data(), fixed.size(), "%.*f", std::max(0, digits - 1 - exponent), value);
-    const std::string a(fixed.data()), b(scientific.data());
-    return a.size() <= b.size() ? a : b;
-}
-
-std::string formatVec(const glm::dvec3& v) {
-    return "[" + formatNumber(v.x) + ", " + formatNumber(v.y) + ", " + formatNumber(v.z) + "]";
-}
-
-// ---- JSON paths: objects[0].material.diffuse[2] ----
-
-namespace {
-
-bool isPlainKey(std::string_view key) {
-    if (key.empty() || key.size() > kMaxQuotedChars) return false; // a long key is quoted, and so truncated
-    for (char c : key)
-        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-')) return false;
-    return true;
-}
-
-} // namespace
-
-std::string keyPath(std::string_view parent, std::string_view key) {
-    if (!isPlainKey(key)) return std::string(parent) + "[" + quotedValue(key) + "]";
-    return parent.empty() ? std::string(key) : std::string(parent) + "." + std::string(key);
-}
-
-std::string indexPath(std::string_view parent, std::size_t index) {
-    return std::string(parent) + "[" + std::to_string(index) + "]";
-}
-
-[[noreturn]] void fail(std::string_view path, std::string_view message) {
-    throw InputError(path.empty() ? std::string(message) : std::string(path) + ": " + std::string(message));
-}
-
-// Errors from camera.h and sphere.h may already name the field; add the path only where they don't.
-[[noreturn]] void failWithin(std::string_view path, const InputError& error) {
-    std::string_view message = error.what();
-    if (message.starts_with(path)) throw error;
-    fail(path, message);
-}
-
-[[noreturn]] void failOutOfRange(IntRange range, std::string_view shown, std::string_view path) {
-    fail(path, "must be between " + std::to_string(range.lo) + " and " + std::to_string(range.hi) + ", got " +
-                   std::string(shown));
-}
 
 // ---- range checks ----
 
@@ -165,61 +103,6 @@ void checkMaterial(const Material& m, const std::string& path) {
     checkColor(m.specular, keyPath(path, "specular"));
     // pow(0, 0) is undefined in GLSL (DESIGN §3).
     checkAtLeast(m.shininess, 1, keyPath(path, "shininess"));
-}
-
-// The work a scene asks for, bounded before any of it is done (README "Limits"): the triangles drawn per
-// frame, and the ray-object tests of the analytic reference (pixels × objects), which render and reference
-// share as one notion of a valid scene.
-void checkWork(const Scene& scene) {
-    // A split view draws every object once per side, each side at its own level where it sets one.
-    const bool split = scene.view.kind == ViewKind::Split;
-    double triangles = 0;
-    for (const SceneObject& object : scene.objects) {
-        const int level = subdivisionLevel(scene, object);
-        if (!split) {
-            triangles += double(sphereTriangleCount(level));
-            continue;
-        }
-        for (const SplitSide* side : {&scene.view.left, &scene.view.right})
-            triangles += double(sphereTriangleCount(side->level.value_or(level)));
-    }
-    if (triangles > double(kMaxTrianglesPerFrame))
-        fail(split ? "view" : "objects",
-             "the scene draws " + formatNumber(triangles) + " triangles per frame (each object 4^(level+1)" +
-                 (split ? ", once per side of the split" : "") + "); at most " +
-                 std::to_string(kMaxTrianglesPerFrame) + " are allowed: lower the subdivisions" +
-                 (split ? " (the sides' @levels included)" : "") + " or draw fewer objects");
-    const double rayTests = double(scene.width) * scene.height * double(scene.objects.size());
-    if (rayTests > double(kMaxReferenceRayTests))
-        fail("objects", "the analytic reference would test " + formatNumber(rayTests) +
-                            " rays against objects (width x height x objects); at most " +
-                            std::to_string(kMaxReferenceRayTests) +
-                            " are allowed: use a smaller image or fewer objects");
-}
-
-// Standard depth (DESIGN's [-1, 1] mapping, near → +1, far → −1) puts a point at distance d ≫ near at
-// NDC z ≈ −1 + 2·near/d, so its depth (z + 1)/2 ≈ near/d: past d ≈ 3e7·near that is below half a 24-bit
-// step (3e-8) and rounds to 0, the clear value, which GL_GREATER never passes, and whole objects vanish
-// (measured: the default sphere at d = 3 loses a third of its pixels with near 1e-7 and vanishes with near
-// 1e-10, while the reversed modes draw it whole). Refuse before that, with a margin.
-void checkStandardDepthRange(const Scene& scene) {
-    if (scene.depth != DepthMode::Standard || scene.projection.type != ProjectionType::Perspective) return;
-    const double near = scene.projection.near;
-    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-        const SceneObject& o = scene.objects[i];
-        const double extent =
-            std::abs(o.radius) * std::max({std::abs(o.scale.x), std::abs(o.scale.y), std::abs(o.scale.z)});
-        const double farthest = std::min(glm::length(o.center - scene.eye) + extent, scene.projection.far);
-        if (farthest / near > kMaxStandardDepthRatio)
-            fail("projection.near",
-                 "with \"depth\": \"standard\", " + indexPath("objects", i) + " reaches " +
-                     formatNumber(farthest / near) +
-                     " x near from the eye; the depth buffer rounds points beyond " +
-                     formatNumber(kMaxStandardDepthRatio) +
-                     " x near to depth 0, the far plane's and the clear value, which the depth test never "
-                     "passes: raise near to at least " +
-                     formatNumber(farthest / kMaxStandardDepthRatio) + " or use \"depth\": \"reversed\"");
-    }
 }
 
 void checkAttenuation(const glm::dvec3& a, const std::string& path) {
@@ -363,69 +246,6 @@ void checkObject(const SceneObject& object, const std::string& path) {
     checkMaterial(object.material, keyPath(path, "material"));
 }
 
-namespace {
-
-// |point - eye| without overflowing on the way (scaled by the largest component, as unitDirection does),
-// and in words: "lies 2e+31 from the eye [0, 0, 4]".
-std::string distanceFromEye(const glm::dvec3& point, const Scene& scene, double& distance) {
-    const glm::dvec3 d = point - scene.eye;
-    const double k = std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)});
-    distance = k == 0 ? 0 : std::isfinite(k) ? k * glm::length(d / k) : k;
-    return "lies " + (std::isfinite(distance) ? formatNumber(distance) : std::string("beyond double range")) +
-           " from the eye " + formatVec(scene.eye);
-}
-
-// The smallest semi-axis of `object`, and which scale component makes it.
-int thinnestAxis(const SceneObject& object) {
-    const glm::dvec3 s = glm::abs(object.scale);
-    return s.x <= s.y && s.x <= s.z ? 0 : s.y <= s.z ? 1 : 2;
-}
-
-// An object within float's reach of the eye, in the eye's units and in its own (kMaxRayCastReach).
-void checkObjectPlacement(const Scene& scene, const SceneObject& object, const std::string& path) {
-    double distance = 0;
-    const std::string where = distanceFromEye(object.center, scene, distance);
-    if (!(distance <= kMaxFloatExtent))
-        fail(keyPath(path, "center"), where + ", beyond " + formatNumber(kMaxFloatExtent) +
-                                          " (view-space positions are 32-bit float on the GPU), got " +
-                                          formatVec(object.center) + "; move it or the eye");
-    const int axis = thinnestAxis(object);
-    const double semiAxis = object.radius * std::abs(object.scale[axis]);
-    const double extent = object.radius * std::max({std::abs(object.scale.x), std::abs(object.scale.y),
-                                                    std::abs(object.scale.z)});
-    // An orthographic ray's direction is the unit vector, 1/semiAxis long in the object's units.
-    const bool orthographic = scene.projection.type == ProjectionType::Orthographic;
-    const double reach = orthographic ? std::max(distance + extent, 1.0) : distance + extent;
-    if (reach / semiAxis > kMaxRayCastReach)
-        fail(indexPath(keyPath(path, "scale"), axis),
-             "got " + formatNumber(object.scale[axis]) + ", which makes the semi-axis radius x scale[" +
-                 std::to_string(axis) + "] " + formatNumber(semiAxis) + " while the object reaches " +
-                 formatNumber(reach) + " from the eye: " + formatNumber(reach / semiAxis) +
-                 " of those semi-axes, and exact shading squares that in 32-bit float (at most " +
-                 formatNumber(kMaxRayCastReach) + "): make the semi-axis at least " +
-                 formatNumber(reach / kMaxRayCastReach) + " or bring the eye closer");
-}
-
-} // namespace
-
-// Eye-relative values, so checked once the camera, the objects and the lights are all known: the view-space
-// positions the GPU receives (DESIGN §2 composes them in double, camera-relative) must be float too.
-void checkPlacement(const Scene& scene) {
-    for (std::size_t i = 0; i < scene.objects.size(); ++i)
-        checkObjectPlacement(scene, scene.objects[i], indexPath("objects", i));
-    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
-        const Light& light = scene.lights[i];
-        if (!hasPosition(light.type)) continue;
-        double distance = 0;
-        const std::string where = distanceFromEye(light.position, scene, distance);
-        if (!(distance <= kMaxFloatExtent))
-            fail(keyPath(indexPath("lights", i), "position"),
-                 where + ", beyond " + formatNumber(kMaxFloatExtent) +
-                     " (view-space positions are 32-bit float on the GPU), got " + formatVec(light.position) +
-                     "; move it closer (a light that far is a directional light)");
-    }
-}
-
 void checkObjectCount(std::size_t count) {
     if (count > kMaxObjects)
         fail("objects", "at most " + std::to_string(kMaxObjects) + " objects are supported, got " +
@@ -525,11 +345,6 @@ void validateSceneValues(const Scene& scene) {
     (void)sceneView(scene); // the derived matrices must be finite too
     checkOutsideView(scene);
     checkObjectCount(scene.objects.size());
-}
-
-void checkSceneLimits(const Scene& scene) {
-    checkWork(scene);
-    checkStandardDepthRange(scene);
 }
 
 } // namespace shadelab
