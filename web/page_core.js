@@ -1,7 +1,8 @@
-// The page around shadelab.wasm, in five classic scripts that share one global scope, loaded in this
-// order by index.html: page_core.js (the shared state and the message line), page_input.js (keys and
-// mouse), page_panel.js (the control panel), page_capture.js (pixels, S, and the calls the tests and
-// web/driver.py make), and page.js (the module's start and scene loading), which loads shadelab.js last.
+// The page around shadelab.wasm, in six classic scripts that share one global scope, loaded in this order
+// by index.html: page_core.js (the shared state and the message line), page_input.js (keys and mouse),
+// page_panel.js (the control panel), page_capture.js (pixels, S, and the calls the tests and web/driver.py
+// make), page_lesson.js (a lesson's files: bounded fetches, step paths checked first), and page.js (the
+// module's start and scene loading), which loads shadelab.js last.
 // All state lives in the C++ DemoState (web/main.cpp, web/panel.cpp); the panel shows what shadelab_panel()
 // returns (the scene's values and the shown object's material, never all its objects) and changes it
 // through the same commands as the keys, or by the edited values handed back as JSON.
