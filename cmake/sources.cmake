@@ -12,7 +12,7 @@ set(SHADELAB_CORE_SOURCES
   src/scene/camera.cpp src/scene/view.cpp src/scene/outside_view.cpp src/scene/scene.cpp
   src/scene/scene_check.cpp src/scene/scene_limits.cpp src/scene/scene_messages.cpp src/scene/scene_json.cpp
   src/scene/scene_parse.cpp src/scene/scene_write.cpp
-  src/scene/lesson.cpp
+  src/scene/lesson.cpp src/scene/slide_name.cpp
   src/shading/lighting.cpp src/shading/ray_cast.cpp src/shading/probe.cpp
   src/image/image.cpp src/image/font.cpp
   src/io/atomic_file.cpp src/io/output_path.cpp src/io/text.cpp

@@ -312,22 +312,4 @@ std::variant<Scene, Lesson> loadSceneOrLesson(const std::filesystem::path& path)
     return lessonBeside(tree, path);
 }
 
-std::string slideFileName(std::size_t index, std::size_t count, std::string_view title) {
-    const std::size_t digits = std::max<std::size_t>(2, std::to_string(count).size());
-    std::string number = std::to_string(index + 1);
-    number.insert(0, digits - std::min(digits, number.size()), '0');
-    std::string safe;
-    for (const char c : title) {
-        const char lower = (c >= 'A' && c <= 'Z') ? char(c - 'A' + 'a') : c;
-        const bool plain = (lower >= 'a' && lower <= 'z') || (lower >= '0' && lower <= '9');
-        if (plain)
-            safe += lower;
-        else if (!safe.empty() && safe.back() != '-')
-            safe += '-';
-        if (safe.size() >= 48) break;
-    }
-    while (!safe.empty() && safe.back() == '-') safe.pop_back();
-    return number + "-" + (safe.empty() ? "step" : safe) + ".png";
-}
-
 } // namespace shadelab

@@ -318,10 +318,32 @@ TEST(Lesson, TellsALessonFromAScene) {
 
 TEST(Lesson, SlideNamesSortInStepOrderAndAreSafe) {
     EXPECT_EQ(slideFileName(2, 14, "The view volume"), "03-the-view-volume.png");
-    EXPECT_EQ(slideFileName(0, 100, "Phong vs. Blinn-Phong (α = 8)"), "001-phong-vs-blinn-phong-8.png");
+    EXPECT_EQ(slideFileName(0, 100, "Phong vs. Blinn-Phong (α = 8)"), "001-phong-vs-blinn-phong-alpha-8.png");
     EXPECT_EQ(slideFileName(9, 9, "../../etc/passwd"), "10-etc-passwd.png");
-    EXPECT_EQ(slideFileName(0, 1, "ααα"), "01-step.png");
-    EXPECT_EQ(slideFileName(0, 1, std::string(300, 'a')).size(), std::string("01-").size() + 48 + 4);
+    EXPECT_EQ(slideFileName(0, 1, "✓✓✓"), "01-step.png");
+    EXPECT_EQ(slideFileName(0, 1, std::string(300, 'a')).size(), std::string("01-").size() + 64 + 4);
+    // Cut at a word's end, never inside one.
+    EXPECT_EQ(slideFileName(0, 1, std::string(60, 'a') + " bbbbbbbbbb"),
+              "01-" + std::string(60, 'a') + ".png");
+}
+
+// The lecture's symbols keep their meaning: the two normal-matrix slides are told apart by their names.
+TEST(Lesson, SlideNamesSpellOutTheLecturesSymbols) {
+    EXPECT_EQ(slideFileName(16, 21, "Normals transformed by M: wrong on purpose"),
+              "17-normals-transformed-by-m-wrong-on-purpose.png");
+    EXPECT_EQ(slideFileName(17, 21, "Normals transformed by (M⁻¹)ᵀ"),
+              "18-normals-transformed-by-m-inverse-transpose.png");
+    EXPECT_EQ(slideFileName(11, 21, "Attenuation: 1/(a + b·t + c·t²)"),
+              "12-attenuation-1-a-b-t-c-t-squared.png");
+    EXPECT_EQ(slideFileName(2, 21, "Projection normalization: the cube [-1,1]³"),
+              "03-projection-normalization-the-cube-minus-1-1-cubed.png");
+    EXPECT_EQ(slideFileName(3, 21, "The WebGL -1: the picture is empty"),
+              "04-the-webgl-minus-1-the-picture-is-empty.png");
+    EXPECT_EQ(slideFileName(0, 1, "Specular term: k_s·I_s·max(v·r, 0)^α"),
+              "01-specular-term-k-s-i-s-max-v-r-0-alpha.png");
+    EXPECT_EQ(slideFileName(0, 1, "Blinn-Phong: β, ψ and φ"), "01-blinn-phong-beta-psi-and-phi.png");
+    EXPECT_EQ(slideFileName(0, 1, "Vertices p₀, p₁"), "01-vertices-p0-p1.png");
+    EXPECT_EQ(slideFileName(0, 1, "Éclairage à la main"), "01-eclairage-a-la-main.png");
 }
 
 TEST(Lesson, LoadLessonReadsItsScenesBesideIt) {

@@ -64,8 +64,10 @@ bool isLessonText(std::string_view jsonText);
 Lesson parseLesson(std::string_view jsonText, std::string_view source, const SceneTextReader& readScene);
 
 // The name of step `index` (0-based) of `count` as `shadelab slides` writes it: its number, zero-padded so
-// that sorting the names gives the steps' order, and its title made safe for any file system (lower-case
-// ASCII letters and digits, every other run of bytes one '-', at most 48 bytes): "03-the-view-volume.png".
+// that sorting the names gives the steps' order, and its title made safe for any file system: lower-case
+// ASCII words joined by '-', the lecture's symbols spelled out (src/scene/slide_name.cpp: α "alpha", ⁻¹
+// "inverse", ᵀ "transpose", ² "squared", a minus before a digit "minus"), any other run of bytes one '-', at
+// most 64 bytes cut at a word's end: "03-the-view-volume.png", "18-normals-transformed-by-m-inverse-transpose.png".
 std::string slideFileName(std::size_t index, std::size_t count, std::string_view title);
 
 } // namespace shadelab
