@@ -12,7 +12,7 @@ set(SHADELAB_CORE_SOURCES
   src/scene/camera.cpp src/scene/view.cpp src/scene/outside_view.cpp src/scene/scene.cpp
   src/scene/scene_check.cpp src/scene/scene_limits.cpp src/scene/scene_messages.cpp src/scene/scene_json.cpp
   src/scene/scene_parse.cpp src/scene/scene_write.cpp
-  src/scene/lesson.cpp src/scene/slide_name.cpp
+  src/scene/lesson.cpp src/scene/slide_name.cpp src/scene/point_stages.cpp
   src/shading/lighting.cpp src/shading/ray_cast.cpp src/shading/probe.cpp
   src/image/image.cpp src/image/font.cpp
   src/io/atomic_file.cpp src/io/output_path.cpp src/io/text.cpp
@@ -28,7 +28,7 @@ set(SHADELAB_GL_SOURCES
 # The demo's state, keys and texts and the scene flags (no GL), shared by the window and the page.
 set(SHADELAB_DEMO_STATE_SOURCES
   src/app/demo/demo_state.cpp src/app/demo/demo_camera.cpp src/app/demo/demo_keys.cpp
-  src/app/demo/demo_text.cpp src/app/demo/matrices_text.cpp src/app/demo/scene_flags.cpp
+  src/app/demo/demo_text.cpp src/app/demo/probe_text.cpp src/app/demo/matrices_text.cpp src/app/demo/scene_flags.cpp
   src/app/demo/demo_presets.cpp src/app/demo/demo_edits.cpp src/app/demo/view_explanations.cpp)
 # Drawing the demo's picture (GL), also shared by the window and the page.
 set(SHADELAB_DEMO_DRAW_SOURCES src/app/demo/demo_draw.cpp)

@@ -181,7 +181,8 @@ OutputTarget resolveFolderEntry(const fs::path& dir, const std::string& name, st
                      quoted(path) + " or give another folder");
 }
 
-void refuseStandardOutputAlias(const fs::path& out, std::string_view field, std::string_view carries) {
+void refuseStandardOutputAlias(const fs::path& out, std::string_view field, std::string_view carries,
+                               std::string_view example) {
     const OutputTarget target = resolveOutput(out, field);
     struct stat stdoutStat {};
     const bool stdoutOpen = ::fstat(STDOUT_FILENO, &stdoutStat) == 0;
@@ -202,7 +203,7 @@ void refuseStandardOutputAlias(const fs::path& out, std::string_view field, std:
     const std::string shown = out == "-" ? std::string("-") : quoted(out);
     throw InputError(std::string(field) + ": " + shown + " is standard output, which carries " +
                      std::string(carries) + "; the two would mix: write to a file (" + std::string(field) +
-                     " FILE.png)");
+                     " " + std::string(example) + ")");
 }
 
 bool isSameFile(const fs::path& a, const fs::path& b) {

@@ -23,7 +23,7 @@ using namespace detail;
 namespace {
 
 // A step's own keys; every other key it may carry is a scene key (kSceneKeys) or "subdivisions".
-constexpr std::array<std::string_view, 3> kStepKeys = {"title", "caption", "scene"};
+constexpr std::array<std::string_view, 4> kStepKeys = {"title", "caption", "notes", "scene"};
 
 std::vector<std::string_view> allowedStepKeys() {
     std::vector<std::string_view> keys(kStepKeys.begin(), kStepKeys.end());
@@ -35,7 +35,8 @@ std::vector<std::string_view> allowedStepKeys() {
 
 // Text a person wrote to be drawn on a slide: printable (valid UTF-8 with no control or format character
 // but the caption's line breaks, so that nothing hidden reorders a terminal's line), within its size.
-std::string readText(const Json& value, const std::string& path, std::size_t maxBytes, bool multiline) {
+std::string readText(const Json& value, const std::string& path, std::size_t maxBytes, bool multiline,
+                     int maxLines = kMaxCaptionLines) {
     const std::string& text = readString(value, path);
     if (text.size() > maxBytes)
         fail(path,
@@ -47,9 +48,8 @@ std::string readText(const Json& value, const std::string& path, std::size_t max
         fail(path, std::string("must be printable text") + (multiline ? " (lines broken by \\n)" : "") +
                        ", got " + quotedValue(text) + ": " + unprintable + "; remove it");
     const auto lines = std::count(text.begin(), text.end(), '\n') + 1;
-    if (multiline && lines > kMaxCaptionLines)
-        fail(path,
-             "must be at most " + std::to_string(kMaxCaptionLines) + " lines, got " + std::to_string(lines));
+    if (multiline && lines > maxLines)
+        fail(path, "must be at most " + std::to_string(maxLines) + " lines, got " + std::to_string(lines));
     return text;
 }
 
@@ -229,6 +229,8 @@ LessonStep readStep(const Json& step, const std::string& path, StepFiles& files,
     if (out.title.empty()) fail(keyPath(path, "title"), "must not be empty");
     if (const Json* caption = member(step, "caption"))
         out.caption = readText(*caption, keyPath(path, "caption"), kMaxCaptionBytes, true);
+    if (const Json* notes = member(step, "notes"))
+        out.notes = readText(*notes, keyPath(path, "notes"), kMaxNotesBytes, true, kMaxNotesLines);
     if (const Json* scene = member(step, "scene"))
         base.scene = stepBase(*scene, keyPath(path, "scene"), files, base.bytes, base.file);
     files.countStep(base.bytes + step.dump().size(), path);

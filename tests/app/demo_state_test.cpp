@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <functional>
 #include <map>
 #include <numbers>
@@ -237,7 +239,7 @@ TEST(DemoLesson, StepKeysMoveThroughTheStepsAndRReturnsToTheStep) {
     second.shading = ShadingMode::Toon;
     second.lighting = LightingModel::Phong;
     second.objects[0].subdivisions = 2;
-    lesson->steps = {{"One", "the first", first, "", {}}, {"Two", "", second, "", {}}};
+    lesson->steps = {{"One", "the first", "", first, "", {}}, {"Two", "", "", second, "", {}}};
     DemoState state(Scene{});
     EXPECT_TRUE(state.apply(Command::NextStep));
     EXPECT_NE(state.lastChange().find("no lesson open"), std::string::npos) << state.lastChange();
@@ -1201,6 +1203,30 @@ TEST(DemoProbe, ClickPinsTheProbeAndTheBackgroundRemovesIt) {
         EXPECT_NE(text.find(word), std::string::npos) << word << " in\n" << text;
     EXPECT_FALSE(state.probeAt(2, 2));
     EXPECT_FALSE(state.probe().has_value());
+}
+
+// The point tracer: the probe's text follows the exact point through object, world, camera, clip, NDC and
+// window coordinates, and the window row is the pixel that was clicked (read back from the text).
+TEST(DemoProbe, TheProbeTextTracesThePointToThePixelClicked) {
+    Scene scene;
+    scene.eye = {1.5, 1, 3.5};
+    DemoState state{scene};
+    state.setViewport(300, 200);
+    ASSERT_TRUE(state.probeAt(170.5, 80.5));
+    const std::string text = probeText(state);
+    for (const char* stage : {"object p", "world  α = M·p", "camera β = M_cam·α", "clip   M_proj·β",
+                              "NDC    clip/w", "window x, y (px), depth"})
+        EXPECT_NE(text.find(stage), std::string::npos) << stage << " in\n" << text;
+    const std::size_t window = text.find("window x, y (px), depth");
+    ASSERT_NE(window, std::string::npos);
+    double x = 0, y = 0, depth = 0;
+    ASSERT_EQ(std::sscanf(text.c_str() + window + std::strlen("window x, y (px), depth"), "%lf %lf %lf", &x,
+                          &y, &depth),
+              3)
+        << text;
+    EXPECT_NEAR(x, 170.5, 1e-3);
+    EXPECT_NEAR(y, 80.5, 1e-3);
+    EXPECT_TRUE(depth > 0 && depth < 1) << depth;
 }
 
 // + goes through the scene's work limit (kMaxTrianglesPerFrame), as --subdivisions does: 64 objects at level

@@ -71,8 +71,9 @@ void prepareOutputFolder(const std::filesystem::path& dir, std::string_view fiel
 // standard output carries text (`carries`: "the matrices of --print-matrices"): "-", /dev/stdout,
 // /dev/fd/1, /proc/self/fd/1, another descriptor or a path open on the same file or pipe. The null device
 // is allowed (nothing there can mix).
+// The message's fix names a file like `example`.
 void refuseStandardOutputAlias(const std::filesystem::path& out, std::string_view field,
-                               std::string_view carries);
+                               std::string_view carries, std::string_view example = "FILE.png");
 
 // True when both paths name the same existing file (device and inode, after following links).
 bool isSameFile(const std::filesystem::path& a, const std::filesystem::path& b);

@@ -28,6 +28,7 @@ namespace shadelab {
 struct LessonStep {
     std::string title;   // one line
     std::string caption; // plain text, at most kMaxCaptionLines lines ("" for none)
+    std::string notes;   // the speaker's notes: plain text, never drawn on the slide ("" for none)
     Scene scene;         // as the step is written: its scene with its changes
     std::string file;    // the scene file its scene starts from (its own or an earlier step's), as the
                          // lesson writes it; "" for an inline scene or the defaults
@@ -44,6 +45,8 @@ inline constexpr std::size_t kMaxLessonSteps = 500;
 inline constexpr std::size_t kMaxStepTitleBytes = 120;
 inline constexpr std::size_t kMaxCaptionBytes = 800;
 inline constexpr int kMaxCaptionLines = 8;
+inline constexpr std::size_t kMaxNotesBytes = 8000; // a page of speaker's notes
+inline constexpr int kMaxNotesLines = 100;
 // A lesson's work is bounded as a scene's is (kMaxSceneBytes): its scene files are read and parsed once
 // each, and its steps parse at most four of the largest scenes' text in all, each step counting its whole
 // scene (a step that names a large file parses all of it again). The page fetches at most as much.
@@ -67,7 +70,8 @@ Lesson parseLesson(std::string_view jsonText, std::string_view source, const Sce
 // that sorting the names gives the steps' order, and its title made safe for any file system: lower-case
 // ASCII words joined by '-', the lecture's symbols spelled out (src/scene/slide_name.cpp: α "alpha", ⁻¹
 // "inverse", ᵀ "transpose", ² "squared", a minus before a digit "minus"), any other run of bytes one '-', at
-// most 64 bytes cut at a word's end: "03-the-view-volume.png", "18-normals-transformed-by-m-inverse-transpose.png".
+// most 64 bytes cut at a word's end: "03-the-view-volume.png",
+// "18-normals-transformed-by-m-inverse-transpose.png".
 std::string slideFileName(std::size_t index, std::size_t count, std::string_view title);
 
 } // namespace shadelab

@@ -18,11 +18,13 @@ constexpr std::array kViews = {
                     "error = |I_mode − I_exact| on 0..255, the silhouette eroded by 2 px"},
     ViewExplanation{"split", "two settings of the same scene side by side, a divider between them",
                     "window pixels, one camera for both sides", "left | right, each side's own I"},
-    ViewExplanation{"profile", "the intensity along one row: the mode's, the exact one, and mesh-edge crossings",
+    ViewExplanation{"profile",
+                    "the intensity along one row: the mode's, the exact one, and mesh-edge crossings",
                     "one window row, x from left to right",
                     "I(x) of the mode and of the exact sphere; a kink where an edge crosses"},
-    ViewExplanation{"outside", "the camera itself from an observer: the eye e, u, v, w, the view volume, lights",
-                    "world space (α), seen by a second camera", "M_cam = [u v w e]⁻¹, the volume [l,r]×[b,t]×[f,n]"},
+    ViewExplanation{
+        "outside", "the camera itself from an observer: the eye e, u, v, w, the view volume, lights",
+        "world space (α), seen by a second camera", "M_cam = [u v w e]⁻¹, the volume [l,r]×[b,t]×[f,n]"},
     ViewExplanation{"ndc", "the objects after M_proj·M_cam and the divide by w, in the cube [−1, 1]³",
                     "normalized device coordinates, seen by an observer",
                     "NDC = (x, y, z)/w of M_proj·β; near → z = +1, far → z = −1"},
@@ -38,7 +40,8 @@ constexpr std::array kShadings = {
     ViewExplanation{"toon", "the diffuse term quantized into bands, the highlight cut at a threshold",
                     "camera space per pixel", "bands of max(l·n, 0); spec on or off"},
     ViewExplanation{"exact", "the true sphere ray-cast per pixel: the reference",
-                    "camera space per pixel, the exact normal", "n = (M⁻¹)ᵀ·p_object at the ray's hit, then I(n)"},
+                    "camera space per pixel, the exact normal",
+                    "n = (M⁻¹)ᵀ·p_object at the ray's hit, then I(n)"},
 };
 
 std::size_t viewIndex(ViewKind kind) {

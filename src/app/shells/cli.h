@@ -60,7 +60,7 @@ struct CheckArgs {
     std::string file; // a lesson or a scene
 };
 struct SlidesArgs { // the scene's other flags do not apply to a lesson
-    std::string lesson, outDir;
+    std::string lesson, outDir, deck; // at least one of outDir and deck
     std::optional<std::string> size;
     bool captions = true;
     ContextArgs context;

@@ -63,9 +63,10 @@ int runCheck(const std::filesystem::path& file);
 // must not be the lesson's own folder; every name in it is checked with --out's rules before anything is
 // drawn, and each file is written atomically as its step is done, with a line of progress.
 struct SlidesOptions {
-    std::filesystem::path lesson, outDir;
-    std::optional<std::string> size; // --size WxH for every step; each step's own size without it
-    bool captions = true;            // false: --no-captions
+    std::filesystem::path lesson, outDir;      // outDir empty: no PNG files
+    std::optional<std::filesystem::path> deck; // --deck FILE.html (deck.h)
+    std::optional<std::string> size;           // --size WxH for every step; each step's own size without it
+    bool captions = true;                      // false: --no-captions
     ContextRequest context;
 };
 int runSlides(const SlidesOptions& options);

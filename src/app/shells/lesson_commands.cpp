@@ -7,6 +7,7 @@
 #include "app/demo/demo_state.h"
 #include "app/measure/memory_budget.h"
 #include "app/shells/commands.h"
+#include "app/shells/deck.h"
 #include "shadelab/context/headless.h"
 #include "shadelab/errors.h"
 #include "shadelab/gl/renderer.h"
@@ -156,10 +157,13 @@ int runSlides(const SlidesOptions& options) {
     // plainly elsewhere.
     std::error_code error;
     const fs::path lessonFolder = options.lesson.parent_path().empty() ? "." : options.lesson.parent_path();
-    if (fs::exists(options.outDir, error) && fs::equivalent(options.outDir, lessonFolder, error))
+    const bool files = !options.outDir.empty();
+    if (files && fs::exists(options.outDir, error) && fs::equivalent(options.outDir, lessonFolder, error))
         throw InputError("--out-dir: \"" + printable(options.outDir.string()) +
                          "\" is the lesson's own folder; give a folder for the slides, such as slides");
-    prepareOutputFolder(options.outDir, "--out-dir", names, lessonInputs(options.lesson, lesson));
+    if (files) prepareOutputFolder(options.outDir, "--out-dir", names, lessonInputs(options.lesson, lesson));
+    std::optional<Deck> deck;
+    if (options.deck) deck.emplace(*options.deck, lessonInputs(options.lesson, lesson));
 
     HeadlessRenderer renderer(options.context);
     const std::string folder = printable(options.outDir.string());
@@ -171,11 +175,17 @@ int runSlides(const SlidesOptions& options) {
             const Image band = lessonBandImage(step.title, step.caption, scene.width, scene.height);
             drawing.drawImageOver(band, 0, scene.height - band.height, scene.width, scene.height);
         });
+        if (deck) deck->add(encodePng(picture));
+        if (!files) continue;
         writePng(picture, options.outDir / names[i], /*inFolder=*/true);
         std::printf("slide %zu of %zu: %s\n", i + 1, count, (fs::path(folder) / names[i]).c_str());
         std::fflush(stdout);
     }
-    std::printf("wrote %zu slides in %s\n", count, folder.c_str());
+    if (files) std::printf("wrote %zu slides in %s\n", count, folder.c_str());
+    if (deck) {
+        deck->write(lesson);
+        std::printf("wrote the deck of %zu slides: %s\n", count, printable(options.deck->string()).c_str());
+    }
     return kExitOk;
 }
 

@@ -139,7 +139,12 @@ int run(const app::CheckArgs& check) {
 int run(const app::SlidesArgs& args) {
     app::SlidesOptions slides;
     slides.lesson = args.lesson;
+    if (args.outDir.empty() && args.deck.empty())
+        throw InputError(
+            "slides: nothing to write: give --out-dir DIR (a PNG per step), --deck FILE.html (one "
+            "page of every slide, with the steps' notes), or both");
     slides.outDir = args.outDir;
+    if (!args.deck.empty()) slides.deck = args.deck;
     slides.size = args.size;
     slides.captions = args.captions;
     slides.context = contextOf(args.context);
