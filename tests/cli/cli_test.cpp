@@ -598,6 +598,11 @@ TEST_F(CliTest, SubcommandHelpLeavesOutTheDemoKeys) {
     }
     const Outcome top = shadelab({"--help"});
     EXPECT_NE(top.out.find("Demo keys"), std::string::npos) << top.out;
+    // And the views' table under it, a line per view and shading mode (what it draws, where, the formula).
+    EXPECT_NE(top.out.find("Views (what each shows):\nscene    the objects as the camera sees them; in "),
+              std::string::npos)
+        << top.out;
+    EXPECT_NE(top.out.find("\nndc      the objects after M_proj·M_cam"), std::string::npos) << top.out;
 }
 
 // `bench`'s table carries no colour escapes when it is not written to a terminal.

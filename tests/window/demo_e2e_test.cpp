@@ -13,6 +13,7 @@
 #include <cerrno>
 #include <chrono>
 #include <csignal>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -624,6 +625,96 @@ TEST_F(DemoWindow, PresentationLabelCoversOnlyTheBottomAndF2RemovesIt) {
     EXPECT_FALSE(compareImages(withLabel, rendered, kWindowTolerance).passed) << "no label was drawn";
     demo.window().key("F2");
     EXPECT_TRUE(matches(settledCapture(demo.window(), rendered), rendered, kWindowTolerance, "after_F2"));
+    expectCleanQuit(demo);
+}
+
+// The panel's text, with --present's 1.75× text in a narrow column: Dear ImGui's dark style draws text
+// white and nothing else in the panel near white, and clips what runs past the column at half the window
+// padding beyond where lines wrap. Returns the rightmost text pixel's x over all rows, and where lines wrap
+// (the column less the padding and, when its grab shows, the scroll bar): ImGui's default WindowPadding 8
+// and ScrollbarSize 14 (imgui.cpp, ImGuiStyle()), scaled by the panel's ScaleAllSizes.
+struct PanelTextExtent {
+    int rightmostText = -1, wrapEdge = 0;
+    bool scrollbar = false;
+};
+PanelTextExtent panelTextExtent(const Image& capture, int column, double uiScale) {
+    const int padding = int(8 * uiScale), scrollbar = int(14 * uiScale);
+    PanelTextExtent extent;
+    int grabRows = 0;
+    for (int y = 0; y < capture.height; ++y) {
+        bool grab = false;
+        for (int x = 0; x < column; ++x) {
+            const std::uint8_t* p = capture.pixel(x, y);
+            if (p[0] > 200 && p[1] > 200 && p[2] > 200)
+                extent.rightmostText = std::max(extent.rightmostText, x);
+            // The scroll bar's grab: ImGui's grey 0.31 (79/255).
+            if (x >= column - scrollbar && std::abs(p[0] - 79) < 6 && p[0] == p[1] && p[1] == p[2])
+                grab = true;
+        }
+        grabRows += grab;
+    }
+    extent.scrollbar = grabRows >= 10;
+    extent.wrapEdge = column - padding - (extent.scrollbar ? scrollbar : 0);
+    return extent;
+}
+
+// Presentation mode: --present starts with the panel hidden and the picture the whole window (S saves
+// it at the window's size); C shows the panel, and its text — the switches' rows, the checkbox's label —
+// wraps in the column instead of running past it into ImGui's clip (which cut "(beta" and "diff" off at
+// this size). F2 out of presentation keeps the panel; F2 into it hides it again.
+TEST_F(DemoWindow, PresentingStartsWithoutThePanelAndItsTextWrapsInTheColumn) {
+    constexpr int kW = 1000, kH = 720;
+    constexpr double kPresentScale = 1.75; // demo.cpp: --present's text scale without --ui-scale
+    const int column = std::min(int(420 * kPresentScale), kW / 2); // demo_state.h's panelColumnWidth
+    const fs::path scene = writeScene("scene.json", sceneJson(kW, kH, 3, "phong", "phong"));
+    DemoProcess& demo = startDemo("demo", {scene.string(), "--size", "1000x720", "--present", "--gl-debug"});
+    demo.window().waitForTitle("shadelab — phong shading, phong lighting | level 3 | ");
+    const fs::path stem = demo.screenshot();
+    const Image rendered = readPng(stem.string() + ".png");
+    EXPECT_EQ(rendered.width, kW) << "the picture is not the whole window's width: a panel beside it?";
+    EXPECT_EQ(rendered.height, kH);
+    // The left column is the picture (the label covers only the bottom).
+    const int top = kH * 3 / 5;
+    Image capture;
+    EXPECT_TRUE(pollUntil([&] {
+        capture = demo.window().capture();
+        return compareImages(crop(capture, 0, 0, column, top), crop(rendered, 0, 0, column, top),
+                             kWindowTolerance)
+            .passed;
+    })) << "the left of the window is not the picture";
+
+    demo.window().key("c");
+    Image previous;
+    const bool panelShown = pollUntil([&] {
+        previous = std::exchange(capture, demo.window().capture());
+        return capture.rgba == previous.rgba &&
+               !compareImages(crop(capture, 0, 0, column, top), crop(rendered, 0, 0, column, top),
+                              kWindowTolerance)
+                    .passed;
+    });
+    ASSERT_TRUE(panelShown) << "C showed no panel within " << kWaitText;
+    const PanelTextExtent text = panelTextExtent(crop(capture, 0, 0, column, kH), column, kPresentScale);
+    std::printf("panel: text reaches x = %d, lines wrap at %d (column %d, scroll bar %s)\n",
+                text.rightmostText, text.wrapEdge, column, text.scrollbar ? "shown" : "none");
+    EXPECT_GT(text.rightmostText, column / 2) << "no panel text found";
+    // One pixel of the glyphs' antialiasing past the wrap edge; a clipped line reaches half the padding.
+    EXPECT_LE(text.rightmostText, text.wrapEdge + 1) << "text runs past where the column's lines wrap";
+    if (HasFailure()) {
+        fs::create_directories(fs::current_path() / "window-failures");
+        writePng(capture, fs::current_path() / "window-failures" / (testName() + ".png"));
+    }
+
+    // F2 ends presenting and keeps the panel (S's picture is the area beside it); F2 again hides it.
+    demo.window().key("F2");
+    EXPECT_LT(readPng(demo.screenshot().string() + ".png").width, kW - column / 2)
+        << "F2 out of presentation hid the panel";
+    demo.window().key("F2");
+    EXPECT_TRUE(pollUntil([&] {
+        const Image now = demo.window().capture();
+        return compareImages(crop(now, 0, 0, column, top), crop(rendered, 0, 0, column, top),
+                             kWindowTolerance)
+            .passed;
+    })) << "F2 into presentation did not hide the panel";
     expectCleanQuit(demo);
 }
 

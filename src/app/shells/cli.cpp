@@ -12,6 +12,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/demo/demo_state.h"
+#include "app/demo/view_explanations.h"
 #include "app/shells/cli_hints.h"
 #include "shadelab/geometry/sphere.h"
 #include "shadelab/io/text.h"
@@ -67,7 +68,8 @@ struct DemoCommand {
             ->capture_default_str(); // checked in main.cpp, with a message as helpful as --out's
         cli.add_flag("--hide-panel", demo.hidePanel, "Start with the control panel hidden (C shows it)");
         cli.add_flag("--present", demo.present,
-                     "For a class: the large label of mode, lighting, level and exponent (F2), larger text");
+                     "For a class: the large label of mode, lighting, level and exponent (F2), larger "
+                     "text, the panel hidden (C shows it)");
         cli.add_option("--ui-scale", demo.uiScale, "Scale of the panel, help and label text, 0.5..4")
             ->check(CLI::Range(0.5, 4.0));
         cli.add_flag("--gl-debug", demo.glDebug, "Ask for a KHR_debug context and print every GL message");
@@ -274,7 +276,7 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
     CLI::App* const slidesApp = slides.add(cli);
 
     // Set last: subcommands made before it would inherit it, and their --help is not about the demo's keys.
-    cli.footer("Demo keys:\n" + keyHelpText());
+    cli.footer("Demo keys:\n" + keyHelpText() + "\nViews (what each shows):\n" + viewHelpText());
     try {
         cli.parse(argc, argv);
     } catch (const CLI::Success& e) {

@@ -1,7 +1,6 @@
 // The demo window: every mode on a key, an orbit camera, a live control panel. It draws through the same
 // Renderer and Scene as `shadelab render`, so a screenshot (S) is the picture `render` gives for the
 // scene JSON saved beside it.
-#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <exception>
@@ -11,18 +10,15 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
-#include <system_error>
 #include <thread>
-#include <tuple>
 
-#include <fcntl.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include "app/demo/demo_draw.h"
 #include "app/demo/demo_state.h"
 #include "app/shells/commands.h"
 #include "app/shells/panel.h"
+#include "app/shells/screenshot_files.h"
 #include "shadelab/context/window.h"
 #include "shadelab/errors.h"
 #include "shadelab/gl/loader.h"
@@ -48,54 +44,6 @@ private:
     double average_ = 0;
 };
 
-// A new file in `folder` holding `bytes`, flushed to disk: mkstemp's O_CREAT | O_EXCL and unpredictable
-// name, so nothing planted in the folder (a link, a FIFO) is opened; the mode a new file gets from umask.
-std::string writeTemporary(const std::filesystem::path& folder, std::string_view bytes) {
-    std::string path = (folder / ".shadelab-XXXXXX").string();
-    const int fd = ::mkstemp(path.data());
-    if (fd < 0)
-        throw std::runtime_error("cannot create a file in " + folder.string() + ": " +
-                                 std::generic_category().message(errno));
-    const mode_t mask = ::umask(0);
-    ::umask(mask);
-    bool written = ::fchmod(fd, 0666 & ~mask) == 0;
-    for (std::size_t done = 0; written && done < bytes.size();) {
-        const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
-        if (n < 0 && errno == EINTR) continue;
-        written = n > 0;
-        if (written) done += std::size_t(n);
-    }
-    written = written && ::fsync(fd) == 0;
-    const int error = errno;
-    if (::close(fd) != 0 || !written) {
-        ::unlink(path.c_str());
-        throw std::runtime_error(path + ": " + std::generic_category().message(written ? errno : error));
-    }
-    return path;
-}
-
-// How a screenshot's final name was claimed for its temporary file.
-enum class Claim {
-    Taken,   // something has the name already: try the next number
-    Linked,  // a hard link to the temporary now has the name (link() never replaces)
-    Reserved // no hard links on this file system: an empty file made with O_CREAT | O_EXCL holds the name,
-             // and the temporary is renamed over it
-};
-
-Claim claimName(const std::string& temp, const std::string& name) {
-    if (::link(temp.c_str(), name.c_str()) == 0) return Claim::Linked;
-    if (errno == EEXIST) return Claim::Taken;
-    if (errno != EPERM && errno != EOPNOTSUPP && errno != EXDEV && errno != EMLINK && errno != ENOSYS)
-        throw std::runtime_error(name + ": " + std::generic_category().message(errno));
-    const int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600);
-    if (fd < 0) {
-        if (errno == EEXIST) return Claim::Taken;
-        throw std::runtime_error(name + ": " + std::generic_category().message(errno));
-    }
-    ::close(fd);
-    return Claim::Reserved;
-}
-
 class Demo {
 public:
     Demo(const Scene& scene, const DemoOptions& options)
@@ -105,8 +53,10 @@ public:
                    : options.present   ? 1.75
                                        : 1.0),
           panel_(window_, uiScale_) {
-        state_.showPanel = !options.hidePanel;
+        // Presenting starts with the whole window for the picture (C shows the panel).
+        state_.showPanel = !options.hidePanel && !options.present;
         state_.presenting = options.present;
+        panelBeforePresenting_ = !options.hidePanel;
         if (options.lesson) state_.openLesson(options.lesson);
         // Specialized to the lights only: the panel's colour and shininess sliders then recompile nothing
         // (a program per value would cost ~50 ms on llvmpipe at every step of a slider).
@@ -240,7 +190,12 @@ private:
         try {
             if (panel_.wantsKeyboard()) return;
             const auto command = commandForKey(key);
-            if (!command || state_.apply(*command)) return;
+            if (!command) return;
+            const bool wasPresenting = state_.presenting;
+            if (state_.apply(*command)) {
+                if (state_.presenting != wasPresenting) presentingChanged();
+                return;
+            }
             if (*command == Command::Quit) window_.requestClose();
             if (*command == Command::ToggleFullScreen) window_.toggleFullScreen();
             if (*command == Command::Screenshot) saveScreenshot();
@@ -249,32 +204,15 @@ private:
         }
     }
 
-    // Links the written temporaries to the first shadelab-NNN whose .json and .png are both free and
-    // removes the temporaries; returns the stem. Both names are claimed before either is given content (the
-    // JSON first, the PNG last), so a reader that sees the PNG finds its scene beside it.
-    [[nodiscard]] std::string claimFreeStem(const std::string& tempJson, const std::string& tempPng) {
-        for (int tries = 0; tries < 100000; ++tries) {
-            char name[32];
-            std::snprintf(name, sizeof name, "shadelab-%03d", ++screenshots_);
-            std::string stem = (options_.screenshotDir / name).string();
-            const std::string json = stem + ".json", png = stem + ".png";
-            const Claim jsonClaim = claimName(tempJson, json);
-            if (jsonClaim == Claim::Taken) continue;
-            const Claim pngClaim = claimName(tempPng, png);
-            if (pngClaim == Claim::Taken) {
-                ::unlink(json.c_str()); // our own link or placeholder
-                continue;
-            }
-            for (const auto& [claim, temp, target] :
-                 {std::tuple{jsonClaim, &tempJson, &json}, std::tuple{pngClaim, &tempPng, &png}}) {
-                if (claim == Claim::Linked)
-                    ::unlink(temp->c_str());
-                else if (::rename(temp->c_str(), target->c_str()) != 0)
-                    throw std::runtime_error(*target + ": " + std::generic_category().message(errno));
-            }
-            return stem;
+    // F2 into presentation hides the panel, so the picture has the whole window for the class; F2 out of
+    // it brings the panel back if it was shown before (or was shown with C meanwhile).
+    void presentingChanged() {
+        if (state_.presenting) {
+            panelBeforePresenting_ = state_.showPanel;
+            state_.showPanel = false;
+        } else {
+            state_.showPanel = state_.showPanel || panelBeforePresenting_;
         }
-        throw std::runtime_error("no free shadelab-NNN name in " + options_.screenshotDir.string());
     }
 
     // The picture and its scene, each written to a temporary file of a name nobody can predict (mkstemp:
@@ -319,7 +257,7 @@ private:
             gl::bindDefaultFramebuffer();
             tempJson = writeTemporary(options_.screenshotDir, sceneToJson(scene));
             tempPng = writeTemporary(options_.screenshotDir, encodePng(image));
-            const std::string stem = claimFreeStem(tempJson, tempPng);
+            const std::string stem = claimFreeStem(options_.screenshotDir, screenshots_, tempJson, tempPng);
             std::printf("%s.png\n", stem.c_str());
             std::fflush(stdout);
         } catch (const std::bad_alloc&) {
@@ -361,6 +299,7 @@ private:
     Clock::time_point nextTexts_;
     FrameTimer timer_;
     int screenshots_ = 0;
+    bool panelBeforePresenting_ = true; // whether the panel was shown when presentation mode began
 };
 
 constexpr double kDisplayAnswerSeconds = 5;

@@ -11,12 +11,42 @@
 #include <imgui_impl_opengl3.h>
 
 #include "app/demo/matrices_text.h"
+#include "app/demo/view_explanations.h"
+#include "app/shells/panel_font.h"
 #include "shadelab/context/window.h"
 #include "shadelab/errors.h"
 #include "shadelab/gl/loader.h"
 
 namespace shadelab::app {
 namespace {
+
+// The widest label drawn beside a field: the fields leave room for it, so no label runs past the column.
+constexpr const char* kWidestLabel = "near (n = −near)";
+
+// ImGui lays a widget's label on one line and clips it at the window's edge; in the panel's column (narrow
+// beside a wide picture, with --present's large text) they wrap instead, as its text does.
+
+// The next item, `width` wide, goes on the current line if it fits in the column, else on the next.
+void sameLineIfFits(float width) {
+    const float end = ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + width;
+    if (end <= ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x) ImGui::SameLine();
+}
+
+// A radio button after the one before it, on the same line while the row fits.
+bool radio(const char* label, bool active) {
+    sameLineIfFits(ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x +
+                   ImGui::CalcTextSize(label).x);
+    return ImGui::RadioButton(label, active);
+}
+
+// A checkbox whose label wraps in the column (its lines start where the first one does).
+bool wrappedCheckbox(const char* id, const char* label, bool* value) {
+    const bool changed = ImGui::Checkbox(id, value);
+    ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextUnformatted(label);
+    return changed;
+}
 
 // ImGui edits floats; the scene is double. Edits a colour in place, clamped to >= 0 (DESIGN §4).
 bool colorEdit(const char* label, glm::dvec3& color) {
@@ -67,7 +97,7 @@ void lightControls(Light& light, int index) {
         if (light.type == LightType::Point || light.type == LightType::Spot) {
             glm::dvec3 a = light.attenuation;
             // The formula on a line of its own: beside the three fields the label wrapped.
-            ImGui::TextUnformatted("attenuation 1 / (a + b t + c t^2): a b c");
+            ImGui::TextUnformatted("attenuation 1/(a + b·t + c·t²): a b c");
             if (dragVec3("##attenuation", a, 0.01f)) {
                 a = glm::max(a, glm::dvec3(0)); // DESIGN §3: a, b, c >= 0 with a positive sum
                 if (a.x + a.y + a.z > 0) light.attenuation = a;
@@ -105,8 +135,8 @@ void viewVolumeControls(DemoState& state, std::string& refusal) {
         drag("bottom b", p.bottom, 0.01f, -100, 100, ImGuiSliderFlags_None);
         drag("top t", p.top, 0.01f, -100, 100, ImGuiSliderFlags_None);
     }
-    drag("near (n = -near)", p.near, float(p.near) * 0.01f, 0.001f, 1000, ImGuiSliderFlags_None);
-    drag("far (f = -far)", p.far, float(p.far) * 0.01f, 0.001f, 10000, ImGuiSliderFlags_None);
+    drag("near (n = −near)", p.near, float(p.near) * 0.01f, 0.001f, 1000, ImGuiSliderFlags_None);
+    drag("far (f = −far)", p.far, float(p.far) * 0.01f, 0.001f, 10000, ImGuiSliderFlags_None);
     if (p != before) {
         try {
             state.editViewVolume(p);
@@ -116,6 +146,13 @@ void viewVolumeControls(DemoState& state, std::string& refusal) {
         }
     }
     if (!refusal.empty()) ImGui::TextColored({1.0f, 0.5f, 0.4f, 1.0f}, "%s", refusal.c_str());
+}
+
+// A caption's lines are broken for the slide's band, wider than the panel's column: here they are one
+// paragraph, wrapped to the column (a line break and the wrap would leave short ragged lines).
+std::string reflowed(std::string text) {
+    std::replace(text.begin(), text.end(), '\n', ' ');
+    return text;
 }
 
 } // namespace
@@ -132,16 +169,25 @@ void lessonControls(DemoState& state) {
     if (ImGui::ArrowButton("next step (PgDn)", ImGuiDir_Right)) state.apply(Command::NextStep);
     const LessonStep& step = lesson.steps[state.step()];
     ImGui::TextUnformatted(step.title.c_str());
-    if (!step.caption.empty()) ImGui::TextUnformatted(step.caption.c_str());
+    if (!step.caption.empty()) ImGui::TextUnformatted(reflowed(step.caption).c_str());
     ImGui::Separator();
 }
 
 Panel::Panel(Window& window, double uiScale) : api_(window.api()) {
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
-    ImGui::GetIO().IniFilename = nullptr; // no imgui.ini left in the user's folder
-    ImGui::GetIO().FontGlobalScale = float(uiScale);
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr; // no imgui.ini left in the user's folder
+    try {
+        // The first font added is ImGui's default; rasterized at the scaled size (sharp), where
+        // FontGlobalScale would magnify a small one.
+        addPanelFont(*io.Fonts, uiScale);
+    } catch (...) {
+        ImGui::DestroyContext();
+        throw;
+    }
     ImGui::StyleColorsDark();
+    ImGui::GetStyle().ScaleAllSizes(float(uiScale)); // padding, spacing and scroll bars grow with the text
     ImGui_ImplGlfw_InitForOpenGL(static_cast<GLFWwindow*>(window.nativeHandle()), true);
     ImGui_ImplOpenGL3_Init(window.api() == Api::Gl ? "#version 330 core" : "#version 300 es");
 }
@@ -165,22 +211,21 @@ namespace {
 // matrix (U: WebGL's, or the lecture's before its -1, everything clipped) and what transforms normals
 // (J: the right matrix, or M itself, the lecture's wrong one).
 void lectureSwitches(Scene& scene) {
+    ImGui::AlignTextToFramePadding();
     ImGui::TextUnformatted("term (K):");
-    for (const LightingTerm term : kLightingTerms) {
-        ImGui::SameLine();
-        if (ImGui::RadioButton(std::string(toString(term)).c_str(), scene.term == term)) scene.term = term;
-    }
+    for (const LightingTerm term : kLightingTerms)
+        if (radio(std::string(toString(term)).c_str(), scene.term == term)) scene.term = term;
+    ImGui::AlignTextToFramePadding();
     ImGui::TextUnformatted("perspective matrix (U):");
     for (const PerspectiveMatrix matrix : kPerspectiveMatrices) {
-        ImGui::SameLine();
-        const char* label = matrix == PerspectiveMatrix::Unnegated ? "unnegated" : "WebGL (-1)";
-        if (ImGui::RadioButton(label, scene.perspectiveMatrix == matrix)) scene.perspectiveMatrix = matrix;
+        const char* label = matrix == PerspectiveMatrix::Unnegated ? "unnegated" : "WebGL (−1)";
+        if (radio(label, scene.perspectiveMatrix == matrix)) scene.perspectiveMatrix = matrix;
     }
+    ImGui::AlignTextToFramePadding();
     ImGui::TextUnformatted("normals by (J):");
     for (const NormalMatrixRule rule : kNormalMatrixRules) {
-        ImGui::SameLine();
-        const char* label = rule == NormalMatrixRule::Model ? "M (wrong)" : "(M^-1)^T";
-        if (ImGui::RadioButton(label, scene.normalMatrix == rule)) scene.normalMatrix = rule;
+        const char* label = rule == NormalMatrixRule::Model ? "M (wrong)" : "(M⁻¹)ᵀ";
+        if (radio(label, scene.normalMatrix == rule)) scene.normalMatrix = rule;
     }
 }
 
@@ -200,34 +245,6 @@ void materialSection(DemoState& state) {
     glm::vec3 scale(state.scene().objects[*state.shownObject()].scale);
     if (ImGui::DragFloat3("scale x y z", &scale.x, 0.01f, 0.1f, 4.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp))
         state.editScale(glm::dvec3(scale));
-}
-
-// The keys, centred and readable in any window: at most the window less a margin, lines wrapped to its
-// width, and a scroll bar when the window is too short for all of it.
-void helpWindow() {
-    static const std::vector<std::pair<std::string, std::string>> kRows = keyHelpRows(); // made once
-    const ImVec2 display = ImGui::GetIO().DisplaySize;
-    const float width = std::min(640.0f, std::max(120.0f, display.x - 16));
-    ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Always, {0.5f, 0.5f});
-    ImGui::SetNextWindowSizeConstraints({width, 0}, {width, std::max(60.0f, display.y - 16)});
-    ImGui::SetNextWindowSize({width, 0}, ImGuiCond_Always);
-    // Opaque (the panel's text must not show through), and a table: a description that wraps stays in its
-    // column instead of running back under the keys.
-    ImGui::SetNextWindowBgAlpha(1.0f);
-    ImGui::Begin("keys", nullptr, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoResize);
-    if (ImGui::BeginTable("key table", 2, ImGuiTableFlags_SizingFixedFit)) {
-        ImGui::TableSetupColumn("key", ImGuiTableColumnFlags_WidthFixed);
-        ImGui::TableSetupColumn("action", ImGuiTableColumnFlags_WidthStretch);
-        for (const auto& [keys, action] : kRows) {
-            ImGui::TableNextRow();
-            ImGui::TableNextColumn();
-            ImGui::TextUnformatted(keys.c_str());
-            ImGui::TableNextColumn();
-            ImGui::TextWrapped("%s", action.c_str());
-        }
-        ImGui::EndTable();
-    }
-    ImGui::End();
 }
 
 } // namespace
@@ -259,27 +276,34 @@ void Panel::controlsWindow(DemoState& state, const std::string& status, int colu
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowPos({0, 0}, ImGuiCond_Always);
     ImGui::SetNextWindowSize({float(columnWidth), display.y}, ImGuiCond_Always);
-    ImGui::Begin("shadelab controls (C hides, H helps)", nullptr,
-                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    // No title bar (a bar cannot wrap): its words are the first line, which can.
+    ImGui::Begin("controls", nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                     ImGuiWindowFlags_NoTitleBar);
     ImGui::PushTextWrapPos(0.0f);
+    // Fields end where the widest label still fits beside them.
+    ImGui::PushItemWidth(-(ImGui::CalcTextSize(kWidestLabel).x + ImGui::GetStyle().ItemInnerSpacing.x));
+    ImGui::TextDisabled("C hides this panel, H shows the keys");
     if (state.lesson() != nullptr) lessonControls(state);
     ImGui::TextUnformatted(status.c_str());
-    ImGui::Checkbox("B keeps the highlight size (beta = 4 alpha)", &state.matchHighlight);
+    wrappedCheckbox("##match highlight", "B keeps the highlight size (β = 4α)", &state.matchHighlight);
     lectureSwitches(scene);
+    if (ImGui::CollapsingHeader("what you are seeing", ImGuiTreeNodeFlags_DefaultOpen))
+        ImGui::TextUnformatted(whatYouAreSeeing(state.drawn()).c_str());
     if (!scene.objects.empty() && ImGui::CollapsingHeader("material", ImGuiTreeNodeFlags_DefaultOpen))
         materialSection(state);
-    if (ImGui::CollapsingHeader("view volume (fovy or l r b t, near, far)"))
-        viewVolumeControls(state, volumeRefusal_);
-    if (ImGui::CollapsingHeader("matrices (e u v w, M_cam, M_proj, M, N)")) matricesSection(state);
+    if (ImGui::CollapsingHeader("view volume")) viewVolumeControls(state, volumeRefusal_);
+    if (ImGui::CollapsingHeader("matrices")) matricesSection(state);
     if (ImGui::CollapsingHeader("lights"))
         for (std::size_t i = 0; i < scene.lights.size(); ++i) lightControls(scene.lights[i], int(i));
-    if (ImGui::CollapsingHeader("probe (click the sphere)", ImGuiTreeNodeFlags_DefaultOpen))
+    if (ImGui::CollapsingHeader("probe (click an object)", ImGuiTreeNodeFlags_DefaultOpen))
         probeSection(state);
     if (ImGui::CollapsingHeader("toon")) {
         int bands = scene.toonBands;
         if (ImGui::SliderInt("bands", &bands, kMinToonBands, kMaxToonBands))
             scene.toonBands = std::clamp(bands, kMinToonBands, kMaxToonBands);
     }
+    ImGui::PopItemWidth();
     ImGui::PopTextWrapPos();
     ImGui::End();
 }

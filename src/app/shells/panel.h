@@ -49,4 +49,8 @@ private:
     std::string probeText_;
 };
 
+// The help overlay (H), drawn inside Panel::draw's frame: the key table and the views' table
+// (panel_help.cpp).
+void helpWindow();
+
 } // namespace shadelab::app
