@@ -246,10 +246,7 @@ void Views::drawHeatmap(const Scene& scene, int width, int height, int x, unsign
 void assignSplitSide(Scene& out, const Scene& scene, const SplitSide& side) {
     out = scene;
     out.view = View{};
-    if (side.shading) out.shading = *side.shading;
-    if (side.lighting) out.lighting = *side.lighting;
-    if (side.level)
-        for (SceneObject& o : out.objects) o.subdivisions = *side.level;
+    applySplitSideValues(out, side);
     if (side.view) {
         out.view.kind = *side.view;
         out.view.observer = scene.view.observer;

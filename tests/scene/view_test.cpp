@@ -13,6 +13,16 @@
 namespace shadelab {
 namespace {
 
+// A side that sets only these (the rest the scene's own).
+SplitSide side(std::optional<ShadingMode> shading, std::optional<LightingModel> lighting,
+               std::optional<int> level) {
+    SplitSide out;
+    out.shading = shading;
+    out.lighting = lighting;
+    out.level = level;
+    return out;
+}
+
 View parsed(std::string_view text) {
     const ViewParse p = parseView(text);
     EXPECT_TRUE(p.view) << text << ": " << p.error;
@@ -26,27 +36,25 @@ TEST(ViewSpelling, TheIssuesExamplesReadAsMeant) {
 
     const View modes = parsed("split:gouraud,phong");
     EXPECT_EQ(modes.kind, ViewKind::Split);
-    EXPECT_EQ(modes.left, (SplitSide{ShadingMode::Gouraud, std::nullopt, std::nullopt, std::nullopt}));
-    EXPECT_EQ(modes.right, (SplitSide{ShadingMode::Phong, std::nullopt, std::nullopt, std::nullopt}));
+    EXPECT_EQ(modes.left, side(ShadingMode::Gouraud, std::nullopt, std::nullopt));
+    EXPECT_EQ(modes.right, side(ShadingMode::Phong, std::nullopt, std::nullopt));
 
     const View levels = parsed("split:phong@4,phong@6");
-    EXPECT_EQ(levels.left, (SplitSide{ShadingMode::Phong, std::nullopt, 4, std::nullopt}));
-    EXPECT_EQ(levels.right, (SplitSide{ShadingMode::Phong, std::nullopt, 6, std::nullopt}));
+    EXPECT_EQ(levels.left, side(ShadingMode::Phong, std::nullopt, 4));
+    EXPECT_EQ(levels.right, side(ShadingMode::Phong, std::nullopt, 6));
 
     // "phong" beside "blinn-phong" is the lighting model: the split compares the two lighting models.
     const View lighting = parsed("split:phong,blinn-phong");
-    EXPECT_EQ(lighting.left, (SplitSide{std::nullopt, LightingModel::Phong, std::nullopt, std::nullopt}));
-    EXPECT_EQ(lighting.right,
-              (SplitSide{std::nullopt, LightingModel::BlinnPhong, std::nullopt, std::nullopt}));
+    EXPECT_EQ(lighting.left, side(std::nullopt, LightingModel::Phong, std::nullopt));
+    EXPECT_EQ(lighting.right, side(std::nullopt, LightingModel::BlinnPhong, std::nullopt));
 
     // ... but a name that is only a shading mode stays one, and shading/lighting names both.
     const View mixed = parsed("split:gouraud,blinn-phong");
-    EXPECT_EQ(mixed.left, (SplitSide{ShadingMode::Gouraud, std::nullopt, std::nullopt, std::nullopt}));
-    EXPECT_EQ(mixed.right, (SplitSide{std::nullopt, LightingModel::BlinnPhong, std::nullopt, std::nullopt}));
+    EXPECT_EQ(mixed.left, side(ShadingMode::Gouraud, std::nullopt, std::nullopt));
+    EXPECT_EQ(mixed.right, side(std::nullopt, LightingModel::BlinnPhong, std::nullopt));
     const View both = parsed("split:phong/phong@5,exact/blinn-phong");
-    EXPECT_EQ(both.left, (SplitSide{ShadingMode::Phong, LightingModel::Phong, 5, std::nullopt}));
-    EXPECT_EQ(both.right,
-              (SplitSide{ShadingMode::Exact, LightingModel::BlinnPhong, std::nullopt, std::nullopt}));
+    EXPECT_EQ(both.left, side(ShadingMode::Phong, LightingModel::Phong, 5));
+    EXPECT_EQ(both.right, side(ShadingMode::Exact, LightingModel::BlinnPhong, std::nullopt));
     EXPECT_EQ(parsed("split:@3,@7").left.level, 3);
 
     // The camera's picture beside the outside or NDC view of the scene.
@@ -59,14 +67,78 @@ TEST(ViewSpelling, TheIssuesExamplesReadAsMeant) {
 }
 
 TEST(ViewSpelling, EveryParsedViewWritesBackToItself) {
-    for (const char* text : {"scene", "error", "profile", "split:gouraud,phong", "split:phong@4,phong@6",
-                             "split:phong,blinn-phong", "split:gouraud,blinn-phong",
-                             "split:flat/phong@2,exact", "split:@3,@7", "split:toon,exact", "outside", "ndc",
-                             "split:scene,outside", "split:phong,ndc", "split:outside,ndc"}) {
+    for (const char* text : {"scene",
+                             "error",
+                             "profile",
+                             "split:gouraud,phong",
+                             "split:phong@4,phong@6",
+                             "split:phong,blinn-phong",
+                             "split:gouraud,blinn-phong",
+                             "split:flat/phong@2,exact",
+                             "split:@3,@7",
+                             "split:toon,exact",
+                             "outside",
+                             "ndc",
+                             "split:scene,outside",
+                             "split:phong,ndc",
+                             "split:outside,ndc",
+                             "split:phong{shininess=8},phong{shininess=150}",
+                             "side-by-side:phong{shininess=8},phong{shininess=150}",
+                             "split:phong{normal_matrix=model},phong{normal_matrix=inverse-transpose}",
+                             "side-by-side:gouraud@3{term=specular,diffuse=0.7 0.2 0.2},phong/phong@5",
+                             "split:{ambient=0.25},{specular=0,shininess=2.5}",
+                             "side-by-side:scene,outside"}) {
         const View view = parsed(text);
         EXPECT_EQ(toString(view), text);
         EXPECT_EQ(parsed(toString(view)), view) << text;
     }
+}
+
+// A side's settings: the term, the normal matrix and every object's material values, applied over the
+// scene's own; side-by-side is the same split laid out in two halves.
+TEST(ViewSpelling, ASideCarriesMaterialTermAndNormalMatrix) {
+    const View shininess = parsed("side-by-side:phong{shininess=8},phong{ shininess = 150 }");
+    EXPECT_EQ(shininess.kind, ViewKind::Split);
+    EXPECT_EQ(shininess.layout, SplitLayout::SideBySide);
+    EXPECT_EQ(shininess.left.shading, ShadingMode::Phong);
+    EXPECT_EQ(shininess.left.shininess, 8.0);
+    EXPECT_EQ(shininess.right.shininess, 150.0);
+    EXPECT_EQ(parsed("split:phong{shininess=8},phong{shininess=150}").layout, SplitLayout::Divider);
+
+    const View settings = parsed("split:gouraud@2{term=diffuse, normal_matrix=model, diffuse=0.5 0.25 1, "
+                                 "specular=0.5, ambient=0},exact");
+    const SplitSide& left = settings.left;
+    EXPECT_EQ(left.term, LightingTerm::Diffuse);
+    EXPECT_EQ(left.normalMatrix, NormalMatrixRule::Model);
+    EXPECT_EQ(left.diffuse, glm::dvec3(0.5, 0.25, 1));
+    EXPECT_EQ(left.specular, glm::dvec3(0.5));
+    EXPECT_EQ(left.ambient, glm::dvec3(0));
+    EXPECT_EQ(left.level, 2);
+
+    // Applied to every object, over the scene's values; what a side leaves unset stays the scene's.
+    Scene scene;
+    scene.objects.push_back(scene.objects[0]);
+    scene.objects[1].material.shininess = 64;
+    Scene applied = scene;
+    applySplitSideValues(applied, left);
+    EXPECT_EQ(applied.shading, ShadingMode::Gouraud);
+    EXPECT_EQ(applied.term, LightingTerm::Diffuse);
+    EXPECT_EQ(applied.normalMatrix, NormalMatrixRule::Model);
+    EXPECT_EQ(applied.lighting, scene.lighting);
+    for (const SceneObject& object : applied.objects) {
+        EXPECT_EQ(object.subdivisions, 2);
+        EXPECT_EQ(object.material.diffuse, glm::dvec3(0.5, 0.25, 1));
+        EXPECT_EQ(object.material.specular, glm::dvec3(0.5));
+    }
+    EXPECT_EQ(applied.objects[1].material.shininess, 64) << "unset: the object's own";
+    // Sides that differ only in a setting are two different sides.
+    EXPECT_TRUE(parseView("split:phong{term=ambient},phong").view.has_value());
+    // In a scene file, the settings' commas are the side's, not the split's.
+    Scene read =
+        parseScene(R"({"view": "side-by-side:phong{shininess=8,term=specular},phong{shininess=150}"})");
+    EXPECT_EQ(read.view.layout, SplitLayout::SideBySide);
+    EXPECT_EQ(read.view.left.term, LightingTerm::Specular);
+    EXPECT_EQ(parseScene(sceneToJson(read)).view, read.view);
 }
 
 TEST(ViewSpelling, RefusalsSayWhatIsWrongAndWhatIsExpected) {
@@ -75,12 +147,26 @@ TEST(ViewSpelling, RefusalsSayWhatIsWrongAndWhatIsExpected) {
         const char* says;
     };
     for (const Case& c :
-         {Case{"errors", "expected scene, error, profile, outside, ndc or split:A,B"},
+         {Case{"errors", "expected scene, error, profile, outside, ndc, split:A,B or side-by-side:A,B"},
+          Case{"split:phong{shininess=0.5},phong", "shininess in \"shininess=0.5\" must be a number >= 1"},
+          Case{"split:phong{shininess=nan},phong", "must be a number >= 1"},
+          Case{"split:phong{shine=8},phong", "unknown setting \"shine\""},
+          Case{"split:phong{shininess},phong", "is key=value"},
+          Case{"split:phong{term=glossy},phong", "term in \"term=glossy\" must be all, ambient"},
+          Case{"split:phong{normal_matrix=m},phong", "must be inverse-transpose or model"},
+          Case{"split:phong{diffuse=1 2},phong",
+               "diffuse in \"diffuse=1 2\" must be a grey or three numbers"},
+          Case{"split:phong{diffuse=-1},phong", "must be a grey or three numbers >= 0"},
+          Case{"split:phong{shininess=8,shininess=9},phong", "\"shininess\" is set twice"},
+          Case{"split:phong{shininess=8}x,phong", "one {…} at its end"},
+          Case{"split:phong{shininess=8},phong{shininess=8}", "both sides of the split are the same"},
           Case{"split:phong", "two sides separated by one comma"},
           Case{"split:a,b,c", "two sides separated by one comma"},
           Case{"split:phong,phongg", "unknown shading \"phongg\""},
-          Case{"split:phong/blin,phong", "unknown lighting \"blin\""}, Case{"split:phong@11,phong", "0..10"},
-          Case{"split:phong@x,phong", "0..10"}, Case{"split:phong@-1,phong", "0..10"},
+          Case{"split:phong/blin,phong", "unknown lighting \"blin\""},
+          Case{"split:phong@11,phong", "0..10"},
+          Case{"split:phong@x,phong", "0..10"},
+          Case{"split:phong@-1,phong", "0..10"},
           Case{"split:,phong", "a split side is empty"},
           Case{"split:phong,phong", "both sides of the split are the same"},
           Case{"split:outside,outside", "both sides of the split are the same"},

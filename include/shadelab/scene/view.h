@@ -5,13 +5,19 @@
 // drawn into the GL picture itself (src/gl/views.cpp), so a headless render carries them.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
 
+#include <glm/glm.hpp>
+
+#include "shadelab/scene/camera.h"
 #include "shadelab/shading/lighting.h"
 
 namespace shadelab {
+
+struct Scene;
 
 enum class ViewKind {
     Scene,   // "scene": the scene as it is
@@ -21,6 +27,17 @@ enum class ViewKind {
     Outside, // "outside": the scene from an observer: the eye, u, v, w, the view volume, the lights
     Ndc, // "ndc": the objects after M_proj·M_cam and the divide, in the cube [−1, 1]³, from an observer
 };
+// Every view's one spelling, in the order the help lists them ("split" takes its sides: "split:A,B").
+struct ViewName {
+    ViewKind kind;
+    std::string_view name;
+};
+inline constexpr std::array<ViewName, 6> kViewNames = {{{ViewKind::Scene, "scene"},
+                                                        {ViewKind::Error, "error"},
+                                                        {ViewKind::Profile, "profile"},
+                                                        {ViewKind::Outside, "outside"},
+                                                        {ViewKind::Ndc, "ndc"},
+                                                        {ViewKind::Split, "split"}}};
 // The views that show the scene from an observer (view_observer), not from the camera.
 inline bool observed(ViewKind kind) {
     return kind == ViewKind::Outside || kind == ViewKind::Ndc;
@@ -45,12 +62,25 @@ struct SplitSide {
     // "outside" or "ndc": that view of the scene (from the scene's view_observer) instead of its picture,
     // so the camera's picture can stand beside it ("split:scene,outside").
     std::optional<ViewKind> view;
+    // "{term=…, normal_matrix=…, ambient=…, diffuse=…, specular=…, shininess=…}": the term drawn, the rule
+    // for normals and every object's material values, so "the same object with different parameters" is
+    // one view: split:phong{shininess=8},phong{shininess=150}.
+    std::optional<LightingTerm> term;
+    std::optional<NormalMatrixRule> normalMatrix;
+    std::optional<glm::dvec3> ambient, diffuse, specular; // k_a, k_d, k_s: linear RGB, >= 0
+    std::optional<double> shininess;                      // α or β, >= 1
     bool operator==(const SplitSide&) const = default;
 };
 
+// How a split shows its two sides: cut at the divider, one picture whose left part is A and right part B
+// ("split:A,B"), or each side whole in its own half, so that no object is cut in two
+// ("side-by-side:A,B"; each half keeps the camera and a half-width picture's aspect).
+enum class SplitLayout { Divider, SideBySide };
+
 struct View {
     ViewKind kind = ViewKind::Scene;
-    SplitSide left, right; // split only
+    SplitSide left, right;                     // split only
+    SplitLayout layout = SplitLayout::Divider; // split only
     // "view_at": split — the divider, as a fraction of the width from the left (default 0.5); profile — the
     // row, as a fraction of the height from the top (default: the row through the first object's centre).
     std::optional<double> at;
@@ -58,9 +88,10 @@ struct View {
     bool operator==(const View&) const = default;
 };
 
-// "scene", "error", "profile", "outside", "ndc", or "split:A,B" with each side written as
-// shading[/lighting][@level] (or the lighting model alone): "split:gouraud,phong", "split:phong@4,phong@6",
-// "split:phong,blinn-phong".
+// "scene", "error", "profile", "outside", "ndc", or "split:A,B" (or "side-by-side:A,B") with each side
+// written as shading[/lighting][@level][{settings}] (or the lighting model alone): "split:gouraud,phong",
+// "split:phong@4,phong@6", "split:phong,blinn-phong", "side-by-side:phong{shininess=8},phong{shininess=150}",
+// "split:phong{normal_matrix=model},phong".
 std::string toString(const View& view);
 std::string toString(const SplitSide& side);
 
@@ -73,5 +104,9 @@ struct ViewParse {
     std::string error;
 };
 ViewParse parseView(std::string_view text);
+
+// `scene` with what `side` changes of its values (shading, lighting, level, term, normal matrix, every
+// object's material) applied; its view is left as it is.
+void applySplitSideValues(Scene& scene, const SplitSide& side);
 
 } // namespace shadelab

@@ -14,6 +14,17 @@
 #include "shadelab/vocabulary.h"
 
 namespace shadelab::app {
+namespace {
+
+// "scene, error, profile, outside, ndc": the views named alone, from their one table (view.h).
+std::string viewNames() {
+    std::string names;
+    for (const ViewName& view : kViewNames)
+        if (view.kind != ViewKind::Split) names += (names.empty() ? "" : ", ") + std::string(view.name);
+    return names;
+}
+
+} // namespace
 
 const std::vector<SceneFlag>& sceneFlags() {
     static const std::vector<SceneFlag> kFlags = {
@@ -48,9 +59,12 @@ const std::vector<SceneFlag>& sceneFlags() {
          "Lines over the surface: " + joinNames(kOverlays) +
              " (wireframe: the mesh's edges; normals: edges, face and vertex normals)"},
         {"view", &SceneOverrides::view,
-         "What the picture shows: scene, error (|mode - exact| heatmap), profile (intensity along a row) or "
-         "split:A,B (A, B each shading[/lighting][@level], e.g. split:gouraud,phong or "
-         "split:phong@4,phong@6)"},
+         "What the picture shows: " + viewNames() +
+             " (error: |mode - exact| heatmap; profile: intensity along a row; outside: the camera and its "
+             "view volume from an observer; ndc: the objects in the cube [-1,1]^3), split:A,B or "
+             "side-by-side:A,B (A, B each shading[/lighting][@level][{settings}], e.g. split:gouraud,phong, "
+             "split:phong@4,phong@6, side-by-side:phong{shininess=8},phong{shininess=150}; settings: term, "
+             "normal_matrix, ambient, diffuse, specular, shininess)"},
         {"size", &SceneOverrides::size, "Image size WxH, e.g. 512x512 (overrides the scene)"},
     };
     return kFlags;

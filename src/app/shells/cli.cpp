@@ -225,11 +225,12 @@ struct SlidesCommand {
             "slides",
             "Export a lesson as slides: one PNG per step, its title and caption in a band at the bottom");
         slides->add_option("lesson", args.lesson, "Lesson file (JSON)")->required();
-        slides
-            ->add_option("--out-dir", args.outDir,
-                         "Folder for 01-title.png, 02-... (created if missing; not the lesson's own folder)");
-        slides->add_option("--deck", args.deck,
-                           "One HTML file with every slide in order and each step's \"notes\" (N shows them)");
+        slides->add_option(
+            "--out-dir", args.outDir,
+            "Folder for 01-title.png, 02-... (created if missing; not the lesson's own folder)");
+        slides->add_option(
+            "--deck", args.deck,
+            "One HTML file with every slide in order and each step's \"notes\" (N shows them)");
         slides->add_option("--size", args.size,
                            "Slide size WxH for every step, e.g. 1920x1080 (default: each step's image size)");
         slides->add_flag(
