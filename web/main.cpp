@@ -52,6 +52,12 @@ app::PictureRect pictureRect() {
     return app::fitPicture(page().state->sceneWidth(), page().state->sceneHeight(), width, height);
 }
 
+// Where the last frame drew the picture (above a presented lesson's band), what the pointer points in.
+static app::PictureRect shownPicture() {
+    const app::PictureRect& shown = page().picture.shown();
+    return shown.width > 0 ? shown : pictureRect();
+}
+
 void frame() {
     Page& p = page();
     int width = 0, height = 0;
@@ -199,7 +205,7 @@ EMSCRIPTEN_KEEPALIVE void shadelab_drag(double dx, double dy) {
 // The pointer at canvas pixel (x, y), top left origin, on every move and left-button change: the profile
 // view's row, the split view's divider (DemoState::pointer, in the picture's pixels, as in the window).
 EMSCRIPTEN_KEEPALIVE void shadelab_pointer(double x, double y, int leftHeld) {
-    const app::PictureRect picture = pictureRect();
+    const app::PictureRect picture = shownPicture();
     page().state->pointer(x - picture.x, y - picture.y, leftHeld != 0);
     requestDraw();
 }
@@ -214,7 +220,7 @@ EMSCRIPTEN_KEEPALIVE void shadelab_drag_light(double dx, double dy) {
 // probe), which the panel then edits; a click on a bar changes nothing, as in the window.
 EMSCRIPTEN_KEEPALIVE const char* shadelab_probe(double x, double y) {
     return guarded([&] {
-        const app::PictureRect picture = pictureRect();
+        const app::PictureRect picture = shownPicture();
         if (!picture.contains(x, y)) return;
         page().state->probeAt(x - picture.x, y - picture.y);
         requestDraw();

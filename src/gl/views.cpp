@@ -53,9 +53,13 @@ std::string formatScale(double value) {
 } // namespace
 
 namespace detail {
-// Lines of 11 px (textLineHeight(1)), twice that from a 400-pixel picture on.
+// Lines of 11 px (textLineHeight(1)), twice that from a 400-pixel picture on; from 600 pixels on (a
+// lecture hall's picture: a 1080-line slide keeps at least 3/5 of its height above the lesson band) a
+// line is about a 33rd of the shorter side and at least 33 px.
 int textScale(int width, int height) {
-    return std::min(width, height) >= 400 ? 2 : 1;
+    const int side = std::min(width, height);
+    if (side < 600) return side >= 400 ? 2 : 1;
+    return std::max(3, int(std::lround(side / 360.0)));
 }
 
 // `lines` of text on a translucent box, as an image to draw over the picture.
@@ -77,6 +81,18 @@ Views::Views(Renderer& renderer)
       labels_(std::make_unique<Labels>()) {}
 
 Views::~Views() = default;
+
+void Views::resetFigures() {
+    std::vector<ViewFigures::LabelBox> labels = std::move(figures_.labels);
+    labels.clear();
+    figures_ = ViewFigures{};
+    figures_.labels = std::move(labels);
+}
+
+void Views::drawLabel(const Sprite& sprite, int left, int top, int x, int width, int height) {
+    programs_->images.draw(sprite, left, top, x, width, height);
+    figures_.labels.push_back({left, top, sprite.width(), sprite.height()});
+}
 
 void Views::draw(const Scene& scene, int width, int height, int x) {
     if (width <= 0 || height <= 0) return;
@@ -188,7 +204,7 @@ void Views::measureError(int width, int height) {
     float total[4] = {0, 0, 0, 0};
     input->bind();
     glReadPixels(0, 0, 1, 1, GL_RGBA, GL_FLOAT, total);
-    figures_ = ViewFigures{};
+    resetFigures();
     figures_.interiorPixels = std::size_t(std::lround(total[1]));
     figures_.interiorMean = total[1] > 0 ? double(total[0]) / double(total[1]) : 0;
     figures_.interiorMax = total[2];
@@ -215,21 +231,6 @@ void Views::drawHeatmap(const Scene& scene, int width, int height, int x, unsign
     p.heatmap.draw(0, 0, width, height, width, height);
 
     const int scale = textScale(width, height);
-    const int barWidth = 8 * scale, barLeft = width - barWidth - 8 * scale;
-    const int barTop = 22 * scale, barBottom = height - 22 * scale;
-    if (barBottom - barTop > 8) {
-        glUniform1i(p.heatmap.legend, 1);
-        p.heatmap.draw(barLeft, height - barBottom, barLeft + barWidth, height - barTop, width, height);
-        Labels& l = *labels_;
-        const Sprite& top = l.legendTop.update(glm::dvec2(figures_.scale, scale), [&] {
-            return labelImage({formatScale(figures_.scale) + "/255"}, scale);
-        });
-        const Sprite& bottom = l.legendBottom.update(scale, [&] { return labelImage({"0"}, scale); });
-        p.images.draw(top, std::max(0, barLeft + barWidth - top.width()), barTop - top.height() - scale, x,
-                      width, height);
-        p.images.draw(bottom, std::max(0, barLeft + barWidth - bottom.width()), barBottom + scale, x, width,
-                      height);
-    }
     const bool levelled = scene.shading != ShadingMode::Exact && !scene.objects.empty();
     const detail::ErrorFigures shown{scene.shading, levelled ? subdivisionLevel(scene, scene.objects[0]) : -1,
                                      figures_.interiorMean, figures_.interiorMax, scale};
@@ -240,7 +241,30 @@ void Views::drawHeatmap(const Scene& scene, int width, int height, int x, unsign
                                                               formatError(shown.max) + " (1/255)"},
                           scale);
     });
-    p.images.draw(label, scale * 4, scale * 4, x, width, height);
+    const ViewFigures::LabelBox figuresBox{scale * 4, scale * 4, label.width(), label.height()};
+    // The legend's bar along the right edge, its top under the figures where the picture is too narrow for
+    // both side by side.
+    Labels& l = *labels_;
+    const Sprite& top = l.legendTop.update(glm::dvec2(figures_.scale, scale), [&] {
+        return labelImage({formatScale(figures_.scale) + "/255"}, scale);
+    });
+    const int barWidth = 8 * scale, barLeft = width - barWidth - 8 * scale,
+              topLeft = std::max(0, barLeft + barWidth - top.width());
+    int barTop = 22 * scale;
+    if (ViewFigures::LabelBox{topLeft, barTop - top.height() - scale, top.width(), top.height()}.overlaps(
+            figuresBox))
+        barTop = figuresBox.top + figuresBox.height + top.height() + 2 * scale;
+    const int barBottom = height - 22 * scale;
+    if (barBottom - barTop > 8) {
+        glUniform1i(p.heatmap.legend, 1);
+        p.heatmap.draw(barLeft, height - barBottom, barLeft + barWidth, height - barTop, width, height);
+        const Sprite& bottom = l.legendBottom.update(scale, [&] { return labelImage({"0"}, scale); });
+        drawLabel(top, topLeft, barTop - top.height() - scale, x, width, height);
+        drawLabel(bottom, std::max(0, barLeft + barWidth - bottom.width()), barBottom + scale, x, width,
+                  height);
+    }
+    drawLabel(label, figuresBox.left, figuresBox.top, x, width, height);
+    figures_.textScale = scale;
 }
 
 void assignSplitSide(Scene& out, const Scene& scene, const SplitSide& side) {
@@ -287,7 +311,7 @@ std::string sideLabel(const Scene& scene, const SplitSide& side) {
 }
 
 void Views::drawSplit(const Scene& scene, int width, int height, int x) {
-    figures_ = ViewFigures{};
+    resetFigures();
     const int divider = std::clamp(int(std::lround(scene.view.at.value_or(0.5) * width)), 0, width);
     const int scale = textScale(width, height);
     // Each side clears and draws only its own pixels: the left side is a plain render of A there.
@@ -317,10 +341,17 @@ void Views::drawSplit(const Scene& scene, int width, int height, int x) {
     };
     const Sprite& leftLabel = sprite(labels_->left, left, scene.view.left);
     const Sprite& rightLabel = sprite(labels_->right, right, scene.view.right);
-    programs_->images.draw(leftLabel, std::max(0, divider - leftLabel.width() - 4 * scale), 4 * scale, x,
-                           width, height);
-    programs_->images.draw(rightLabel, std::min(divider + 4 * scale, std::max(0, width - rightLabel.width())),
-                           4 * scale, x, width, height);
+    // Each label beside the divider on its own side; a divider near an edge pushes one over the other,
+    // and then the right side's goes under the left's.
+    resetFigures();
+    figures_.textScale = scale;
+    const ViewFigures::LabelBox leftBox{std::max(0, divider - leftLabel.width() - 4 * scale), 4 * scale,
+                                        leftLabel.width(), leftLabel.height()};
+    ViewFigures::LabelBox rightBox{std::min(divider + 4 * scale, std::max(0, width - rightLabel.width())),
+                                   4 * scale, rightLabel.width(), rightLabel.height()};
+    if (rightBox.overlaps(leftBox)) rightBox.top = leftBox.top + leftBox.height + scale;
+    drawLabel(leftLabel, leftBox.left, leftBox.top, x, width, height);
+    drawLabel(rightLabel, rightBox.left, rightBox.top, x, width, height);
     glEnable(GL_DEPTH_TEST);
 }
 

@@ -75,6 +75,9 @@ struct SideFacts { // one side of the split view
     int scale;
     bool operator==(const SideFacts&) const = default;
 };
+struct LabelSegment { // a line of the outside or NDC view's drawing, in pixels from the top left
+    glm::dvec2 a, b;
+};
 struct ProfilePlot {
     int row, width, height, scale;
     ShadingMode shading;
@@ -99,6 +102,8 @@ struct Views::Labels {
     std::optional<OutsideDrawing> drawing;
     // One per label of `drawing`, keyed by a view of its text: cleared whenever the drawing is made again.
     std::vector<KeyedSprite<std::pair<std::string_view, int>>> observed;
+    std::vector<detail::LabelSegment> segments;     // the drawing's lines in the picture, placing its labels
+    std::vector<ViewFigures::LabelBox> objectBoxes; // where the objects are in the picture, likewise
 };
 
 } // namespace shadelab::gl

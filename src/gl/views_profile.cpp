@@ -86,7 +86,7 @@ void Views::drawProfile(const Scene& scene, int width, int height, int x, unsign
     t.edges.bind();
     renderer_.renderScene(edges, width, height, 0);
 
-    figures_ = ViewFigures{};
+    resetFigures();
     const int row = profileRow(scene, height);
     figures_.row = row;
     const int glRow = height - 1 - row;
@@ -122,7 +122,8 @@ void Views::drawProfile(const Scene& scene, int width, int height, int x, unsign
                               figures_.exactRow,
                               figures_.edgeColumns};
     const Sprite& plot = labels_->profilePlot.update(shown, [&] { return profilePlot(shown); });
-    programs_->images.draw(plot, 0, plotTop, x, width, height);
+    figures_.textScale = scale;
+    drawLabel(plot, 0, plotTop, x, width, height);
     const Sprite& marker = labels_->profileMarker.update(width, [&] {
         Image line(width, 1);
         for (int i = 0; i < width; ++i)

@@ -15,6 +15,7 @@
 namespace shadelab::gl {
 
 class Renderer;
+class Sprite;
 
 // What the last view drawn measured, for the panel, the title and the tests.
 struct ViewFigures {
@@ -28,6 +29,17 @@ struct ViewFigures {
     int row = -1;
     std::vector<float> modeRow, exactRow;
     std::vector<int> edgeColumns;
+    // Every view: the labels' font scale (a line is textLineHeight(textScale) pixels, image.h) and where
+    // each label (a box of text, the profile's plot) was drawn, in pixels from the viewport's top left.
+    struct LabelBox {
+        int left = 0, top = 0, width = 0, height = 0;
+        bool overlaps(const LabelBox& o) const {
+            return left < o.left + o.width && o.left < left + width && top < o.top + o.height &&
+                   o.top < top + height;
+        }
+    };
+    int textScale = 0;
+    std::vector<LabelBox> labels;
 };
 
 class Views {
@@ -58,9 +70,13 @@ private:
     // the labels and the title (`title` and the drag hint), then the lines over them.
     void drawObserved(const OutsideDrawing& drawing, const Scene& observer, std::string_view title, int width,
                       int height, int x);
-    // Each label beside the point it names, where the observer's camera puts that point in the picture.
-    void drawLabels(const std::vector<OutsideLabel>& labels, const Scene& observer, int width, int height,
-                    int x);
+    // Each label beside the point it names, where the observer's camera puts that point in the picture: on
+    // the side of the point that crosses the fewest of the drawing's lines and no other label.
+    void drawLabels(const OutsideDrawing& drawing, const Scene& observer, int width, int height, int x);
+    // A label's sprite at (left, top) of the viewport (x, 0, width, height), recorded in figures_.labels.
+    void drawLabel(const Sprite& sprite, int left, int top, int x, int width, int height);
+    // figures_ emptied, its labels' storage kept: an unchanged view's frame allocates nothing.
+    void resetFigures();
     void renderModeAndExact(const Scene& scene, int width, int height);
 
     Renderer& renderer_;

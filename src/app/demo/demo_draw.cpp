@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include <vector>
+
 #include "shadelab/geometry/overlay.h"
+#include "shadelab/scene/outside_view.h"
 
 namespace shadelab::app {
 
@@ -46,29 +49,10 @@ void FramedPicture::drawPicture(gl::Renderer& renderer, DemoState& state, int wi
     if (reported_.changed(reported)) report_ = viewReport(scene, figures);
     // Copied only when the state's differs: a new state (a lesson step) starts without it.
     if (state.viewReport != report_) state.viewReport = report_;
-    const auto probe = state.probe();
-    // Behind the object the probe's table says so instead; and the vectors are in the camera's view, which
-    // the outside and NDC views do not draw.
-    if (probe && !probeFacesAway(*probe) && !observed(scene.view.kind)) {
-        // The vectors are as long as 0.6 of the object's largest semi-axis: visible, and inside the picture.
-        const SceneObject& object = scene.objects[probe->point.object];
-        const double length =
-            0.6 * object.radius *
-            std::max({std::abs(object.scale.x), std::abs(object.scale.y), std::abs(object.scale.z)});
-        renderer.drawLinesOver(scene, probeLines(*probe, length), width, height);
-    }
-    // Presentation mode, on top of everything: in a lesson the step's band across the bottom — the picture
-    // is then what `shadelab slides` makes of the step at this size — otherwise the label over the bottom
-    // left. Drawn here, so the window and the page draw them the same way.
-    if (!state.presenting) return;
-    if (const Lesson* lesson = state.lesson()) {
-        const LessonStep& step = lesson->steps[state.step()];
-        const gl::Sprite& band =
-            band_.update(BandKey{state.sharedLesson(), state.step(), width, height},
-                         [&] { return lessonBandImage(step.title, step.caption, width, height); });
-        renderer.drawSpriteOver(band, 0, height - band.height(), width, height);
-        return;
-    }
+    drawProbeVectors(renderer, scene, state.probe(), width, height);
+    // Presentation mode without a lesson: the label over the bottom left, drawn here, so that the window
+    // and the page draw it the same way (a lesson's band is drawn by draw(), under the picture).
+    if (!state.presenting || state.lesson()) return;
     const PresentationFacts facts = presentationFacts(scene);
     const gl::Sprite& label = label_.update(std::tuple{facts, width, height}, [&] {
         PresentationLabelImage made = presentationLabelImage(presentationLabel(facts), width, height);
@@ -78,23 +62,76 @@ void FramedPicture::drawPicture(gl::Renderer& renderer, DemoState& state, int wi
     renderer.drawSpriteOver(label, labelMargin_, height - labelMargin_ - label.height(), width, height);
 }
 
+// The probe's vectors, 0.6 of the object's largest semi-axis long (visible, and inside the picture). The
+// camera's picture draws them in its view space; the outside view in world space as its observer sees them,
+// 1.5 semi-axes long, hidden where an object is in front. Not in the NDC view: M_proj does not keep angles or
+// lengths, so n, l, v and r carried into NDC would no longer be the unit vectors of the lighting (and the
+// lecture draws them at the surface, in world or camera space).
+void drawProbeVectors(gl::Renderer& renderer, const Scene& scene, const std::optional<ProbeReport>& probe,
+                      int width, int height) {
+    if (!probe || scene.view.kind == ViewKind::Ndc) return;
+    const bool outside = scene.view.kind == ViewKind::Outside;
+    // Behind the object the camera's picture cannot show them: the probe's table says so instead.
+    if (!outside && probeFacesAway(*probe)) return;
+    const SceneObject& object = scene.objects[probe->point.object];
+    // The outside view's observer stands back to show the whole view volume: there they are longer.
+    const double length =
+        (outside ? 1.5 : 0.6) * object.radius *
+        std::max({std::abs(object.scale.x), std::abs(object.scale.y), std::abs(object.scale.z)});
+    std::vector<LineVertex> lines = probeLines(*probe, length);
+    if (!outside) {
+        renderer.drawLinesOver(scene, lines, width, height);
+        return;
+    }
+    const glm::dmat4 worldFromView = glm::inverse(sceneView(scene).viewFromWorld);
+    for (LineVertex& vertex : lines)
+        vertex.position = glm::vec3(worldFromView * glm::dvec4(glm::dvec3(vertex.position), 1));
+    renderer.drawWorld(observerScene(scene), lines, {}, 1.0f, width, height);
+}
+
 void FramedPicture::draw(gl::Renderer& renderer, DemoState& state, const PictureRect& picture,
                          int framebufferWidth, int framebufferHeight) {
     gl::clearWindow(framebufferWidth, framebufferHeight, kBarColour);
+    shown_ = {};
     if (picture.width <= 0 || picture.height <= 0) return;
     try {
-        state.setViewport(picture.width, picture.height);
-        target_.fit(picture.width, picture.height, gl::ColorFormat::Rgba8,
-                    gl::depthFormatFor(state.scene().depth)); // the depth drawn() keeps
-        target_.bind();
-        drawPicture(renderer, state, picture.width, picture.height);
-        // GL counts rows up from the bottom; the picture's place is measured from the top.
-        target_.blitToWindow(picture.x, framebufferHeight - picture.y - picture.height);
+        // Presenting a lesson, the step's band takes the bottom of the picture's place and the picture is
+        // drawn above it (pictureAboveBand), as `shadelab slides` composes the step's slide at this size.
+        const Lesson* lesson = state.presenting ? state.lesson() : nullptr;
+        const gl::Sprite* band = nullptr;
+        shown_ = picture;
+        if (lesson) {
+            const LessonStep& step = lesson->steps[state.step()];
+            band = &band_.update(
+                BandKey{state.sharedLesson(), state.step(), picture.width, picture.height},
+                [&] { return lessonBandImage(step.title, step.caption, picture.width, picture.height); });
+            const PictureRect above = pictureAboveBand(state.sceneWidth(), state.sceneHeight(), picture.width,
+                                                       picture.height, band->height());
+            shown_ = {picture.x + above.x, picture.y + above.y, above.width, above.height};
+        }
+        if (shown_.width > 0 && shown_.height > 0) {
+            state.setViewport(shown_.width, shown_.height);
+            target_.fit(shown_.width, shown_.height, gl::ColorFormat::Rgba8,
+                        gl::depthFormatFor(state.scene().depth)); // the depth drawn() keeps
+            target_.bind();
+            drawPicture(renderer, state, shown_.width, shown_.height);
+            // GL counts rows up from the bottom; the picture's place is measured from the top.
+            target_.blitToWindow(shown_.x, framebufferHeight - shown_.y - shown_.height);
+        }
+        if (band) { // over the bars, in a viewport whose top is the picture's place's
+            gl::bindDefaultFramebuffer();
+            renderer.drawSpriteOver(*band, 0, picture.height - band->height(), picture.width,
+                                    framebufferHeight - picture.y, picture.x);
+        }
     } catch (...) {
         target_ = gl::RenderTarget();
         gl::bindDefaultFramebuffer();
         throw;
     }
+}
+
+PictureRect pictureAboveBand(int sceneWidth, int sceneHeight, int width, int height, int bandHeight) {
+    return fitPicture(sceneWidth, sceneHeight, width, height - bandHeight);
 }
 
 } // namespace shadelab::app

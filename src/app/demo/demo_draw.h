@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 #include <tuple>
 
@@ -26,18 +27,26 @@ inline constexpr glm::vec3 kBarColour{0.06f, 0.06f, 0.07f};
 class FramedPicture {
 public:
     // Clears the framebuffer (width × height) to the bars and draws the state's picture into `picture`
-    // (pixels from the framebuffer's top left), after setting the state's viewport to the picture's size;
-    // sets state.viewReport from what the view measured. On a failure (a target the context cannot make)
-    // the bars stay, the window's framebuffer is bound, no target is kept, and the error is thrown on.
+    // (pixels from the framebuffer's top left) — presenting a lesson, into the part of it above the step's
+    // band (pictureAboveBand), the band across its bottom over the bars — after setting the state's
+    // viewport to the size the picture is drawn at; sets state.viewReport from what the view measured. On a
+    // failure (a target the context cannot make) the bars stay, the window's framebuffer is bound, no target
+    // is kept, and the error is thrown on.
     void draw(gl::Renderer& renderer, DemoState& state, const PictureRect& picture, int framebufferWidth,
               int framebufferHeight);
 
+    // Where the last draw put the picture (framebuffer pixels from the top left): `picture`, or presenting a
+    // lesson the part above the step's band; what a click or the pointer is measured in. Empty before the
+    // first draw.
+    const PictureRect& shown() const { return shown_; }
+
 private:
     // The picture into the bound target (width × height): the scene, the probe's vectors and, in
-    // presentation mode, the label or the lesson step's band.
+    // presentation mode without a lesson, the label.
     void drawPicture(gl::Renderer& renderer, DemoState& state, int width, int height);
 
     gl::RenderTarget target_; // follows the picture's size and the scene's depth mode
+    PictureRect shown_;
     // What the picture shows besides the scene, each made again only when what it says changes: a frame of
     // an unchanged picture builds no text and uploads no image.
     struct ReportFacts {
@@ -59,6 +68,17 @@ private:
     gl::KeyedSprite<std::tuple<PresentationFacts, int, int>> label_; // with the picture's size
     int labelMargin_ = 0;
 };
+
+// The probe's vectors (overlay.h's probeLines) over the picture of `drawn` just drawn into the bound target
+// (width × height): in the camera's picture over everything, in the outside view in world space as its
+// observer sees them (an object in front hides them); nothing in the NDC view or without a probe.
+void drawProbeVectors(gl::Renderer& renderer, const Scene& drawn, const std::optional<ProbeReport>& probe,
+                      int width, int height);
+
+// Where a presented lesson step's picture goes in a frame of width × height whose bottom `bandHeight` rows
+// hold the step's band (lessonBandImage): the largest rectangle of the scene's aspect above the band,
+// centred, bars beside it (fitPicture). The window, the page and `shadelab slides` place it so.
+PictureRect pictureAboveBand(int sceneWidth, int sceneHeight, int width, int height, int bandHeight);
 
 // What a view measured, in words, for the title and the panel ("" for the plain scene).
 std::string viewReport(const Scene& scene, const gl::ViewFigures& figures);

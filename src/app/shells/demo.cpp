@@ -83,7 +83,7 @@ public:
         window_.onPointer([this](double x, double y, bool leftHeld) {
             inputCame();
             if (panel_.wantsMouse()) return;
-            const PictureRect picture = pictureRect();
+            const PictureRect picture = shownPicture();
             state_.pointer(x - picture.x, y - picture.y, leftHeld);
         });
         window_.onScroll([this](double steps) {
@@ -124,6 +124,11 @@ private:
         PictureRect rect = fitPicture(state_.sceneWidth(), state_.sceneHeight(), width - column, height);
         rect.x += column;
         return rect;
+    }
+
+    // Where the last frame drew the picture (above a presented lesson's band), what the pointer points in.
+    PictureRect shownPicture() const {
+        return picture_.shown().width > 0 ? picture_.shown() : pictureRect();
     }
 
     void drawFrame(Clock::time_point now) {
@@ -174,7 +179,7 @@ private:
     void onClick(double x, double y) {
         try {
             if (panel_.wantsMouse()) return;
-            const PictureRect picture = pictureRect();
+            const PictureRect picture = shownPicture();
             if (!picture.contains(x, y)) return; // a bar: nothing to probe
             state_.probeAt(x - picture.x, y - picture.y);
             std::printf("%s", probeText(state_).c_str());

@@ -4,6 +4,7 @@
 #include <system_error>
 #include <variant>
 
+#include "app/demo/demo_draw.h"
 #include "app/demo/demo_state.h"
 #include "app/measure/memory_budget.h"
 #include "app/shells/commands.h"
@@ -170,11 +171,28 @@ int runSlides(const SlidesOptions& options) {
     for (std::size_t i = 0; i < count; ++i) {
         const LessonStep& step = lesson.steps[i];
         const Scene& scene = step.scene;
-        const Image picture = renderer.render(scene, [&](gl::Renderer& drawing) {
-            if (!options.captions) return;
-            const Image band = lessonBandImage(step.title, step.caption, scene.width, scene.height);
-            drawing.drawImageOver(band, 0, scene.height - band.height, scene.width, scene.height);
-        });
+        // With captions, as the window and the page present the step: the picture above the band
+        // (pictureAboveBand), made opaque, then the band, over a bare scene of the bars' colour.
+        const Image band = options.captions
+                               ? lessonBandImage(step.title, step.caption, scene.width, scene.height)
+                               : Image(0, 0);
+        const PictureRect place =
+            pictureAboveBand(scene.width, scene.height, scene.width, scene.height, band.height);
+        // (A band as tall as the slide leaves no picture: a slide of a few pixels.)
+        Image picture = place.width > 0 && place.height > 0
+                            ? renderer.render(atSize(scene, place.width, place.height))
+                            : Image(0, 0);
+        if (options.captions) {
+            for (std::size_t k = 3; k < picture.rgba.size(); k += 4) picture.rgba[k] = 255;
+            Scene bars = atSize(Scene{}, scene.width, scene.height);
+            bars.objects.clear();
+            bars.background = glm::dvec3(kBarColour);
+            picture = renderer.render(bars, [&](gl::Renderer& drawing) {
+                if (picture.width > 0)
+                    drawing.drawImageOver(picture, place.x, place.y, scene.width, scene.height);
+                drawing.drawImageOver(band, 0, scene.height - band.height, scene.width, scene.height);
+            });
+        }
         if (deck) deck->add(encodePng(picture));
         if (!files) continue;
         writePng(picture, options.outDir / names[i], /*inFolder=*/true);
