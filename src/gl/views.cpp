@@ -301,7 +301,32 @@ std::string sideWords(const detail::SideFacts& facts) {
     if (facts.level >= 0) label += " L" + std::to_string(facts.level);
     if (facts.side.lighting || (!facts.side.shading && !facts.side.level))
         label += " " + upperAscii(toString(facts.lighting));
+    // The side's settings as written: "PHONG L5 {SHININESS=8}".
+    const std::string written = toString(facts.side);
+    if (const std::size_t settings = written.find('{'); settings != std::string::npos)
+        label += " " + upperAscii(written.substr(settings));
     return label;
+}
+
+} // namespace
+
+namespace {
+
+// A side laid out side by side keeps the whole picture's width of the world in half the width: its view
+// volume `factor` (the full width over the half's) times as tall, about the same centre, so that pixels
+// stay square and no object the full picture shows is cut at the half's edge. The observer's views frame
+// themselves.
+void widenedForHalf(Scene& side, double factor) {
+    if (observed(side.view.kind)) return;
+    Projection& p = side.projection;
+    if (p.type == ProjectionType::Perspective) {
+        const double halfAngle = std::atan(std::tan(glm::radians(p.fovyDeg) / 2) * factor);
+        p.fovyDeg = glm::degrees(2 * halfAngle);
+    } else {
+        const double centre = (p.top + p.bottom) / 2, half = (p.top - p.bottom) / 2 * factor;
+        p.bottom = centre - half;
+        p.top = centre + half;
+    }
 }
 
 } // namespace
@@ -312,19 +337,28 @@ std::string sideLabel(const Scene& scene, const SplitSide& side) {
 
 void Views::drawSplit(const Scene& scene, int width, int height, int x) {
     resetFigures();
-    const int divider = std::clamp(int(std::lround(scene.view.at.value_or(0.5) * width)), 0, width);
+    // Side by side, each side is a whole picture of half the width (its own aspect); cut at the divider,
+    // each is the part of a full-width picture on its side.
+    const bool sideBySide = scene.view.layout == SplitLayout::SideBySide;
+    const int divider =
+        sideBySide ? width / 2 : std::clamp(int(std::lround(scene.view.at.value_or(0.5) * width)), 0, width);
     const int scale = textScale(width, height);
     // Each side clears and draws only its own pixels: the left side is a plain render of A there.
     glEnable(GL_SCISSOR_TEST);
     glScissor(x, 0, divider, height);
     Scene& left = targets_->leftScene;
     assignSplitSide(left, scene, scene.view.left);
-    renderer_.render(left, width, height, x); // a side may be a view
+    if (sideBySide) widenedForHalf(left, double(width) / std::max(1, divider));
+    renderer_.render(left, sideBySide ? divider : width, height, x); // a side may be a view
     glEnable(GL_SCISSOR_TEST);
     glScissor(x + divider, 0, width - divider, height);
     Scene& right = targets_->rightScene;
     assignSplitSide(right, scene, scene.view.right);
-    renderer_.render(right, width, height, x);
+    if (sideBySide) {
+        widenedForHalf(right, double(width) / std::max(1, width - divider));
+        renderer_.render(right, width - divider, height, x + divider);
+    } else
+        renderer_.render(right, width, height, x);
     // The divider: two pixels of white straddling it.
     glEnable(GL_SCISSOR_TEST);
     glScissor(x + divider - 1, 0, 2, height);

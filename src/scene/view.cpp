@@ -2,6 +2,9 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <vector>
 
 #include "shadelab/geometry/subdivision.h"
@@ -55,19 +58,27 @@ std::optional<Token> splitToken(std::string_view text, std::string& error) {
     return token;
 }
 
-// A number as the scene file would take it back: the shortest text that reads as the same double.
+// A number as the scene file would take it back: the shortest text that reads as the same double. (Not
+// std::to_chars: the browser build's libc++ has no floating-point to_chars or from_chars.)
 std::string numberText(double value) {
     char text[32];
-    const auto [end, ec] = std::to_chars(text, text + sizeof text, value);
-    return ec == std::errc() ? std::string(text, end) : "0";
+    for (int digits = 1; digits <= 17; ++digits) {
+        std::snprintf(text, sizeof text, "%.*g", digits, value);
+        if (std::strtod(text, nullptr) == value) break;
+    }
+    // A whole number in its digits: 150, not 1.5e+02.
+    if (std::strchr(text, 'e') && value == std::floor(value) && std::abs(value) < 1e15)
+        std::snprintf(text, sizeof text, "%.0f", value);
+    return text;
 }
 
+// A decimal number, the whole of `text`, finite; the "C" locale's decimal point, as JSON's.
 std::optional<double> readNumber(std::string_view text) {
-    text = trim(text);
-    double value = 0;
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (text.empty() || ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value))
-        return std::nullopt;
+    const std::string copy(trim(text));
+    if (copy.empty() || copy.find_first_not_of("0123456789+-.eE") != std::string::npos) return std::nullopt;
+    char* end = nullptr;
+    const double value = std::strtod(copy.c_str(), &end);
+    if (end != copy.c_str() + copy.size() || !std::isfinite(value)) return std::nullopt;
     return value;
 }
 

@@ -57,7 +57,7 @@ const BadValue kBadValues[] = {
     {"ViewOneSidedSplit", R"({"view": "split:phong"})", "view", &SceneOverrides::view, "split:phong",
      "--view", "\"split:phong\": a split names two sides"},
     {"ViewControlCharacter", R"({"view": "sce\u001bne"})", "view", &SceneOverrides::view, "sce\x1bne",
-     "--view", "\"sce\\u001bne\": expected scene, error, profile, outside, ndc or split:A,B"},
+     "--view", "\"sce\\u001bne\": expected scene, error, profile, outside, ndc, split:A,B or side-by-side:A,B"},
     {"ViewLong", R"({"view": "scenescenescenescenescenescenescenescenescene"})", "view",
      &SceneOverrides::view, "scenescenescenescenescenescenescenescenescene", "--view",
      "\"scenescenescenescenescenescenescenescene...\""},
