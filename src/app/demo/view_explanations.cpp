@@ -16,8 +16,11 @@ constexpr std::array kViews = {
     ViewExplanation{"error", "|shaded − exact| per pixel as a heatmap, with its interior mean and max",
                     "window pixels, the mesh's picture against the ray-cast sphere's",
                     "error = |I_mode − I_exact| on 0..255, the silhouette eroded by 2 px"},
-    ViewExplanation{"split", "two settings of the same scene side by side, a divider between them",
-                    "window pixels, one camera for both sides", "left | right, each side's own I"},
+    ViewExplanation{
+        "split",
+        "two settings of the same scene (shading, lighting, level, term, normal matrix, material) "
+        "cut at a divider, or each whole in its half (side-by-side)",
+        "window pixels, one camera for both sides", "left | right, each side's own I"},
     ViewExplanation{"profile",
                     "the intensity along one row: the mode's, the exact one, and mesh-edge crossings",
                     "one window row, x from left to right",
