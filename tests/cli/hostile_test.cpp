@@ -1,4 +1,4 @@
-// Hostile input end to end, beyond what cli_test.cpp covers: malformed and binary scene
+// Hostile input end to end, beyond what cli_failures_test.cpp covers: malformed and binary scene
 // files, wrong types, deep nesting, huge files and arrays, NaN/Inf literals, unknown keys, out-of-range
 // enums, paths that do not exist, are directories or cannot be written, and a GL driver taken away at run
 // time. Each case states its exit code (2: bad input, 1: run-time failure), what stderr must name (the
