@@ -10,7 +10,7 @@
 //   TOON_HIGHLIGHT        kToonHighlight
 //   LIGHTING_BLINN_PHONG  Blinn-Phong specular max(n·h,0)^β; otherwise Phong max(v·r,0)^α
 //   SHADING_TOON          diffuse quantized into uToonBands bands, highlight thresholded at TOON_HIGHLIGHT
-//   SPECIALIZED           a program for one scene's light set-up (ProgramVariant in gl/program.h), with
+//   SPECIALIZED           a program for one scene's light set-up (ProgramVariant in gl/program_variant.h), with
 //     NUM_DIRECTIONAL, NUM_POINT, NUM_SPOT  light counts per type as compile-time constants
 //     HAS_AMBIENT       some light has a non-zero ambient term (summed on the CPU: uAmbientProduct)
 //     HAS_ATTENUATION   some point or spot light has attenuation other than (1, 0, 0)

@@ -10,7 +10,8 @@ constexpr glm::u8vec4 kTextColor{235, 235, 235, 255};
 constexpr glm::u8vec4 kBannerColor{52, 58, 74, 255};
 constexpr glm::u8vec4 kPanelColor{24, 24, 28, 255};
 constexpr int kTextScale = 2;
-constexpr int kStripHeight = 26; // one line of text at kTextScale (textLineHeight: 22 px) plus padding
+constexpr int kStripHeight =
+    kShowcaseStripHeight; // one line of text at kTextScale (textLineHeight: 22 px) plus padding
 
 void centredText(Image& canvas, int x, int y, int width, const std::string& text) {
     drawText(canvas, x + (width - textWidth(text, kTextScale)) / 2, y + 6, text, kTextScale, kTextColor);

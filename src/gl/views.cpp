@@ -331,10 +331,6 @@ void widenedForHalf(Scene& side, double factor) {
 
 } // namespace
 
-std::string sideLabel(const Scene& scene, const SplitSide& side) {
-    return sideWords(sideFacts(splitSideScene(scene, side), side, 1));
-}
-
 void Views::drawSplit(const Scene& scene, int width, int height, int x) {
     resetFigures();
     // Side by side, each side is a whole picture of half the width (its own aspect); cut at the divider,

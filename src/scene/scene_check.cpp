@@ -137,12 +137,14 @@ void checkObserver(const Observer& observer) {
     checkFinite(observer.azimuthDeg, "view_observer[0]");
     checkFinite(observer.elevationDeg, "view_observer[1]");
     if (!(std::abs(observer.elevationDeg) <= kMaxObserverElevationDeg))
-        fail("view_observer[1]", "the observer's elevation must be between -85 and 85 degrees, got " +
+        fail("view_observer[1]", "the observer's elevation must be between " +
+                                     formatNumber(-kMaxObserverElevationDeg) + " and " +
+                                     formatNumber(kMaxObserverElevationDeg) + " degrees, got " +
                                      formatNumber(observer.elevationDeg));
     if (!(observer.zoom >= kMinObserverZoom && observer.zoom <= kMaxObserverZoom))
-        fail("view_observer[2]",
-             "the observer's zoom must be between 0.05 and 20 (1: everything framed), got " +
-                 formatNumber(observer.zoom));
+        fail("view_observer[2]", "the observer's zoom must be between " + formatNumber(kMinObserverZoom) +
+                                     " and " + formatNumber(kMaxObserverZoom) +
+                                     " (1: everything framed), got " + formatNumber(observer.zoom));
 }
 
 void checkSceneSize(const Scene& scene) {

@@ -89,9 +89,6 @@ std::optional<ShadingMode> parseShadingMode(std::string_view text) {
 std::optional<LightingModel> parseLightingModel(std::string_view text) {
     return parseName(text, kLightingModels);
 }
-std::optional<LightType> parseLightType(std::string_view text) {
-    return parseName(text, kLightTypes);
-}
 
 std::string_view toString(LightingTerm term) {
     switch (term) {

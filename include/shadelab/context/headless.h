@@ -50,6 +50,7 @@ private:
 
 // Every shading mode × lighting model of `scene`, tileSize² each, labelled, side by side (modes across,
 // lighting models down).
-Image renderShowcase(HeadlessRenderer& renderer, const Scene& scene, int tileSize = 256);
+inline constexpr int kShowcaseTile = 256, kShowcaseStripHeight = 26; // a tile's side; a title strip's height
+Image renderShowcase(HeadlessRenderer& renderer, const Scene& scene, int tileSize = kShowcaseTile);
 
 } // namespace shadelab

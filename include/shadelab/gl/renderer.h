@@ -42,13 +42,13 @@ public:
     // mode, so NDC is the cube [−1, 1]³. Exact shading has no mesh to transform (the scene check refuses it).
     void setNdcObserver(std::optional<glm::dmat4> observerClipFromNdc) { ndcObserver_ = observerClipFromNdc; }
 
-    // Lines given in view space drawn over what render() drew into the same viewport, never hidden (the
-    // demo's probe vectors).
     // A CPU-made image (a label) blended over what render() drew into the viewport (x, 0, width, height),
     // its top left corner at (left, top) pixels from the viewport's top left.
     void drawImageOver(const Image& image, int left, int top, int width, int height, int x = 0);
     // The same for an image kept as a texture (gl/screen_pass.h), uploaded only when it changes.
     void drawSpriteOver(const Sprite& sprite, int left, int top, int width, int height, int x = 0);
+    // Lines given in view space drawn over what render() drew into the same viewport, never hidden (the
+    // demo's probe vectors).
     void drawLinesOver(const Scene& scene, std::span<const LineVertex> linesView, int width, int height,
                        int x = 0);
     // World-space triangles and lines (GL_LINES pairs), depth-tested against what scene's render left in

@@ -92,8 +92,5 @@ void assignSplitSide(Scene& out, const Scene& scene, const SplitSide& side); // 
 // The profile's row, from the top: view.at of the height, or the row through the first object's centre
 // (the middle row without objects or with the centre outside the picture).
 int profileRow(const Scene& scene, int height);
-// Labels for the views, in the pictures' font (DejaVu Sans Mono Bold, image.h's drawText): "GOURAUD",
-// "PHONG L6 BLINN-PHONG".
-std::string sideLabel(const Scene& scene, const SplitSide& side);
 
 } // namespace shadelab::gl

@@ -8,7 +8,8 @@
 
 namespace shadelab {
 
-// Writes an opaque RGB PNG (alpha dropped) to a temporary file beside `path`, then renames it over `path`.
+// Writes an opaque RGB PNG (alpha dropped) by the output rules (io/atomic_file.h): a regular file through a
+// temporary file beside `path` renamed over it; "-", a device or a FIFO written through.
 // Throws RuntimeError naming the path on any failure, leaving nothing behind.
 // `inFolder`: as a file of a folder of outputs (OutputRule::InFolder, io/atomic_file.h): created inside its
 // folder, replacing only a regular file there, never through a link.

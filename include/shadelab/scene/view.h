@@ -1,7 +1,8 @@
 // What the picture shows of a scene: the scene itself, one of three teaching views that set the current
-// shading against the exact ray-cast sphere, or the outside view of the camera and its view volume. A scene
-// value ("view", "view_at", "view_observer"),
-// so the demo's S saves it and `shadelab render` draws the same picture; views, legends and plots are
+// shading against the exact ray-cast sphere or two settings beside each other (error, profile, split), the
+// outside view of the camera and its view volume, or the NDC view of the objects in the cube. A scene value
+// ("view", "view_at", "view_observer"), so the demo's S saves it and `shadelab render` draws the same
+// picture; views, legends and plots are
 // drawn into the GL picture itself (src/gl/views.cpp), so a headless render carries them.
 #pragma once
 

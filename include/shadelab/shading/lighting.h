@@ -40,7 +40,6 @@ std::string_view toString(LightType type);      // "ambient" | "directional" | "
 std::string_view toString(LightingTerm term);   // "all" | "ambient" | "diffuse" | "specular"
 std::optional<ShadingMode> parseShadingMode(std::string_view text);
 std::optional<LightingModel> parseLightingModel(std::string_view text);
-std::optional<LightType> parseLightType(std::string_view text);
 
 inline constexpr int kMaxLights = 8;
 inline constexpr int kToonBands = 4; // default diffuse bands in toon shading

@@ -100,7 +100,7 @@ void DemoState::pointer(double x, double y, bool leftHeld) {
     leftWasHeld_ = leftHeld;
 }
 
-// E, P, O, N: the view on, or back to the scene; false (with lastChange_ saying why) when refused.
+// E, V, I, Y, Q: the view on, or back to the scene; false (with lastChange_ saying why) when refused.
 bool DemoState::toggleView(Command command) {
     const ViewKind kind = command == Command::ToggleErrorView     ? ViewKind::Error
                           : command == Command::ToggleProfileView ? ViewKind::Profile

@@ -169,7 +169,7 @@ public:
     // "step 3 of 15: The view volume"; "" without a lesson.
     std::string stepName() const;
 
-    // Why the last + or - (the page's level slider presses them) changed nothing, or "".
+    // Why the last level change (+, -, the page's level slider) or split view (V) was refused, or "".
     std::string levelRefusal;
     bool matchHighlight = true; // B keeps the highlight size: β = 4α going to Blinn-Phong, α = β/4 back
     bool showHelp = false;

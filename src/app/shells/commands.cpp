@@ -88,11 +88,15 @@ int runReference(const Scene& scene, const std::filesystem::path& out) {
 }
 
 int runShowcase(const Scene& scene, const ContextRequest& context, const std::filesystem::path& out) {
-    // Four panels of the scene's size side by side.
-    checkMemoryBudget("the showcase of " + sizeText(scene), kGlBaselineBytes + 4 * renderBytes(scene),
-                      "--size (or the scene's image)");
+    // One tile rendered at a time (kShowcaseTile square, whatever the scene's size), blitted into the
+    // canvas of every shading mode × lighting model, each tile's picture and error view.
+    const Scene tile = atSize(scene, kShowcaseTile, kShowcaseTile);
+    const double canvasBytes = 4.0 * int(kShadingModes.size()) * kShowcaseTile * int(kLightingModels.size()) *
+                               (2 * kShowcaseTile + 2 * kShowcaseStripHeight);
+    checkMemoryBudget("the showcase of " + sizeText(tile) + " tiles",
+                      kGlBaselineBytes + renderBytes(tile) + canvasBytes, "--size (or the scene's image)");
     HeadlessRenderer renderer(context);
-    writePng(renderShowcase(renderer, scene), out);
+    writePng(renderShowcase(renderer, scene, kShowcaseTile), out);
     if (out != "-") std::printf("%s\n", out.string().c_str());
     return kExitOk;
 }

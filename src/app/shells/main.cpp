@@ -1,5 +1,6 @@
-// shadelab's entry point: the demo window (default), `render`, `reference` and `bench` (DESIGN §5), and the
-// exit codes: 0 success, 2 bad input, 1 run-time failure.
+// shadelab's entry point: the demo window (default) and the commands (`render`, `reference`, `bench`,
+// `compare`, `report`, `check`, `slides`; DESIGN §5, README), and the exit codes: 0 success, 2 bad input,
+// 1 run-time failure.
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
