@@ -8,6 +8,7 @@
 
 #include "shadelab/errors.h"
 #include "shadelab/geometry/mesh_layout.h"
+#include "shadelab/geometry/overlay.h"
 #include "shadelab/geometry/sphere.h"
 
 namespace shadelab::app {
@@ -25,8 +26,11 @@ double renderBytes(const Scene& scene) {
     // The teaching views' own targets (gl/views.cpp): RGBA32F textures with 32-bit depth — the mode's and
     // exact's renders, the error view's compare pass (its reduction adds a fifteenth), the profile's
     // wireframe render.
-    if (scene.view.kind == ViewKind::Error) bytes += pixels * (20 + 20 + 16) * 16.0 / 15.0;
-    if (scene.view.kind == ViewKind::Profile) bytes += pixels * (20 + 20 + 20);
+    constexpr double kFloatTarget = 16 + 4; // an RGBA32F texture and its 32-bit depth
+    constexpr double kFloatColour = 16;     // the compare pass: an RGBA32F texture without depth
+    if (scene.view.kind == ViewKind::Error)
+        bytes += pixels * (kFloatTarget + kFloatTarget + kFloatColour) * 16.0 / 15.0;
+    if (scene.view.kind == ViewKind::Profile) bytes += pixels * 3 * kFloatTarget;
     std::set<int> levels;
     for (const SceneObject& object : scene.objects)
         levels.insert(object.subdivisions == kAutoSubdivisions ? kMaxSubdivisions : object.subdivisions);
@@ -35,13 +39,13 @@ double renderBytes(const Scene& scene) {
                      triangles = double(sphereTriangleCount(level));
         // The vertex arrays of the mesh's layout (mesh_layout.h), as their buffers hold them.
         bytes += meshBytes(level, scene.shading == ShadingMode::Flat ? MeshLayout::Flat : MeshLayout::Smooth);
-        // The overlay's lines (overlay.h: two 24-byte vertices a segment), on the CPU and in their buffer:
+        // The overlay's lines (overlay.h: two LineVertex a segment), on the CPU and in their buffer:
         // every edge (1.5 per triangle), and with normals one segment per face and per vertex.
         double segments = 0;
         if (scene.overlay == Overlay::Wireframe || scene.overlay == Overlay::Normals)
             segments += 1.5 * triangles;
         if (scene.overlay == Overlay::Normals) segments += triangles + vertices;
-        bytes += segments * 2 * 24 * 2;
+        bytes += segments * 2 * double(sizeof(LineVertex)) * 2;
     }
     return bytes;
 }
@@ -49,7 +53,7 @@ double renderBytes(const Scene& scene) {
 double referenceBytes(const Scene& scene) {
     // The process without GL, then per pixel the float colour (16 bytes), the object id (4), the 8-bit
     // image (4) and the PNG's RGB rows (3).
-    return 64.0 * 1024 * 1024 + double(scene.width) * scene.height * (16 + 4 + 4 + 3);
+    return kProcessBaselineBytes + double(scene.width) * scene.height * (16 + 4 + 4 + 3);
 }
 
 void checkMemoryBudget(std::string_view what, double needBytes, std::string_view sizeField) {

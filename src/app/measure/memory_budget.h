@@ -14,6 +14,8 @@ namespace shadelab::app {
 // 2 cores (EGL and OSMesa): a 64x64 render fails or crashes inside Mesa (exit 139) at random below about
 // 640 MiB of `ulimit -v`, and succeeded in every run from 660 MB up.
 inline constexpr double kGlBaselineBytes = 640.0 * 1024 * 1024;
+// The process without GL (the program, its libraries and heap at start): what `reference` adds its images to.
+inline constexpr double kProcessBaselineBytes = 64.0 * 1024 * 1024;
 
 // Bytes one render of `scene` adds on top of the baseline: the offscreen colour and depth buffers, the
 // read-back and PNG rows, and the GPU copies of every distinct sphere (vertex and index buffers).

@@ -117,7 +117,7 @@ std::optional<PngSize> claimedSize(const std::string& path) {
 // decoded (4 bytes a pixel), the difference image of the larger size and its rows for the encoder (7), the
 // files themselves, and the process without GL (measured: 29 MB peak for two 64x64 images).
 void checkCompareMemory(const CompareOptions& o) {
-    double need = 64.0 * 1024 * 1024, largest = 0;
+    double need = kProcessBaselineBytes, largest = 0;
     std::string sizes;
     for (const std::string* path : {&o.actual, &o.expected, &o.mask}) {
         if (path->empty()) continue;
