@@ -15,7 +15,7 @@ set(SHADELAB_CORE_SOURCES
   src/scene/lesson.cpp src/scene/slide_name.cpp src/scene/point_stages.cpp
   src/shading/lighting.cpp src/shading/ray_cast.cpp src/shading/probe.cpp
   src/image/image.cpp src/image/font.cpp
-  src/io/atomic_file.cpp src/io/output_path.cpp src/io/text.cpp
+  src/io/atomic_file.cpp src/io/output_path.cpp src/io/numbered_files.cpp src/io/text.cpp
   src/context/names.cpp)
 # What only the native program needs: PNG files (libpng; the page hands the browser its pixels) and the
 # analytic reference image (threads; the page checks against the native build instead).

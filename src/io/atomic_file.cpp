@@ -103,6 +103,51 @@ bool writeAll(int fd, const char* data, std::size_t size) {
     return true;
 }
 
+} // namespace
+
+namespace detail {
+
+LiveTemporary LiveTemporary::write(const fs::path& folder, std::string_view bytes) {
+    std::string path = (folder / ".shadelab-XXXXXX").string();
+    int fd = -1, slot = -1;
+    {
+        const SignalHold hold; // created and registered as one step for the signal handler
+        fd = ::mkstemp(path.data());
+        if (fd < 0) throw RuntimeError("cannot create a file in " + quoted(folder) + ": " + osError());
+        slot = registerTemp(path);
+    }
+    LiveTemporary temporary(path, slot);
+    bool written =
+        ::fchmod(fd, newFileMode()) == 0 && writeAll(fd, bytes.data(), bytes.size()) && ::fsync(fd) == 0;
+    const int error = errno;
+    if (::close(fd) != 0 || !written)
+        throw RuntimeError("cannot write " + detail::quoted(fs::path(path)) + ": " +
+                           osError(written ? errno : error));
+    return temporary;
+}
+
+LiveTemporary::LiveTemporary(LiveTemporary&& other) noexcept
+    : path_(std::move(other.path_)), slot_(other.slot_), live_(other.live_) {
+    other.live_ = false;
+    other.slot_ = -1;
+}
+
+LiveTemporary::~LiveTemporary() {
+    if (live_) ::unlink(path_.c_str());
+    unregisterTemp(slot_);
+}
+
+void LiveTemporary::release(bool renamed) {
+    if (!renamed) ::unlink(path_.c_str());
+    live_ = false;
+    unregisterTemp(slot_);
+    slot_ = -1;
+}
+
+} // namespace detail
+
+namespace {
+
 // The descriptor that a path names when it is one of this process's own: /dev/stdout, /dev/stderr,
 // /dev/stdin, /dev/fd/N, /proc/self/fd/N, /proc/thread-self/fd/N, /proc/<this pid>/fd/N. Following such a
 // path as a link would reach the file behind the descriptor and replace it.

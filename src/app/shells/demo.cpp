@@ -18,12 +18,12 @@
 #include "app/demo/demo_state.h"
 #include "app/shells/commands.h"
 #include "app/shells/panel.h"
-#include "app/shells/screenshot_files.h"
 #include "shadelab/context/window.h"
 #include "shadelab/errors.h"
 #include "shadelab/gl/loader.h"
 #include "shadelab/gl/render_target.h"
 #include "shadelab/gl/renderer.h"
+#include "shadelab/io/numbered_files.h"
 #include "shadelab/io/text.h"
 
 namespace shadelab::app {
@@ -127,9 +127,7 @@ private:
     }
 
     // Where the last frame drew the picture (above a presented lesson's band), what the pointer points in.
-    PictureRect shownPicture() const {
-        return picture_.shown().width > 0 ? picture_.shown() : pictureRect();
-    }
+    PictureRect shownPicture() const { return picture_.shown().width > 0 ? picture_.shown() : pictureRect(); }
 
     void drawFrame(Clock::time_point now) {
         int width = 0, height = 0;
@@ -228,11 +226,6 @@ private:
         const int width = picture.width, height = picture.height;
         if (width <= 0 || height <= 0) return;
         const Scene scene = sized(width, height);
-        std::string tempJson, tempPng;
-        auto removeTemps = [&] {
-            if (!tempJson.empty()) ::unlink(tempJson.c_str());
-            if (!tempPng.empty()) ::unlink(tempPng.c_str());
-        };
         // Out of memory (a big window under a limit) or a write error: say so and keep the demo running.
         try {
             // The capture may compile programs (below), and Mesa's compiler does not survive an allocation
@@ -260,19 +253,18 @@ private:
             renderer_.render(scene, width, height);
             const Image image = target.readRgba8();
             gl::bindDefaultFramebuffer();
-            tempJson = writeTemporary(options_.screenshotDir, sceneToJson(scene));
-            tempPng = writeTemporary(options_.screenshotDir, encodePng(image));
-            const std::string stem = claimFreeStem(options_.screenshotDir, screenshots_, tempJson, tempPng);
+            // The scene first, the picture last: a reader that sees the PNG finds its scene beside it.
+            const std::string stem =
+                writeNumberedFiles(options_.screenshotDir, "shadelab-", screenshots_,
+                                   {{".json", sceneToJson(scene)}, {".png", encodePng(image)}});
             std::printf("%s.png\n", stem.c_str());
             std::fflush(stdout);
         } catch (const std::bad_alloc&) {
             gl::bindDefaultFramebuffer();
-            removeTemps();
             std::fprintf(stderr, "shadelab: screenshot not saved: out of memory for a %dx%d capture\n", width,
                          height);
         } catch (const std::exception& e) {
             gl::bindDefaultFramebuffer();
-            removeTemps();
             std::fprintf(stderr, "shadelab: screenshot not saved: %s\n", printable(e.what()).c_str());
         }
     }
