@@ -147,4 +147,14 @@ std::string upperAscii(std::string_view text) {
     return out;
 }
 
+std::optional<int> digitsValue(std::string_view text, std::size_t maxDigits) {
+    if (text.empty() || text.size() > maxDigits || maxDigits > 9) return std::nullopt;
+    int value = 0;
+    for (const char c : text) {
+        if (c < '0' || c > '9') return std::nullopt;
+        value = value * 10 + (c - '0');
+    }
+    return value;
+}
+
 } // namespace shadelab

@@ -57,7 +57,8 @@ const BadValue kBadValues[] = {
     {"ViewOneSidedSplit", R"({"view": "split:phong"})", "view", &SceneOverrides::view, "split:phong",
      "--view", "\"split:phong\": a split names two sides"},
     {"ViewControlCharacter", R"({"view": "sce\u001bne"})", "view", &SceneOverrides::view, "sce\x1bne",
-     "--view", "\"sce\\u001bne\": expected scene, error, profile, outside, ndc, split:A,B or side-by-side:A,B"},
+     "--view",
+     "\"sce\\u001bne\": expected scene, error, profile, outside, ndc, split:A,B or side-by-side:A,B"},
     {"ViewLong", R"({"view": "scenescenescenescenescenescenescenescenescene"})", "view",
      &SceneOverrides::view, "scenescenescenescenescenescenescenescenescene", "--view",
      "\"scenescenescenescenescenescenescenescene...\""},
@@ -113,7 +114,25 @@ TEST(OneDoorPerValue, FlagSyntaxQuotesTheSharedRange) {
     EXPECT_EQ(refusal([&] { applyOverrides(Scene{}, size, ""); }), "--size: expected WxH with W and H in " +
                                                                        toString(kImageSizeRange) +
                                                                        " (e.g. 512x512), got \"abc\"");
+    for (const char* bad :
+         {"512x", "x512", "+5x5", " 5x5", "5x5 ", "5x5x5", "1e3x5", "5X5", "1234567890x5", "-5x5"}) {
+        size.size = bad;
+        EXPECT_NE(refusal([&] { applyOverrides(Scene{}, size, ""); }).find("--size: expected WxH"),
+                  std::string::npos)
+            << bad;
+    }
+    size.size = "640x48";
+    const Scene sized = applyOverrides(Scene{}, size, "");
+    EXPECT_EQ(sized.width, 640);
+    EXPECT_EQ(sized.height, 48);
     SceneOverrides level;
+    for (const char* bad : {"+3", "3 ", "0x3", "--3", ""}) {
+        level.subdivisions = bad;
+        EXPECT_NE(
+            refusal([&] { applyOverrides(Scene{}, level, ""); }).find("--subdivisions: expected a level"),
+            std::string::npos)
+            << bad;
+    }
     level.subdivisions = "1.5";
     EXPECT_EQ(refusal([&] { applyOverrides(Scene{}, level, ""); }),
               "--subdivisions: expected a level 0..10 or auto, got \"1.5\"");

@@ -3,7 +3,6 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <regex>
 #include <string_view>
 
 #include "shadelab/errors.h"
@@ -85,16 +84,17 @@ std::string flagList() {
 
 // The syntax is the flag's; each side's range is the scene's image.width and image.height (scene_values.h).
 void composeSize(Scene& scene, const std::string& text) {
-    static const std::regex kSize(R"(([0-9]{1,9})x([0-9]{1,9}))");
-    std::smatch m;
-    if (!std::regex_match(text, m, kSize))
+    const std::size_t x = text.find('x');
+    const auto width = digitsValue(std::string_view(text).substr(0, x), 9);
+    const auto height =
+        x == std::string::npos ? std::nullopt : digitsValue(std::string_view(text).substr(x + 1), 9);
+    if (!width || !height)
         throw InputError("--size: expected WxH with W and H in " + toString(kImageSizeRange) +
                          " (e.g. 512x512), got " + quotedValue(text));
-    const int width = std::stoi(m[1]), height = std::stoi(m[2]);
-    checkImageSize(width, "--size width");
-    checkImageSize(height, "--size height");
-    scene.width = width;
-    scene.height = height;
+    checkImageSize(*width, "--size width");
+    checkImageSize(*height, "--size height");
+    scene.width = *width;
+    scene.height = *height;
 }
 
 namespace {
@@ -103,11 +103,12 @@ namespace {
 // level above the maximum would need).
 int parseLevel(const std::string& text) {
     if (text == "auto") return kAutoSubdivisions;
-    static const std::regex kLevel(R"(-?[0-9]{1,9})");
-    if (!std::regex_match(text, kLevel))
+    const bool negative = text.starts_with('-');
+    const auto digits = digitsValue(std::string_view(text).substr(negative ? 1 : 0), 9);
+    if (!digits)
         throw InputError("--subdivisions: expected a level " + toString(kSubdivisionRange) +
                          " or auto, got " + quotedValue(text));
-    const int level = std::stoi(text);
+    const int level = negative ? -*digits : *digits;
     checkSubdivisionLevel(level, "--subdivisions");
     return level;
 }

@@ -12,7 +12,6 @@
 #include <cstring>
 #include <memory>
 #include <optional>
-#include <regex>
 
 #include <signal.h>
 #include <unistd.h>
@@ -33,17 +32,14 @@ namespace fs = std::filesystem;
 // ---- options ----
 
 void parseLevels(std::string_view text, ReportOptions& options) {
-    static const std::regex kLevels(R"(([0-9]{1,2})(?:\.\.([0-9]{1,2}))?)");
-    const std::string s(text);
-    std::smatch m;
     const std::string accepted = "expected N or A..B with 0 <= A <= B <= " + std::to_string(kMaxSubdivisions);
-    if (!std::regex_match(s, m, kLevels))
-        throw InputError("--levels: " + accepted + ", got " + quotedValue(s));
-    const int lo = std::stoi(m[1]), hi = m[2].matched ? std::stoi(m[2]) : lo;
-    if (lo > hi || hi > kMaxSubdivisions)
-        throw InputError("--levels: " + accepted + ", got " + quotedValue(s));
-    options.minLevel = lo;
-    options.maxLevel = hi;
+    const std::size_t dots = text.find("..");
+    const auto lo = digitsValue(text.substr(0, dots), 2);
+    const auto hi = dots == std::string_view::npos ? lo : digitsValue(text.substr(dots + 2), 2);
+    if (!lo || !hi || *lo > *hi || *hi > kMaxSubdivisions)
+        throw InputError("--levels: " + accepted + ", got " + quotedValue(text));
+    options.minLevel = *lo;
+    options.maxLevel = *hi;
 }
 
 void validateReportOptions(const ReportOptions& o) {

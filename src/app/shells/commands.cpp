@@ -4,7 +4,6 @@
 #include <cstdlib>
 #include <fstream>
 #include <optional>
-#include <regex>
 
 #include <nlohmann/json.hpp>
 
