@@ -47,38 +47,17 @@ constexpr std::array kShadings = {
                     "n = (M⁻¹)ᵀ·p_object at the ray's hit, then I(n)"},
 };
 
-std::size_t viewIndex(ViewKind kind) {
-    switch (kind) {
-    case ViewKind::Scene:
-        return 0;
-    case ViewKind::Error:
-        return 1;
-    case ViewKind::Split:
-        return 2;
-    case ViewKind::Profile:
-        return 3;
-    case ViewKind::Outside:
-        return 4;
-    case ViewKind::Ndc:
-        return 5;
-    }
-    return 0;
+// The row named `name` (every view and shading mode has one: view_explanations_test.cpp checks it).
+const ViewExplanation& named(std::span<const ViewExplanation> rows, std::string_view name) {
+    const auto row =
+        std::find_if(rows.begin(), rows.end(), [&](const ViewExplanation& r) { return r.name == name; });
+    return row != rows.end() ? *row : rows.front();
 }
 
-std::size_t shadingIndex(ShadingMode mode) {
-    switch (mode) {
-    case ShadingMode::Flat:
-        return 0;
-    case ShadingMode::Gouraud:
-        return 1;
-    case ShadingMode::Phong:
-        return 2;
-    case ShadingMode::Toon:
-        return 3;
-    case ShadingMode::Exact:
-        return 4;
-    }
-    return 2;
+std::string_view viewName(ViewKind kind) {
+    for (const ViewName& view : kViewNames)
+        if (view.kind == kind) return view.name;
+    return "scene";
 }
 
 constexpr std::array<ViewExplanation, kViews.size() + kShadings.size()> all() {
@@ -101,10 +80,10 @@ std::span<const ViewExplanation> viewExplanations() {
 }
 
 std::string whatYouAreSeeing(const Scene& scene) {
-    const ViewExplanation& view = kViews[viewIndex(scene.view.kind)];
+    const ViewExplanation& view = named(kViews, viewName(scene.view.kind));
     std::string text = std::string(view.name) + ": " + line(view);
     if (scene.view.kind == ViewKind::Scene || scene.view.kind == ViewKind::Split) {
-        const ViewExplanation& shading = kShadings[shadingIndex(scene.shading)];
+        const ViewExplanation& shading = named(kShadings, toString(scene.shading));
         text += " — " + std::string(shading.name) + ": " + line(shading);
         text += scene.lighting == LightingModel::Phong ? "; spec = max(v·r, 0)^α, r = −l + 2(l·n)n"
                                                        : "; spec = max(n·h, 0)^β, h = normalize(v + l)";
