@@ -100,14 +100,16 @@ case $mode in
   program)
     install_missing "${program_packages[@]}"
     build_args=(--target shadelab)
+    # Eight files to a compile (CMakeLists.txt: SHADELAB_UNITY_BUILD): the first window in half the time.
+    configure_args=(-DSHADELAB_UNITY_BUILD=ON)
     # A first configure leaves the tests out, so GoogleTest need not be installed; a tree that has them keeps them.
-    [ -f build/CMakeCache.txt ] || configure_args=(-DSHADELAB_BUILD_TESTS=OFF)
+    [ -f build/CMakeCache.txt ] || configure_args+=(-DSHADELAB_BUILD_TESTS=OFF)
     ;;
   all)
     install_missing "${program_packages[@]}" "${tests_packages[@]}" "${tools_packages[@]}"
-    configure_args=(-DSHADELAB_BUILD_TESTS=ON)
+    configure_args=(-DSHADELAB_BUILD_TESTS=ON -DSHADELAB_UNITY_BUILD=OFF)
     ;;
-  build) configure_args=(-DSHADELAB_BUILD_TESTS=ON) ;;
+  build) configure_args=(-DSHADELAB_BUILD_TESTS=ON -DSHADELAB_UNITY_BUILD=OFF) ;; # clang-tidy reads each file
 esac
 
 build_type=${SHADELAB_BUILD_TYPE:-RelWithDebInfo}

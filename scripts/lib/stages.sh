@@ -14,7 +14,7 @@ build_asan() {
   local cache=build-asan/CMakeCache.txt
   if [ -f "$cache" ] && ! grep -q '^CMAKE_CXX_COMPILER:.*clang++' "$cache"; then rm -rf build-asan; fi
   cmake -S . -B build-asan -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Debug \
-    -DSHADELAB_SANITIZE=ON -DSHADELAB_WERROR=ON -DCMAKE_EXE_LINKER_FLAGS=-fuse-ld=lld \
+    -DSHADELAB_SANITIZE=ON -DSHADELAB_WERROR=ON -DSHADELAB_UNITY_BUILD=ON -DCMAKE_EXE_LINKER_FLAGS=-fuse-ld=lld \
     -DCMAKE_SHARED_LINKER_FLAGS=-fuse-ld=lld "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g1" \
     "-DCMAKE_C_FLAGS_DEBUG=-O1 -g1" &&
     cmake --build build-asan -j"$jobs"

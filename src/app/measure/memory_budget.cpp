@@ -19,6 +19,10 @@ std::string mebibytes(double bytes) {
     return text;
 }
 
+std::string sizeText(const Scene& scene) {
+    return std::to_string(scene.width) + "x" + std::to_string(scene.height);
+}
+
 double renderBytes(const Scene& scene) {
     const double pixels = double(scene.width) * scene.height;
     // RGBA8 colour + 32-bit depth renderbuffers, the RGBA8 read-back, the Image and the PNG's RGB rows.

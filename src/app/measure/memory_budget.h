@@ -29,5 +29,7 @@ double referenceBytes(const Scene& scene);
 void checkMemoryBudget(std::string_view what, double needBytes, std::string_view sizeField);
 
 std::string mebibytes(double bytes);
+// "512x512": a scene's image size, as the budget's messages name a render.
+std::string sizeText(const Scene& scene);
 
 } // namespace shadelab::app

@@ -60,10 +60,6 @@ int runListEglDevices(Api api) {
 
 namespace {
 
-std::string sizeText(const Scene& scene) {
-    return std::to_string(scene.width) + "x" + std::to_string(scene.height);
-}
-
 } // namespace
 
 int runRender(const Scene& scene, const ContextRequest& context, const std::filesystem::path& out,

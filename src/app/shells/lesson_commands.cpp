@@ -28,10 +28,6 @@ void printWarnings(const Scene& scene, const std::string& where) {
         std::printf("  warning: %s%s\n", where.c_str(), printable(warning).c_str());
 }
 
-std::string sizeText(const Scene& scene) {
-    return std::to_string(scene.width) + "x" + std::to_string(scene.height);
-}
-
 // Everything `render` checks before it draws a scene (validateScene: its values, its work, the outside
 // view's float range; then the memory a render needs), so that `check` says valid only what `render` and
 // `slides` draw.
