@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # The browser build of shadelab (WebGL 2, Debian's emscripten):
 #   scripts/web.sh build                 installs what is missing, builds into build-web/
-#   scripts/web.sh serve [PORT]          serves the page (build-web/site/) on 127.0.0.1 (default port 8000,
-#                                        1..65535), prints the URL
+#   scripts/web.sh serve [PORT] [--lessons DIR]
+#                                        serves the page (build-web/site/) on 127.0.0.1 (default port 8000,
+#                                        1..65535), prints the URL; --lessons adds DIR's lessons (and the
+#                                        files they name inside DIR) to the page's picker, no rebuild
 #   scripts/web.sh render [SCENE.json] [--shading S] [--lighting L] [--subdivisions N] [--size WxH]
 #                         [--depth D] [--tolerance-px T] --out FILE.png
 #                                        draws the scene in headless Chromium through the WebGL 2 build and
@@ -42,8 +44,23 @@ build)
   ;;
 serve)
   [ -f "$root/build-web/site/shadelab.wasm" ] || { echo "shadelab: no browser build: run scripts/web.sh build" >&2; exit 1; }
-  # Only the page's own files (build-web/site/): no listings, no links out; the port is checked there.
-  exec /usr/bin/python3 "$root/web/serve.py" "$root/build-web/site" "${2:-8000}"
+  shift
+  port=8000 lessons=()
+  while (($#)); do
+    case "$1" in
+    --lessons)
+      (($# >= 2)) || { echo "shadelab: serve: --lessons needs a value: the folder that holds your lessons" >&2; exit 2; }
+      lessons=(--lessons "$2")
+      shift 2
+      ;;
+    --lessons=*) lessons=(--lessons "${1#--lessons=}"); shift ;;
+    -?*) echo "shadelab: serve: unknown option '$1'; serve takes [PORT] [--lessons DIR]" >&2; exit 2 ;;
+    *) port="$1"; shift ;;
+    esac
+  done
+  # Only the page's own files (build-web/site/) and DIR's: no listings, no links out; the port and DIR are
+  # checked there.
+  exec /usr/bin/python3 "$root/web/serve.py" "$root/build-web/site" "$port" "${lessons[@]}"
   ;;
 render)
   shift
@@ -51,7 +68,7 @@ render)
   exec /usr/bin/python3 "$root/web/driver.py" render "$@"
   ;;
 *)
-  echo "usage: scripts/web.sh build | serve [PORT] | render [SCENE.json] [flags] --out FILE.png" >&2
+  echo "usage: scripts/web.sh build | serve [PORT] [--lessons DIR] | render [SCENE.json] [flags] --out FILE.png" >&2
   exit 2
   ;;
 esac

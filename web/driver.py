@@ -79,7 +79,7 @@ class TestFilesHandler(PageHandler):
 class Page:
     """One Chromium with the page loaded and ready (window.shadelab.ready)."""
 
-    def __init__(self, root=ROOT, query='', extra_args=(), downloads=None, files=None):
+    def __init__(self, root=ROOT, query='', extra_args=(), downloads=None, files=None, lessons=None):
         from selenium import webdriver
         from selenium.webdriver.chrome.service import Service
         if not os.path.exists(os.path.join(root, 'shadelab.wasm')):
@@ -90,6 +90,8 @@ class Page:
             self.handler_class = handler_class
         else:
             handler_class = PageHandler
+        if lessons:  # scripts/web.sh serve --lessons DIR: the folder under /own-lessons/
+            handler_class = type('Handler', (handler_class,), {'lessons': os.path.realpath(lessons)})
         handler = functools.partial(handler_class, directory=root)
         self.server = PageServer(('127.0.0.1', 0), handler)
         threading.Thread(target=self.server.serve_forever, daemon=True).start()
@@ -160,6 +162,50 @@ class Page:
         if request.get('shift'):
             chain = chain.key_up(Keys.SHIFT)
         chain.perform()
+        time.sleep(0.2)
+
+    def refitted(self):
+        """The canvas once its drawing buffer matches its CSS size (the page refits it on a resize, which a
+        loaded machine delivers late; at most 5 s): [width, height, clientWidth, clientHeight]. A page that
+        never refits still fails the test that reads them."""
+        measure = ('const c = document.getElementById("canvas"); const r = window.devicePixelRatio || 1;'
+                   'return [c.width, c.height, c.clientWidth, c.clientHeight, r]')
+        deadline = time.time() + 5
+        time.sleep(0.3)
+        canvas = self.js(measure)
+        while time.time() < deadline and (canvas[0] != round(canvas[2] * canvas[4]) or
+                                          canvas[1] != round(canvas[3] * canvas[4])):
+            time.sleep(0.1)
+            canvas = self.js(measure)
+        return canvas[:4]
+
+    def touch(self, request):
+        """A gesture on the touch screen (Input.dispatchTouchEvent), at (x, y) CSS pixels from the canvas's
+        centre: "tap"; "drag" by (dx, dy) in steps; "pinch": two fingers on a horizontal line about the
+        point, from `from` to `to` pixels apart, in steps."""
+        box = self.js('const r = document.getElementById("canvas").getBoundingClientRect();'
+                      'return [r.left + r.width / 2, r.top + r.height / 2]')
+        x, y = box[0] + request.get('x', 0), box[1] + request.get('y', 0)
+        steps = request.get('steps', 4)
+
+        def send(kind, points):
+            self.browser.execute_cdp_cmd('Input.dispatchTouchEvent', {
+                'type': kind, 'touchPoints': [{'x': px, 'y': py, 'id': i} for i, (px, py) in enumerate(points)]})
+
+        if request['gesture'] == 'tap':
+            send('touchStart', [(x, y)])
+            send('touchEnd', [])
+        elif request['gesture'] == 'drag':
+            send('touchStart', [(x, y)])
+            for k in range(1, steps + 1):
+                send('touchMove', [(x + request['dx'] * k / steps, y + request['dy'] * k / steps)])
+            send('touchEnd', [])
+        else:
+            half = lambda k: (request['from'] + (request['to'] - request['from']) * k / steps) / 2  # noqa: E731
+            send('touchStart', [(x - half(0), y), (x + half(0), y)])
+            for k in range(1, steps + 1):
+                send('touchMove', [(x - half(k), y), (x + half(k), y)])
+            send('touchEnd', [])
         time.sleep(0.2)
 
     def load(self, text, name):
@@ -267,8 +313,8 @@ def render(argv):
 
 
 def session():
-    """Requests: {"op": "open", "query": "?…", "args": [...]} first, then load, flags, key, pointer, ui,
-    capture, message, resize, screenshot, console, quit."""
+    """Requests: {"op": "open", "query": "?…", "args": [...], "lessons": DIR} first, then load, flags, key,
+    pointer, touch, ui, capture, message, resize, phone, layout, screenshot, console, quit."""
     page = None
     for line in sys.stdin:
         request = json.loads(line)
@@ -278,7 +324,8 @@ def session():
                 if page:
                     page.close()
                 page = Page(query=request.get('query', ''), extra_args=request.get('args', []),
-                            downloads=request.get('downloads'), files=request.get('files'))
+                            downloads=request.get('downloads'), files=request.get('files'),
+                            lessons=request.get('lessons'))
                 answer = {'failed': page.failed}
             elif op == 'load':
                 answer = {'message': page.load(request['text'], request['name'])}
@@ -309,6 +356,47 @@ def session():
             elif op == 'pointer':  # real mouse input through WebDriver, offsets from the canvas's centre
                 answer = {}
                 page.pointer(request)
+            elif op == 'touch':  # a tap, a one-finger drag or a pinch (Page.touch)
+                answer = {}
+                page.touch(request)
+            elif op == 'click-element':  # a real click on a control of the page (it takes the focus)
+                from selenium.webdriver.common.action_chains import ActionChains
+                ActionChains(page.browser).click(page.browser.find_element('css selector', request['selector'])) \
+                    .perform()
+                time.sleep(0.2)
+                answer = {}
+            elif op == 'layout':  # where things are: the viewport, the page's width, each element's box and
+                # the box of the fieldset around it
+                answer = {'layout': page.js(
+                    'const box = (e) => { const r = e.getBoundingClientRect(); return {left: r.left, right: r.right,'
+                    ' top: r.top, bottom: r.bottom, width: r.width, height: r.height, scrollWidth: e.scrollWidth,'
+                    ' clientWidth: e.clientWidth}; };'
+                    'const found = {}; for (const s of arguments[0]) { const e = document.querySelector(s);'
+                    ' found[s] = e ? box(e) : null;'
+                    ' if (e && e.closest("fieldset")) found[s].fieldset = box(e.closest("fieldset")); }'
+                    'return {innerWidth: innerWidth, innerHeight: innerHeight, ratio: devicePixelRatio,'
+                    ' scrollWidth: document.documentElement.scrollWidth, elements: found};',
+                    request['selectors'])}
+            elif op == 'mutate-shader':  # a test's mutation: every shader compiled from now on has `from`
+                # replaced by `to` (WebGL's shaderSource); how many sources it changed is in "shaderMutations"
+                page.js('const from = arguments[0], to = arguments[1]; window.shadelab.shaderMutations = 0;'
+                        'const original = WebGL2RenderingContext.prototype.shaderSource;'
+                        'WebGL2RenderingContext.prototype.shaderSource = function (shader, text) {'
+                        ' if (text.includes(from)) { ++window.shadelab.shaderMutations; text = text.split(from).join(to); }'
+                        ' return original.call(this, shader, text); };', request['from'], request['to'])
+                answer = {}
+            elif op == 'shader-mutations':
+                answer = {'count': page.js('return window.shadelab.shaderMutations || 0')}
+            elif op == 'wait-ui':  # until the page's state has `value` at `path` (keys), at most 20 s
+                deadline = time.time() + 20
+                while True:
+                    found = page.js('let v = window.shadelab.ui(); for (const k of arguments[0])'
+                                    ' v = v === null || v === undefined ? v : v[k]; return v === undefined ? null : v;',
+                                    request['path'])
+                    if found == request['value'] or time.time() > deadline:
+                        break
+                    time.sleep(0.1)
+                answer = {'found': found}
             elif op == 'ui':
                 answer = {'ui': page.js('return window.shadelab.ui()')}
             elif op == 'message':
@@ -319,19 +407,14 @@ def session():
                 answer = {'width': width, 'height': height, 'data': base64.b64encode(data).decode()}
             elif op == 'resize':
                 page.browser.set_window_size(request['width'], request['height'])
-                # The page refits its canvas on the resize event, which a loaded machine delivers late: wait
-                # (at most 5 s) until the drawing buffer matches the CSS size, then report both, so a page
-                # that never refits still fails the test.
-                measure = ('const c = document.getElementById("canvas"); const r = window.devicePixelRatio || 1;'
-                           'return [c.width, c.height, c.clientWidth, c.clientHeight, r]')
-                deadline = time.time() + 5
-                time.sleep(0.3)
-                canvas = page.js(measure)
-                while time.time() < deadline and (canvas[0] != round(canvas[2] * canvas[4]) or
-                                                  canvas[1] != round(canvas[3] * canvas[4])):
-                    time.sleep(0.1)
-                    canvas = page.js(measure)
-                answer = {'canvas': canvas[:4]}
+                answer = {'canvas': page.refitted()}
+            elif op == 'phone':  # Chromium's mobile emulation: the screen, its pixel ratio, a touch screen
+                page.browser.execute_cdp_cmd('Emulation.setDeviceMetricsOverride', {
+                    'width': request['width'], 'height': request['height'],
+                    'deviceScaleFactor': request.get('scale', 1), 'mobile': True})
+                page.browser.execute_cdp_cmd('Emulation.setTouchEmulationEnabled', {'enabled': True,
+                                                                                    'maxTouchPoints': 5})
+                answer = {'canvas': page.refitted()}
             elif op == 'wait-files':  # downloads land asynchronously
                 deadline = time.time() + request.get('seconds', 20)
                 paths = request['paths']

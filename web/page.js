@@ -99,15 +99,18 @@ async function shadelabStarted() {
   wireControls();
   const names = await fetch('scenes/index.json').then((r) => r.json()).catch(() => []);
   const lessons = await fetch('lessons/index.json').then((r) => r.json()).catch(() => []);
+  const own = await ownLessons();
   $('bundled').add(new Option('(another scene)', ''));
   for (const name of names) $('bundled').add(new Option(name, name));
-  // The bundled lessons after the scenes, each as "lesson: NAME".
+  // The bundled lessons after the scenes, each as "lesson: NAME", then the lecturer's own (scripts/web.sh
+  // serve --lessons DIR) as "own lesson: NAME". An option's text is text, never markup.
   for (const name of lessons) $('bundled').add(new Option('lesson: ' + name, 'lesson:' + name));
+  for (const name of own) $('bundled').add(new Option('own lesson: ' + printable(name), 'own:' + name));
   const url = params.get('scene');
   const lessonUrl = params.get('lesson');
   let message = '';
   try {
-    message = await loadStartingScene(url, lessonUrl, names, lessons);
+    message = await loadStartingScene(url, lessonUrl, names, lessons, own);
   } catch (e) {
     // Whatever a URL did, the page starts and says it: an exception here left it never ready and silent.
     message = (lessonUrl || url) + ': cannot load it (' + e.message + ')';
@@ -119,6 +122,9 @@ async function shadelabStarted() {
   if (scale >= 0.5 && scale <= 4) $('panel').style.zoom = scale;
   showMessage(message);
   refresh();
+  // The keys go to the picture from the start: the first click on it probes (a click that takes the keys
+  // back from the panel only focuses it, page_input.js).
+  $('canvas').focus({preventScroll: true});
   window.shadelab.ready = true;
   // The title's frame time, and what changed without a control (a draw error): twice a second, and only
   // when the panel's values changed, since rewriting unchanged text still repaints the page (an idle page
@@ -126,13 +132,24 @@ async function shadelabStarted() {
   setInterval(() => refresh(true), 500);
 }
 
+// The lessons of the folder `scripts/web.sh serve --lessons DIR` serves under own-lessons/ (web/serve.py
+// lists them): names of files in that folder, each a plain name; [] when there is no such folder, or
+// when the list is not one.
+async function ownLessons() {
+  const list = await fetch(kOwnLessons + 'index.json').then((r) => (r.ok ? r.json() : [])).catch(() => []);
+  const plain = (name) => typeof name === 'string' && name.isWellFormed() && name !== '' &&
+                          !name.includes('/') && !name.includes('\\') && !name.startsWith('.');
+  return Array.isArray(list) ? list.filter(plain) : [];
+}
+
 // The scene or lesson the page opens with (?lesson=URL, ?scene=URL or the showcase), the picker set to it.
-async function loadStartingScene(url, lessonUrl, names, lessons) {
+async function loadStartingScene(url, lessonUrl, names, lessons, own) {
   let message = '';
   if (lessonUrl) {
     message = await loadUrl(lessonUrl);
     const bundled = lessons.find((name) => lessonUrl === 'lessons/' + name || lessonUrl === './lessons/' + name);
-    $('bundled').value = bundled ? 'lesson:' + bundled : '';
+    const mine = own.find((name) => lessonUrl === kOwnLessons + encodeURIComponent(name));
+    $('bundled').value = bundled ? 'lesson:' + bundled : mine ? 'own:' + mine : '';
   } else if (url) {
     message = await loadUrl(url);
     // The picker names the scene shown: a bundled one by its name, anything else as another scene.

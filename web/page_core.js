@@ -13,6 +13,8 @@ const params = new URLSearchParams(location.search);
 let api = null; // the shadelab_* functions, once the module has started
 let tables = null; // the program's flags, levels and key codes (shadelab_tables), once it has started
 let saved = 0;
+// Where scripts/web.sh serve --lessons DIR serves that folder (web/serve.py kOwnLessons).
+const kOwnLessons = 'own-lessons/';
 
 // An error stays until the next action replaces it; a notice (`notice` true: the Esc note) goes after
 // four seconds.

@@ -37,10 +37,21 @@ document.addEventListener('keydown', (event) => {
   if (press(code)) event.preventDefault();
 });
 
-// ---- mouse: drag orbits, right-drag (or Shift + drag) moves the light, a click probes, the wheel zooms ----
+// ---- mouse and touch: a drag orbits, right-drag (or Shift + drag) moves the light, a click or a tap
+// probes, the wheel or a two-finger pinch zooms ----
+// A pinch's zoom follows the fingers: spread to twice the distance, and the picture is twice as large
+// (DemoState::zoom scales the distance by 0.9 per step).
+const pinchSteps = (ratio) => Math.log(ratio) / -Math.log(0.9);
+
 function wireMouse() {
   const canvas = $('canvas');
   let last = null;
+  const fingers = new Map(); // pointerId → {x, y}: the touches on the canvas
+  let pinch = null; // {distance} while two fingers are down; until the last lifts, no orbit and no tap
+  const spread = () => {
+    const [a, b] = Array.from(fingers.values());
+    return Math.hypot(a.x - b.x, a.y - b.y);
+  };
   canvas.addEventListener('contextmenu', (e) => e.preventDefault());
   // Every move and left-button change, in canvas pixels: the profile's row, the split's divider. Sent
   // before the drag, as the window does, so a press on the divider moves it instead of the camera.
@@ -49,14 +60,35 @@ function wireMouse() {
     api.pointer(e.offsetX * scale, e.offsetY * scale, held ? 1 : 0); // main.cpp maps them to the picture
   };
   canvas.addEventListener('pointerdown', (e) => {
+    if (e.pointerType === 'touch') {
+      fingers.set(e.pointerId, {x: e.clientX, y: e.clientY});
+      if (fingers.size >= 2 || pinch) {
+        if (fingers.size === 2) pinch = {distance: spread()};
+        last = null;
+        return;
+      }
+    }
     if (e.button === 0) toPointer(e, true);
     if (e.button !== 0 && e.button !== 2) return;
+    // A mouse click that takes the keys back from the panel only focuses the canvas: no probe (a tap has
+    // no keys to take back, and probes).
+    const focusing = e.pointerType === 'mouse' && document.activeElement !== canvas;
     last = {x: e.clientX, y: e.clientY, light: e.button === 2 || e.shiftKey, travelled: 0,
-            downX: e.offsetX, downY: e.offsetY};
+            downX: e.offsetX, downY: e.offsetY, focusing, slack: e.pointerType === 'touch' ? 10 : 3};
     canvas.setPointerCapture(e.pointerId);
-    canvas.focus();
+    canvas.focus({preventScroll: true});
   });
   canvas.addEventListener('pointermove', (e) => {
+    if (fingers.has(e.pointerId)) fingers.set(e.pointerId, {x: e.clientX, y: e.clientY});
+    if (pinch) {
+      if (fingers.size === 2) {
+        const distance = spread();
+        if (distance > 0 && pinch.distance > 0) api.zoom(pinchSteps(distance / pinch.distance));
+        pinch.distance = distance;
+        refresh();
+      }
+      return;
+    }
     toPointer(e, last && !last.light);
     if (!last) {
       if (ui && (ui.view === 'profile' || ui.view.startsWith('split:'))) refresh();
@@ -69,11 +101,16 @@ function wireMouse() {
     last.y = e.clientY;
     refresh();
   });
-  const end = () => { last = null; };
-  // A left press and release that moved less than 3 px is a click: probe the point, in canvas pixels.
+  const end = (e) => {
+    last = null;
+    fingers.delete(e.pointerId);
+    if (!fingers.size) pinch = null;
+  };
+  // A left press and release that moved less than 3 px (a finger: 10 px) is a click: probe the point, in
+  // canvas pixels.
   canvas.addEventListener('pointerup', (e) => {
-    if (e.button === 0) toPointer(e, false);
-    if (last && !last.light && last.travelled < 3) {
+    if (e.button === 0 && !pinch) toPointer(e, false);
+    if (last && !last.light && !last.focusing && last.travelled < last.slack) {
       const scale = canvas.width / canvas.clientWidth;
       const error = api.probe(last.downX * scale, last.downY * scale);
       if (error) showMessage(error);

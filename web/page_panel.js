@@ -21,6 +21,7 @@ function refresh(ifChanged = false) {
   ui = JSON.parse(text);
   document.title = ui.title;
   $('status').textContent = ui.status;
+  $('seeing').textContent = ui.seeing; // what is drawn, in which space, the formula (view_explanations.h)
   // The table keeps its columns (white-space: pre), so the hint is broken into short lines of its own.
   $('probe').textContent = ui.probe ||
       'Click a point of an object: its\nl, n, v and r or h are drawn there,\nand the terms of the current mode\n' +
@@ -29,6 +30,7 @@ function refresh(ifChanged = false) {
   $('panel').hidden = !ui.showPanel;
   $('help').hidden = !ui.showHelp;
   $('help-text').textContent = ui.help;
+  $('view-help').textContent = ui.viewHelp;
   if (ui.error) showMessage(ui.error);
   const scene = ui.currentSettings;
   setIfIdle('shading', scene.shading);
@@ -249,6 +251,7 @@ function wireControls() {
   $('bundled').addEventListener('change', (e) => {
     const value = e.target.value;
     if (value.startsWith('lesson:')) loadUrl('lessons/' + value.slice(7), value.slice(7));
+    else if (value.startsWith('own:')) loadUrl(kOwnLessons + encodeURIComponent(value.slice(4)), value.slice(4));
     else if (value) loadUrl('scenes/' + value, value);
   });
   // A scene or lesson from files is none of the bundled ones: the picker says so once it has loaded. Of

@@ -8,6 +8,7 @@
 
 #include "app/demo/matrices_text.h"
 #include "app/demo/scene_flags.h"
+#include "app/demo/view_explanations.h"
 #include "page_state.h"
 #include "shadelab/context/window.h"
 #include "shadelab/geometry/sphere.h"
@@ -59,6 +60,7 @@ nlohmann::json panelJson() {
         {"title", app::windowTitle(s, p.frameMs)},
         {"status", app::statusText(s)},
         {"help", app::keyHelpText()},
+        {"viewHelp", app::viewHelpText()}, // what each view and shading mode shows: the help's second table
         {"showHelp", s.showHelp},
         {"showPanel", s.showPanel},
         {"presenting", s.presenting},
@@ -72,6 +74,7 @@ nlohmann::json panelJson() {
         {"overlay", toString(s.drawn().overlay)},
         {"view", toString(s.drawn().view)},
         {"viewReport", s.viewReport},
+        {"seeing", app::whatYouAreSeeing(s.drawn())}, // one line: what is drawn, in which space, the formula
         {"probe", app::probeText(s)},
         {"matrices", app::matricesPanelText(s.current(picture.width, picture.height), shown)},
         {"settings", settingsJson(scene)}, // the scene less its objects

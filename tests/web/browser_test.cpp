@@ -27,6 +27,7 @@
 #include <iterator>
 #include <string>
 #include <thread>
+#include <tuple>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -34,6 +35,7 @@
 
 #include "app/demo/demo_state.h"
 #include "app/demo/scene_flags.h"
+#include "app/demo/view_explanations.h"
 #include "cli/run_process.h"
 #include "gl/gl_test_support.h"
 #include "gl/projected_mesh.h"
@@ -91,6 +93,13 @@ public:
     std::size_t openWithFiles(const std::string& query, const fs::path& files) {
         return add({{"op", "open"}, {"query", query}, {"files", files.string()}});
     }
+    // The page with more of driver.py's "open" fields: "lessons" (a folder served as scripts/web.sh serve
+    // --lessons serves it).
+    std::size_t openWith(const std::string& query, json fields) {
+        fields["op"] = "open";
+        fields["query"] = query;
+        return add(fields);
+    }
     std::size_t loadUrl(const std::string& url) { return add({{"op", "load-url"}, {"url", url}}); }
     std::size_t served() { return add({{"op", "served"}}); }
     std::size_t waitFiles(const std::vector<fs::path>& paths) {
@@ -119,6 +128,30 @@ public:
     std::size_t drag(int dx, int dy, bool shift) {
         return add({{"op", "pointer"}, {"action", "drag"}, {"dx", dx}, {"dy", dy}, {"shift", shift}});
     }
+    // A touch gesture at (x, y) CSS pixels from the canvas's centre (driver.py Page.touch).
+    std::size_t tap(int x = 0, int y = 0) {
+        return add({{"op", "touch"}, {"gesture", "tap"}, {"x", x}, {"y", y}});
+    }
+    std::size_t touchDrag(int dx, int dy) {
+        return add({{"op", "touch"}, {"gesture", "drag"}, {"dx", dx}, {"dy", dy}});
+    }
+    std::size_t pinch(int fromPx, int toPx) {
+        return add({{"op", "touch"}, {"gesture", "pinch"}, {"from", fromPx}, {"to", toPx}});
+    }
+    // A real click on a control (it takes the focus from the canvas).
+    std::size_t clickElement(const std::string& selector) {
+        return add({{"op", "click-element"}, {"selector", selector}});
+    }
+    // The viewport, the document's width and each element's box (getBoundingClientRect, scrollWidth,
+    // clientWidth), null for an element that is not there.
+    std::size_t layout(const std::vector<std::string>& selectors) {
+        return add({{"op", "layout"}, {"selectors", selectors}});
+    }
+    // A mutation for a test to see fail: every shader compiled from now on has `from` replaced by `to`.
+    std::size_t mutateShader(const std::string& from, const std::string& to) {
+        return add({{"op", "mutate-shader"}, {"from", from}, {"to", to}});
+    }
+    std::size_t shaderMutations() { return add({{"op", "shader-mutations"}}); }
     std::size_t element(const std::string& selector) {
         return add({{"op", "element"}, {"selector", selector}});
     }
@@ -137,10 +170,19 @@ public:
     std::size_t resize(int width, int height) {
         return add({{"op", "resize"}, {"width", width}, {"height", height}});
     }
+    // Chromium's mobile emulation from now on: a screen of width × height CSS pixels at `scale` device
+    // pixels each, touch events on; answers the canvas's size once it has refitted, as resize.
+    std::size_t phone(int width, int height, double scale) {
+        return add({{"op", "phone"}, {"width", width}, {"height", height}, {"scale", scale}});
+    }
     std::size_t screenshot(const fs::path& path) {
         return add({{"op", "screenshot"}, {"path", path.string()}});
     }
     std::size_t console() { return add({{"op", "console"}}); }
+    // Waits (at most 20 s) until the page's state holds `value` at `path`; answers what it holds there.
+    std::size_t waitUi(const std::vector<std::string>& path, const json& value) {
+        return add({{"op", "wait-ui"}, {"path", path}, {"value", value}});
+    }
     std::size_t sleep(double seconds) { return add({{"op", "sleep"}, {"seconds", seconds}}); }
 
     // Runs the batch; false (with the test failed or skipped) when there is no browser to run it in.
@@ -440,7 +482,7 @@ TEST_F(Browser, MatchesTheNativeOpenGlEsRender) {
 // The teaching instruments in the page, with real mouse input: W draws the wireframe (its edges where
 // native render draws them for the state the page reports, within a pixel); Shift + drag moves the light
 // around the target; a click probes the point under the pointer, and the page's table holds the values the
-// native probe computes there.
+// native probe computes there; a click that only takes the focus back from the panel places no probe.
 TEST_F(Browser, OverlayLightDragAndProbeAsInTheWindow) {
     Scene scene = litSphereScene(160, LightType::Point);
     scene.objects[0].subdivisions = 3;
@@ -455,9 +497,20 @@ TEST_F(Browser, OverlayLightDragAndProbeAsInTheWindow) {
     const std::size_t moved = session.ui();
     session.click();
     const std::size_t probed = session.ui();
+    // A click that takes the keys back from the panel only focuses the canvas; the next one probes.
+    session.clickElement("#help-button"); // H: the help shows
+    session.clickElement("#help-button"); // and goes; the button keeps the focus
+    session.click(120, 80);
+    const std::size_t focused = session.ui();
+    session.click(120, 80);
+    const std::size_t probedAgain = session.ui();
     const std::size_t console = session.console();
     if (!session.run(dir_)) return;
 
+    EXPECT_EQ(session.answer(focused).at("ui").at("probe"), session.answer(probed).at("ui").at("probe"))
+        << "the click that focused the canvas placed a probe";
+    EXPECT_NE(session.answer(probedAgain).at("ui").at("probe"), session.answer(probed).at("ui").at("probe"))
+        << "the click on the focused canvas placed no probe";
     EXPECT_EQ(session.answer(press).at("result"), 1);
     const Scene wireState = parseScene(session.answer(wired).at("ui").at("atImageSize").dump(), "page state");
     EXPECT_EQ(wireState.overlay, Overlay::Wireframe);
@@ -587,9 +640,46 @@ TEST_F(Browser, KeysChangeThePictureAsInTheWindow) {
     expectCleanConsole(session.answer(console).at("console"));
 }
 
+// The NDC view of one flat red unit sphere (ambient light only: SwiftShader and llvmpipe then differ at
+// the silhouette alone) from the eye at 8, the sphere spanning distances 7 to 9: cut by the near plane at
+// 7.5 or by the far plane at 8.4, each seen from the side of the face that cuts it, under perspective and
+// orthographic projection (the scenes of views_test.cpp's
+// NdcView.ASphereTheNearOrFarPlaneCutsEndsAtTheCubesFace).
+std::vector<Scene> ndcCutScenes() {
+    std::vector<Scene> scenes;
+    for (const auto& [near, far, azimuthDeg] : {std::tuple{7.5, 10.0, 40.0}, std::tuple{6.0, 8.4, 110.0}})
+        for (ProjectionType type : {ProjectionType::Perspective, ProjectionType::Orthographic}) {
+            Scene scene;
+            scene.width = scene.height = 200;
+            scene.eye = {0, 0, 8};
+            scene.projection = {type, 40, -2.4, 2.4, -2.4, 2.4, near, far};
+            scene.view.kind = ViewKind::Ndc;
+            scene.view.observer = {azimuthDeg, 20, 1};
+            scene.objects[0].subdivisions = 5;
+            scene.objects[0].material = {{0.9, 0, 0}, {0, 0, 0}, {0, 0, 0}, 1};
+            Light ambient;
+            ambient.type = LightType::Ambient;
+            ambient.ambient = {1, 1, 1};
+            ambient.diffuse = ambient.specular = glm::dvec3(0);
+            scene.lights = {ambient};
+            scene.shading = ShadingMode::Flat;
+            scenes.push_back(scene);
+        }
+    return scenes;
+}
+
+// The NDC view's clip, per fragment, in shaders/surface.frag.glsl (NDC_VIEW), and the same in x and y only:
+// the mutation that must fail the NDC tests.
+constexpr const char* kNdcClipInCube = "any(greaterThan(abs(vCameraClip.xyz), vec3(vCameraClip.w)))";
+constexpr const char* kNdcClipXyOnly = "any(greaterThan(abs(vCameraClip.xy), vec2(vCameraClip.w)))";
+
 // The teaching views in the page: 5 (exact), E (error), V (split) and a real mouse drag of its divider, I
 // (profile) and a pointer move choosing its row. Each picture is native OpenGL ES's render of the page's
-// state (its view included) within the SwiftShader tolerance, and the state says what the key did.
+// state (its view included) within the SwiftShader tolerance, and the state says what the key did. The
+// panel's "what you are seeing" line follows the view and the shading mode (the one table,
+// view_explanations.h), and H's help shows the table under the keys. The NDC view's clip in z: spheres
+// the near or far plane cuts are drawn cut, as natively; with the page's shader clipping in x and y only
+// (a mutation made here, through WebGL's shaderSource) the same pictures fail the comparison.
 TEST_F(Browser, ViewsAsInTheWindow) {
     Scene scene = litSphereScene(200, LightType::Point);
     scene.shading = ShadingMode::Gouraud;
@@ -618,13 +708,19 @@ TEST_F(Browser, ViewsAsInTheWindow) {
         {"observer drag", [&] { return session.drag(30, 10, false); }},
         {"Q", [&] { return session.key('Q'); }},
     };
+    std::vector<std::size_t> seeing;
     for (Step& step : steps) {
         if (step.act) step.done = step.act();
         step.ui = session.ui();
         step.capture = session.capture();
+        seeing.push_back(session.element("#seeing"));
     }
     // The title after Q's picture was captured: its view report is set when the picture is drawn.
     const std::size_t afterQ = session.ui();
+    session.key('H');
+    const std::size_t help = session.element("#help");
+    const std::size_t viewHelp = session.element("#view-help");
+    session.key('H');
     // The outside view's corners on the page, as on GL, GLES and OSMesa (views_test.cpp): a volume alone.
     Scene volume;
     volume.width = volume.height = 256;
@@ -635,14 +731,32 @@ TEST_F(Browser, ViewsAsInTheWindow) {
     volume.view.kind = ViewKind::Outside;
     session.load(volume);
     const std::size_t volumeCapture = session.capture();
+    const std::vector<Scene> cuts = ndcCutScenes();
+    std::vector<std::size_t> cutCaptures, unclippedCaptures;
+    for (const Scene& cut : cuts) {
+        session.load(cut);
+        cutCaptures.push_back(session.capture());
+    }
+    // Gouraud draws ambient-only flat red as flat does, through another program: compiled after the mutation.
+    session.mutateShader(kNdcClipInCube, kNdcClipXyOnly);
+    for (Scene cut : cuts) {
+        cut.shading = ShadingMode::Gouraud;
+        session.load(cut);
+        unclippedCaptures.push_back(session.capture());
+    }
+    const std::size_t mutations = session.shaderMutations();
     const std::size_t console = session.console();
     if (!session.run(dir_)) return;
     std::vector<json> states;
-    for (const Step& step : steps) {
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+        const Step& step = steps[i];
         SCOPED_TRACE(step.what);
         const json ui = session.answer(step.ui).at("ui");
         states.push_back(ui.at("current"));
         const Scene state = parseScene(ui.at("atImageSize").dump(), "page state");
+        const json line = session.answer(seeing[i]).at("element");
+        ASSERT_TRUE(line.is_object()) << "no 'what you are seeing' line in the panel";
+        EXPECT_EQ(line.at("text"), app::whatYouAreSeeing(state));
         const Image browser = session.image(step.capture);
         const Comparison c =
             compareImages(browser, nativeGles().render(state), swiftShaderTolerance(browser));
@@ -667,6 +781,14 @@ TEST_F(Browser, ViewsAsInTheWindow) {
     EXPECT_NE(states[8].at("view_observer"), states[7].at("view_observer")) << "the drag left the observer";
     EXPECT_EQ(states[9].at("view"), "ndc");
     EXPECT_EQ(states[9].at("view_observer"), states[8].at("view_observer")) << "Q keeps the observer";
+    EXPECT_TRUE(session.answer(seeing[0]).at("element").at("text").get<std::string>().starts_with("scene: "));
+    EXPECT_NE(session.answer(seeing[0]).at("element").at("text").get<std::string>().find("gouraud: "),
+              std::string::npos);
+    EXPECT_NE(session.answer(seeing[1]).at("element").at("text").get<std::string>().find("exact: "),
+              std::string::npos);
+    EXPECT_TRUE(session.answer(seeing[9]).at("element").at("text").get<std::string>().starts_with("ndc: "));
+    EXPECT_FALSE(session.answer(help).at("element").at("hidden").get<bool>()) << "H shows the help";
+    EXPECT_EQ(session.answer(viewHelp).at("element").at("text"), app::viewHelpText());
     const std::string titleAfterQ = session.answer(afterQ).at("ui").at("title");
     EXPECT_NE(titleAfterQ.find("| ndc: observer at azimuth "), std::string::npos) << titleAfterQ;
     const Image& volumeImage = session.image(volumeCapture);
@@ -674,6 +796,28 @@ TEST_F(Browser, ViewsAsInTheWindow) {
     std::string misses;
     for (const std::string& miss : outsideCornerMisses(volumeImage, volume)) misses += miss + "\n";
     EXPECT_EQ(misses, "") << "the view volume's corners on the page";
+
+    EXPECT_GT(session.answer(mutations).at("count").get<int>(), 0)
+        << "the NDC view's shader no longer holds the clip test this test mutates: " << kNdcClipInCube;
+    for (std::size_t i = 0; i < cuts.size(); ++i) {
+        const std::string label = std::string(cuts[i].projection.near > 7 ? "near" : "far") +
+                                  " plane cuts, " + std::string(toString(cuts[i].projection.type));
+        SCOPED_TRACE(label);
+        const Image native = nativeGles().render(cuts[i]);
+        const Image& page = session.image(cutCaptures[i]);
+        const Image& unclipped = session.image(unclippedCaptures[i]);
+        const Comparison cut = compareImages(page, native, swiftShaderTolerance(page));
+        const Comparison whole = compareImages(unclipped, native, swiftShaderTolerance(unclipped));
+        std::printf("ndc, %s: page vs native %s; the page clipping in x and y only: %s\n", label.c_str(),
+                    cut.summary().c_str(), whole.summary().c_str());
+        EXPECT_TRUE(cut.passed) << cut.summary();
+        EXPECT_FALSE(whole.passed) << "the comparison cannot tell a sphere left whole in z: "
+                                   << whole.summary();
+        if (!cut.passed || whole.passed) { // to look at
+            writePng(page, dir_ / ("ndc-cut-" + std::to_string(i) + ".png"));
+            writePng(unclipped, dir_ / ("ndc-whole-" + std::to_string(i) + ".png"));
+        }
+    }
     expectCleanConsole(session.answer(console).at("console"));
 }
 
@@ -780,13 +924,33 @@ TEST_F(Browser, BadSceneShowsTheCommandLineMessage) {
 
 // Resizing the browser resizes the canvas's drawing buffer; the picture in it keeps the scene's aspect,
 // the largest that fits (fitPicture, as the window places it), and is what the page draws.
-TEST_F(Browser, CanvasFollowsTheWindow) {
+// Then the page on a phone: Chromium's mobile emulation of a 390×844 screen at 2 device pixels per CSS
+// pixel, with touch events. The picture comes first and as wide as the screen, the panel below it, nothing
+// wider than the screen; a one-finger drag orbits, a two-finger pinch zooms by the ratio of the fingers'
+// spread (60 to 90 px: the eye 1.5 times nearer), a tap probes, and the probe's table lies inside the
+// screen with none of it cut off. (The page gave the panel half the width and squeezed the picture into
+// the other half, 195 px wide, the probe's table scrolled out of sight.) Its screenshot:
+// build/web-phone.png.
+TEST_F(Browser, CanvasFollowsTheWindowAndAPhoneGetsThePictureFirstAndTouch) {
     Session session;
     session.open();
     const std::size_t wide = session.resize(1200, 600);
     const std::size_t wideUi = session.ui();
     const std::size_t tall = session.resize(700, 900);
     const std::size_t tallUi = session.ui();
+    const std::size_t phone = session.phone(390, 844, 2);
+    const std::vector<std::string> parts = {"#canvas", "#panel", "#probe"};
+    const std::size_t before = session.layout(parts);
+    const std::size_t start = session.ui();
+    session.touchDrag(80, 0);
+    const std::size_t dragged = session.ui();
+    session.pinch(60, 90);
+    const std::size_t pinched = session.ui();
+    session.tap();
+    const std::size_t tapped = session.ui();
+    const std::size_t after = session.layout(parts);
+    session.screenshot(fs::path(SHADELAB_BUILD_DIR) / "web-phone.png");
+    const std::size_t console = session.console();
     if (!session.run(dir_)) return;
     for (auto [resize, ui] : {std::pair{wide, wideUi}, std::pair{tall, tallUi}}) {
         const json canvas = session.answer(resize).at("canvas"); // [width, height, clientWidth, clientHeight]
@@ -802,6 +966,38 @@ TEST_F(Browser, CanvasFollowsTheWindow) {
     const json w = session.answer(wide).at("canvas"), t = session.answer(tall).at("canvas");
     EXPECT_GT(w[0].get<int>(), w[1].get<int>()) << "a wide window gives a wide canvas";
     EXPECT_LT(t[0].get<int>(), t[1].get<int>()) << "a tall window gives a tall canvas";
+
+    const json p = session.answer(phone).at("canvas");
+    EXPECT_EQ(p[0].get<int>(), 2 * p[2].get<int>()) << "the drawing buffer at 2 pixels per CSS pixel: " << p;
+    for (const std::size_t measured : {before, after}) {
+        const json layout = session.answer(measured).at("layout");
+        const double width = layout.at("innerWidth");
+        const json canvas = layout.at("elements").at("#canvas"), panel = layout.at("elements").at("#panel");
+        SCOPED_TRACE(layout.dump());
+        EXPECT_EQ(width, 390);
+        EXPECT_LE(layout.at("scrollWidth").get<double>(), width) << "the page is wider than the screen";
+        EXPECT_NEAR(canvas.at("left").get<double>(), 0, 1);
+        EXPECT_NEAR(canvas.at("width").get<double>(), width, 1) << "the picture is not the screen's width";
+        EXPECT_LE(canvas.at("bottom").get<double>(), panel.at("top").get<double>())
+            << "the panel is not below it";
+    }
+    const auto eye = [&](std::size_t ui) {
+        const json camera = session.answer(ui).at("ui").at("current").at("camera");
+        return glm::dvec3(camera.at("eye")[0], camera.at("eye")[1], camera.at("eye")[2]) -
+               glm::dvec3(camera.at("target")[0], camera.at("target")[1], camera.at("target")[2]);
+    };
+    EXPECT_GT(glm::length(eye(dragged) - eye(start)), 0.5) << "the drag did not orbit the camera";
+    EXPECT_NEAR(glm::length(eye(dragged)), glm::length(eye(start)), 1e-9) << "the drag zoomed";
+    EXPECT_NEAR(glm::length(eye(dragged)) / glm::length(eye(pinched)), 1.5, 0.02) << "the pinch's zoom";
+    const std::string table = session.answer(tapped).at("ui").at("probe");
+    EXPECT_EQ(table.rfind("probe: object 1,", 0), 0u) << "the tap placed no probe: " << table;
+    const json layout = session.answer(after).at("layout");
+    const json probe = layout.at("elements").at("#probe");
+    EXPECT_GE(probe.at("left").get<double>(), 0) << probe;
+    EXPECT_LE(probe.at("right").get<double>(), layout.at("innerWidth").get<double>()) << probe;
+    EXPECT_LE(probe.at("scrollWidth").get<double>(), probe.at("clientWidth").get<double>())
+        << "the probe's table is cut off at its box's edge: " << probe;
+    expectCleanConsole(session.answer(console).at("console"));
 }
 
 // S saves what the window's S saves: the picture as an opaque PNG and the scene JSON that draws it, here as
@@ -878,10 +1074,33 @@ TEST_F(Browser, PresentationLabelShowsAndF2HidesIt) {
     expectCleanConsole(session.answer(console).at("console"));
 }
 
+// A lecturer's lesson folder (scripts/web.sh serve --lessons DIR) with one lesson, whose name is markup,
+// naming a scene in a subfolder; beside it what must not be listed or served: a scene, a file that is no
+// JSON, a hidden lesson, and a link to a lesson outside the folder.
+constexpr const char* kOwnLessonName = "<img src=x onerror=alert(1)>.json";
+fs::path makeLessonFolder(const fs::path& dir) {
+    const fs::path folder = dir / "own", outside = dir / "outside";
+    fs::create_directories(folder / "scenes");
+    fs::create_directories(outside);
+    const std::string lesson = R"({"title": "Own <i>lesson</i>", "steps": [
+      {"title": "Ring", "caption": "A scene of my own.", "scene": "scenes/ring.json"},
+      {"title": "Gouraud", "caption": "The same, Gouraud.", "shading": "gouraud"}]})";
+    std::ofstream(folder / kOwnLessonName) << lesson;
+    std::ofstream(folder / "scenes" / "ring.json")
+        << R"({"image": {"width": 160, "height": 120}, "shading": "flat", "objects": [{"subdivisions": 2}]})";
+    std::ofstream(folder / "plain.json") << R"({"shading": "flat"})";
+    std::ofstream(folder / "broken.json") << "{\"steps\": ";
+    std::ofstream(folder / ".hidden.json") << lesson;
+    std::ofstream(outside / "secret.json") << R"({"title": "Not yours", "steps": []})";
+    fs::create_symlink(outside / "secret.json", folder / "linked.json");
+    return folder;
+}
+
 // Lessons in the page: the bundled lesson by ?lesson=URL, its scene files fetched beside it (../scenes/),
 // every one of its steps drawn by the page as natively at 320×180, the picker naming it; then a lesson
 // loaded as a file steps with Page Down, Space, Page Up and the panel's ▶ button, each step's picture native
-// OpenGL ES's render of that step's scene, and R returns to a changed step; the panel shows the step.
+// OpenGL ES's render of that step's scene, and R returns to a changed step; the panel shows the step. A
+// lecturer's own lesson (scripts/web.sh serve --lessons DIR) is in the picker, as text, and loads from it.
 TEST_F(Browser, LessonStepsWithKeysAndButtonsAndTheBundledLessonDrawsEveryStep) {
     const std::string text = R"({"title": "Three steps", "steps": [
       {"title": "One", "caption": "Flat at level 2.", "scene": {"image": {"width": 160, "height": 120},
@@ -895,8 +1114,10 @@ TEST_F(Browser, LessonStepsWithKeysAndButtonsAndTheBundledLessonDrawsEveryStep) 
     const Lesson bundled = loadLesson(bundledPath);
     // One page for both parts (a Chromium start is about 6 CPU-seconds), its canvas small: each step key
     // redraws it, and SwiftShader's time goes with its size.
+    const fs::path own = makeLessonFolder(dir_);
+    const Lesson ownLesson = loadLesson(own / kOwnLessonName);
     Session session;
-    session.open("?lesson=lessons/lighting.json");
+    session.openWith("?lesson=lessons/lighting.json", {{"lessons", own.string()}});
     session.resize(640, 400);
     const std::size_t bundledUi = session.ui();
     const std::size_t bundledMessage = session.message();
@@ -928,8 +1149,34 @@ TEST_F(Browser, LessonStepsWithKeysAndButtonsAndTheBundledLessonDrawsEveryStep) 
     const std::size_t afterButton = session.ui();
     const std::size_t caption = session.element("#step-caption");
     const std::size_t position = session.element("#step-out");
+    // The lecturer's folder (--lessons): its one lesson in the picker, its name as text; picked, it loads
+    // with the scene it names from the folder.
+    const std::size_t ownOption = session.element("#bundled option[value^=\"own:\"]");
+    const std::size_t secondOwn =
+        session.element("#bundled option[value^=\"own:\"] ~ option[value^=\"own:\"]");
+    session.panel("#bundled", std::string("own:") + kOwnLessonName);
+    session.waitUi({"lesson", "title"}, "Own <i>lesson</i>"); // the picker's load fetches lesson and scene
+    const std::size_t ownUi = session.ui();
+    const std::size_t ownPicture = session.capture();
+    const std::size_t ownTitle = session.element("#lesson-title");
+    const std::size_t markup = session.element("img");
     const std::size_t console = session.console();
     if (!session.run(dir_)) return;
+
+    const json option = session.answer(ownOption).at("element");
+    ASSERT_TRUE(option.is_object()) << "the lecturer's lesson is not in the picker";
+    EXPECT_EQ(option.at("text"), std::string("own lesson: ") + kOwnLessonName);
+    EXPECT_TRUE(session.answer(secondOwn).at("element").is_null())
+        << "listed beside the lesson: " << session.answer(secondOwn);
+    const json ownShown = session.answer(ownUi).at("ui");
+    ASSERT_TRUE(ownShown.at("lesson").is_object()) << ownShown.at("error");
+    EXPECT_EQ(ownShown.at("lesson").at("title"), "Own <i>lesson</i>");
+    EXPECT_EQ(session.answer(ownTitle).at("element").at("text"), "Own <i>lesson</i>");
+    EXPECT_TRUE(session.answer(markup).at("element").is_null()) << "a name or title became markup";
+    const Image ownImage = session.image(ownPicture);
+    const Comparison ownCompared = compareImages(ownImage, nativeGles().render(ownLesson.steps[0].scene),
+                                                 swiftShaderTolerance(ownImage));
+    EXPECT_TRUE(ownCompared.passed) << "the lecturer's step 1: " << ownCompared.summary();
 
     EXPECT_EQ(session.answer(load).at("message"), "") << "the lesson loads";
     for (const Shown& s : shown) {
@@ -969,8 +1216,8 @@ TEST_F(Browser, LessonStepsWithKeysAndButtonsAndTheBundledLessonDrawsEveryStep) 
 
 // The page's gaps: the picker names a bundled scene opened by ?scene=; the view menu says what
 // the split draws; every warning the command line prints for a scene shows on the page; the probe's table
-// keeps its columns (no wrapping); a spot's cutoff and exponent sliders show their numbers; Esc's note
-// goes away by itself.
+// keeps its columns (no wrapping); every menu stays inside its box; a spot's cutoff and exponent sliders
+// show their numbers; Esc's note goes away by itself.
 TEST_F(Browser, PickerViewMenuWarningsProbeSlidersAndEscAsTheCommandLineHasThem) {
     const std::string colourScene = R"({"image": {"width": 64, "height": 64},
       "lights": [{"type": "spot", "position": [0, 2, 4], "direction": [0, -0.4, -1], "cutoff_deg": 27.5,
@@ -993,6 +1240,10 @@ TEST_F(Browser, PickerViewMenuWarningsProbeSlidersAndEscAsTheCommandLineHasThem)
     const std::size_t picker = session.element("#bundled");
     const std::size_t split = session.element("#view-kind option[value=\"split\"]");
     const std::size_t probeStyle = session.element("#probe");
+    const std::vector<std::string> selects = {
+        "#bundled",       "#shading",    "#lighting", "#term",    "#perspective-matrix",
+        "#normal-matrix", "#projection", "#normals",  "#overlay", "#view-kind"};
+    const std::size_t menus = session.layout(selects);
     session.loadText(colourScene, "colour.json");
     const std::size_t warnings = session.element("#warnings");
     const std::size_t slider = session.element("#lights output");
@@ -1004,6 +1255,13 @@ TEST_F(Browser, PickerViewMenuWarningsProbeSlidersAndEscAsTheCommandLineHasThem)
     EXPECT_EQ(session.answer(picker).at("element").at("value"), "grid.json");
     EXPECT_EQ(session.answer(split).at("element").at("text"), "split: flat | gouraud (V)");
     EXPECT_EQ(session.answer(probeStyle).at("element").at("whiteSpace"), "pre");
+    // Every menu inside its fieldset's box (the view menu's longest option pushed it 8 px past it).
+    for (const std::string& select : selects) {
+        const json box = session.answer(menus).at("layout").at("elements").at(select);
+        ASSERT_TRUE(box.is_object()) << select;
+        EXPECT_LE(box.at("right").get<double>(), box.at("fieldset").at("right").get<double>()) << select;
+        EXPECT_GE(box.at("left").get<double>(), box.at("fieldset").at("left").get<double>()) << select;
+    }
     const json shown = session.answer(warnings).at("element");
     EXPECT_FALSE(shown.at("hidden").get<bool>());
     for (const std::string& warning : cliWarnings)
@@ -1575,6 +1833,30 @@ int httpStatus(int port, const std::string& target) {
     return reply.starts_with("HTTP/1.") && reply.size() > 12 ? std::stoi(reply.substr(9, 3)) : -1;
 }
 
+// The body of GET `target` from 127.0.0.1:`port` (HTTP/1.0: the server closes when it is sent), "" when
+// nothing answers.
+std::string httpBody(int port, const std::string& target) {
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    const timeval limit{5, 0};
+    ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &limit, sizeof limit);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    address.sin_port = htons(std::uint16_t(port));
+    std::string reply;
+    if (::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0) {
+        const std::string request = "GET " + target + " HTTP/1.0\r\nHost: 127.0.0.1\r\n\r\n";
+        if (::write(fd, request.data(), request.size()) == ssize_t(request.size())) {
+            char buffer[4096];
+            for (ssize_t n; (n = ::read(fd, buffer, sizeof buffer)) > 0;)
+                reply.append(buffer, std::size_t(n));
+        }
+    }
+    ::close(fd);
+    const std::size_t body = reply.find("\r\n\r\n");
+    return body == std::string::npos ? "" : reply.substr(body + 4);
+}
+
 // The status of GET / from a server just started on `port`, asked every 100 ms until it answers; -1 when
 // it has not within 20 s.
 int statusOnceServing(int port) {
@@ -1586,7 +1868,9 @@ int statusOnceServing(int port) {
 }
 
 // scripts/web.sh serve serves the page and nothing else: no build files, no listings, no links out of the
-// page's folder; a port outside 1..65535 is refused (70000 bound 4464 and printed the wrong URL).
+// page's folder; a port outside 1..65535 is refused (70000 bound 4464 and printed the wrong URL). With
+// --lessons DIR, DIR's files under /own-lessons/ by the same rules, and its lessons (only they, by name)
+// in /own-lessons/index.json; a DIR that is not a folder is refused.
 TEST_F(Browser, ServeGivesThePageAndNothingElse) {
     RunOptions options;
     options.program = SHADELAB_WEB_SH;
@@ -1596,13 +1880,21 @@ TEST_F(Browser, ServeGivesThePageAndNothingElse) {
         EXPECT_EQ(bad.exitCode, 2) << port << ": " << describe(bad);
         EXPECT_NE(bad.err.find("1..65535"), std::string::npos) << bad.err;
     }
+    const fs::path own = makeLessonFolder(dir_);
+    for (const std::string& folder : {(dir_ / "missing").string(), (own / "plain.json").string()}) {
+        const Outcome bad =
+            runWith({"serve", std::to_string(freePort()), "--lessons", folder}, dir_, options);
+        EXPECT_EQ(bad.exitCode, 2) << folder << ": " << describe(bad);
+        EXPECT_NE(bad.err.find("--lessons must name a folder"), std::string::npos) << bad.err;
+        EXPECT_NE(bad.err.find(folder), std::string::npos) << bad.err;
+    }
 
     const int port = freePort();
     ASSERT_GT(port, 0);
     const pid_t server = ::fork();
     if (server == 0) {
-        ::execl(SHADELAB_WEB_SH, SHADELAB_WEB_SH, "serve", std::to_string(port).c_str(),
-                static_cast<char*>(nullptr));
+        ::execl(SHADELAB_WEB_SH, SHADELAB_WEB_SH, "serve", std::to_string(port).c_str(), "--lessons",
+                own.c_str(), static_cast<char*>(nullptr));
         ::_exit(127);
     }
     ASSERT_GT(server, 0);
@@ -1612,6 +1904,16 @@ TEST_F(Browser, ServeGivesThePageAndNothingElse) {
     EXPECT_EQ(httpStatus(port, "/scenes/index.json"), 200);
     for (const char* outside : {"/CMakeCache.txt", "/../CMakeCache.txt", "/generated/",
                                 "/header-only/glm/glm.hpp", "/scenes/", "/%2e%2e/CMakeCache.txt"})
+        EXPECT_EQ(httpStatus(port, outside), 404) << outside;
+    const std::string list = httpBody(port, "/own-lessons/index.json");
+    EXPECT_EQ(json::parse(list, nullptr, false), json::array({kOwnLessonName})) << list;
+    EXPECT_EQ(httpStatus(port, "/own-lessons/%3Cimg%20src%3Dx%20onerror%3Dalert(1)%3E.json"), 200);
+    EXPECT_EQ(httpStatus(port, "/own-lessons/scenes/ring.json"), 200);
+    EXPECT_EQ(httpStatus(port, "/own-lessons/plain.json"), 200) << "a file in DIR, though not listed";
+    for (const char* outside :
+         {"/own-lessons/", "/own-lessons/scenes/", "/own-lessons/linked.json",
+          "/own-lessons/../outside/secret.json", "/own-lessons/%2e%2e/outside/secret.json",
+          "/own-lessons/..%2foutside/secret.json"})
         EXPECT_EQ(httpStatus(port, outside), 404) << outside;
     ::kill(server, SIGTERM);
     int status = 0;
