@@ -17,6 +17,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -504,6 +505,8 @@ TEST_F(Browser, OverlayLightDragAndProbeAsInTheWindow) {
     const std::size_t focused = session.ui();
     session.click(120, 80);
     const std::size_t probedAgain = session.ui();
+    session.key('K'); // the ambient term alone: the probe's pixel row follows what is drawn
+    const std::size_t ambient = session.ui();
     const std::size_t console = session.console();
     if (!session.run(dir_)) return;
 
@@ -581,6 +584,26 @@ TEST_F(Browser, OverlayLightDragAndProbeAsInTheWindow) {
         EXPECT_NEAR(values[k], expected.mode.color[k], 0.02) << "phong, channel " << k << "\n" << table;
         EXPECT_NEAR(values[3 + k], expected.exact.color[k], 0.02) << "exact, channel " << k << "\n" << table;
     }
+    // With K's ambient term drawn, the table's pixel row is its ambient row (both sides), and the point
+    // tracer follows the probed point through the lecture's stages.
+    const std::string ambientTable = session.answer(ambient).at("ui").at("probe");
+    const auto rowOf = [&](const char* name) {
+        std::array<double, 6> v{};
+        const std::size_t at = ambientTable.find(std::string(name) + " ");
+        EXPECT_NE(at, std::string::npos) << name << " in\n" << ambientTable;
+        if (at == std::string::npos) return v;
+        const std::string format = std::string(name) + " %lf %lf %lf | %lf %lf %lf";
+        EXPECT_EQ(
+            std::sscanf(ambientTable.c_str() + at, format.c_str(), &v[0], &v[1], &v[2], &v[3], &v[4], &v[5]),
+            6)
+            << ambientTable;
+        return v;
+    };
+    const std::array<double, 6> pixel = rowOf("pixel"), ambientRow = rowOf("ambient");
+    for (std::size_t k = 0; k < 6; ++k)
+        EXPECT_NEAR(pixel[k], std::min(1.0, ambientRow[k]), 1e-3) << "column " << k << "\n" << ambientTable;
+    for (const char* stage : {"world  α = M·p", "camera β = M_cam·α", "clip   M_proj·β", "NDC    clip/w"})
+        EXPECT_NE(ambientTable.find(stage), std::string::npos) << stage << " in\n" << ambientTable;
     expectCleanConsole(session.answer(console).at("console"));
 }
 
