@@ -484,6 +484,37 @@ TEST_F(Browser, MatchesTheNativeOpenGlEsRender) {
 // native render draws them for the state the page reports, within a pixel); Shift + drag moves the light
 // around the target; a click probes the point under the pointer, and the page's table holds the values the
 // native probe computes there; a click that only takes the focus back from the panel places no probe.
+// The pixels where an overlay's lines changed a picture (more than 30/255 in a channel from `under`).
+struct LineMask {
+    int width = 0, height = 0;
+    std::vector<bool> set;
+    std::size_t count() const { return std::size_t(std::count(set.begin(), set.end(), true)); }
+    // How many of this mask's pixels lie within a pixel of one of `other`'s.
+    std::size_t within1(const LineMask& other) const {
+        std::size_t near = 0;
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x) {
+                if (!set[std::size_t(y * width + x)]) continue;
+                bool found = false;
+                for (int dy = -1; dy <= 1 && !found; ++dy)
+                    for (int dx = -1; dx <= 1 && !found; ++dx)
+                        found = x + dx >= 0 && y + dy >= 0 && x + dx < width && y + dy < height &&
+                                other.set[std::size_t((y + dy) * width + x + dx)];
+                near += found;
+            }
+        return near;
+    }
+};
+LineMask linePixels(const Image& over, const Image& under) {
+    LineMask mask{over.width, over.height,
+                  std::vector<bool>(std::size_t(over.width) * std::size_t(over.height))};
+    for (std::size_t i = 0; i < mask.set.size(); ++i)
+        for (std::size_t k = 0; k < 3; ++k)
+            mask.set[i] =
+                mask.set[i] || std::abs(int(over.rgba[i * 4 + k]) - int(under.rgba[i * 4 + k])) > 30;
+    return mask;
+}
+
 TEST_F(Browser, OverlayLightDragAndProbeAsInTheWindow) {
     Scene scene = litSphereScene(160, LightType::Point);
     scene.objects[0].subdivisions = 3;
@@ -523,30 +554,10 @@ TEST_F(Browser, OverlayLightDragAndProbeAsInTheWindow) {
     Scene plainState = wireState;
     plainState.overlay = Overlay::None;
     const Image native = nativeGles().render(wireState), nativePlain = nativeGles().render(plainState);
-    auto linePixels = [](const Image& over, const Image& under) {
-        std::vector<bool> mask(std::size_t(over.width) * std::size_t(over.height));
-        for (std::size_t i = 0; i < mask.size(); ++i)
-            for (int k = 0; k < 3; ++k)
-                mask[i] = mask[i] || std::abs(int(over.rgba[i * 4 + std::size_t(k)]) -
-                                              int(under.rgba[i * 4 + std::size_t(k)])) > 30;
-        return mask;
-    };
-    const std::vector<bool> pageLines = linePixels(browser, browserPlain),
-                            nativeLines = linePixels(native, nativePlain);
-    std::size_t pageCount = 0, nativeCount = 0, nearNative = 0;
-    const int w = browser.width, h = browser.height;
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-            nativeCount += nativeLines[std::size_t(y * w + x)];
-            if (!pageLines[std::size_t(y * w + x)]) continue;
-            ++pageCount;
-            bool near = false;
-            for (int dy = -1; dy <= 1 && !near; ++dy)
-                for (int dx = -1; dx <= 1 && !near; ++dx)
-                    near = x + dx >= 0 && y + dy >= 0 && x + dx < w && y + dy < h &&
-                           nativeLines[std::size_t((y + dy) * w + x + dx)];
-            nearNative += near;
-        }
+    const LineMask pageLines = linePixels(browser, browserPlain),
+                   nativeLines = linePixels(native, nativePlain);
+    const std::size_t pageCount = pageLines.count(), nativeCount = nativeLines.count(),
+                      nearNative = pageLines.within1(nativeLines);
     std::printf(
         "wireframe: %zu edge pixels in the page, %zu native, %zu of the page's within 1 px of native's\n",
         pageCount, nativeCount, nearNative);
@@ -604,6 +615,48 @@ TEST_F(Browser, OverlayLightDragAndProbeAsInTheWindow) {
         EXPECT_NEAR(pixel[k], std::min(1.0, ambientRow[k]), 1e-3) << "column " << k << "\n" << ambientTable;
     for (const char* stage : {"world  α = M·p", "camera β = M_cam·α", "clip   M_proj·β", "NDC    clip/w"})
         EXPECT_NE(ambientTable.find(stage), std::string::npos) << stage << " in\n" << ambientTable;
+    expectCleanConsole(session.answer(console).at("console"));
+}
+
+// The normals overlay draws the normals the shading uses (issue 46, item 1): on an ellipsoid, J (normals by
+// M) moves the drawn normals, and under each rule the page's lines lie where native's do.
+TEST_F(Browser, NormalsOverlayFollowsTheNormalMatrix) {
+    Scene scene = litSphereScene(160, LightType::Point);
+    scene.objects[0].subdivisions = 1;
+    scene.objects[0].scale = {1.6, 0.6, 1};
+    scene.overlay = Overlay::Normals;
+    scene.term = LightingTerm::Ambient; // an even surface under the lines
+    Session session;
+    session.open();
+    session.load(scene);
+    const std::size_t rightUi = session.ui(), right = session.capture();
+    const std::size_t press = session.key('J');
+    const std::size_t modelUi = session.ui(), model = session.capture();
+    const std::size_t console = session.console();
+    if (!session.run(dir_)) return;
+    EXPECT_EQ(session.answer(press).at("result"), 1);
+    LineMask page[2], native[2];
+    int k = 0;
+    for (const auto& [ui, capture] : {std::pair{rightUi, right}, std::pair{modelUi, model}}) {
+        const Scene state = parseScene(session.answer(ui).at("ui").at("atImageSize").dump(), "page state");
+        EXPECT_EQ(state.normalMatrix, k == 0 ? NormalMatrixRule::InverseTranspose : NormalMatrixRule::Model);
+        Scene plain = state;
+        plain.overlay = Overlay::None;
+        const Image under = nativeGles().render(plain);
+        page[k] = linePixels(session.image(capture), under);
+        native[k] = linePixels(nativeGles().render(state), under);
+        SCOPED_TRACE(std::string(toString(state.normalMatrix)));
+        std::printf("normals by %s: %zu line pixels in the page, %zu native, %zu within 1 px of native's\n",
+                    std::string(toString(state.normalMatrix)).c_str(), page[k].count(), native[k].count(),
+                    page[k].within1(native[k]));
+        EXPECT_GT(native[k].count(), 200u);
+        EXPECT_GE(double(page[k].within1(native[k])), 0.95 * double(page[k].count()));
+        ++k;
+    }
+    // The two rules draw different normals: many of one's line pixels are nowhere near the other's.
+    const std::size_t moved = page[0].count() - page[0].within1(page[1]);
+    EXPECT_GT(moved, 50u) << "J did not move the drawn normals";
+    EXPECT_GT(native[0].count() - native[0].within1(native[1]), 50u);
     expectCleanConsole(session.answer(console).at("console"));
 }
 
