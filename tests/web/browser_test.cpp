@@ -1887,34 +1887,13 @@ int freePort() {
     return ntohs(address.sin_port);
 }
 
-// The status code of GET `target` from 127.0.0.1:`port` (HTTP/1.0), or -1 when nothing answers.
-int httpStatus(int port, const std::string& target) {
+// What GET `target` from 127.0.0.1:`port` (HTTP/1.0: the server closes when it is sent) answers, headers
+// and body, up to `limit` bytes; "" when nothing answers. A server that accepts and never answers fails
+// here after 5 s, not at ctest's timeout.
+std::string httpReply(int port, const std::string& target, std::size_t limit) {
     const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-    const timeval limit{5, 0}; // a server that accepts and never answers fails here, not at ctest's timeout
-    ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &limit, sizeof limit);
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    address.sin_port = htons(std::uint16_t(port));
-    std::string reply;
-    if (::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0) {
-        const std::string request = "GET " + target + " HTTP/1.0\r\nHost: 127.0.0.1\r\n\r\n";
-        if (::write(fd, request.data(), request.size()) == ssize_t(request.size())) {
-            char buffer[256];
-            const ssize_t n = ::read(fd, buffer, sizeof buffer);
-            if (n > 0) reply.assign(buffer, std::size_t(n));
-        }
-    }
-    ::close(fd);
-    return reply.starts_with("HTTP/1.") && reply.size() > 12 ? std::stoi(reply.substr(9, 3)) : -1;
-}
-
-// The body of GET `target` from 127.0.0.1:`port` (HTTP/1.0: the server closes when it is sent), "" when
-// nothing answers.
-std::string httpBody(int port, const std::string& target) {
-    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-    const timeval limit{5, 0};
-    ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &limit, sizeof limit);
+    const timeval timeout{5, 0};
+    ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &timeout, sizeof timeout);
     sockaddr_in address{};
     address.sin_family = AF_INET;
     address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
@@ -1924,11 +1903,23 @@ std::string httpBody(int port, const std::string& target) {
         const std::string request = "GET " + target + " HTTP/1.0\r\nHost: 127.0.0.1\r\n\r\n";
         if (::write(fd, request.data(), request.size()) == ssize_t(request.size())) {
             char buffer[4096];
-            for (ssize_t n; (n = ::read(fd, buffer, sizeof buffer)) > 0;)
+            for (ssize_t n; reply.size() < limit && (n = ::read(fd, buffer, sizeof buffer)) > 0;)
                 reply.append(buffer, std::size_t(n));
         }
     }
     ::close(fd);
+    return reply;
+}
+
+// The status code of GET `target`, or -1 when nothing answers.
+int httpStatus(int port, const std::string& target) {
+    const std::string reply = httpReply(port, target, 256);
+    return reply.starts_with("HTTP/1.") && reply.size() > 12 ? std::stoi(reply.substr(9, 3)) : -1;
+}
+
+// The body of GET `target`, "" when nothing answers.
+std::string httpBody(int port, const std::string& target) {
+    const std::string reply = httpReply(port, target, std::string::npos);
     const std::size_t body = reply.find("\r\n\r\n");
     return body == std::string::npos ? "" : reply.substr(body + 4);
 }
