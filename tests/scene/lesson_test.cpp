@@ -148,7 +148,8 @@ TEST(Lesson, EveryRefusalNamesItsJsonPath) {
         {R"({"title": "T", "steps": [{"title": 7}]})",
          "lesson.json: steps[0].title: must be a string, got number 7"},
         {R"({"title": "T", "steps": [{"title": "A", "shadng": "flat"}]})",
-         "lesson.json: steps[0].shadng: unknown key; expected one of title, caption, notes, scene, image, camera, "
+         "lesson.json: steps[0].shadng: unknown key; expected one of title, caption, notes, scene, image, "
+         "camera, "
          "projection, perspective_matrix, shading, lighting, term, toon_bands, tolerance_px, depth, "
          "vertex_normals, normal_matrix, overlay, view, view_at, view_observer, objects, lights, "
          "subdivisions, all_objects"},

@@ -59,7 +59,7 @@ struct EglDevicesArgs { // --egl-device list, on any command that takes it
 struct CheckArgs {
     std::string file; // a lesson or a scene
 };
-struct SlidesArgs { // the scene's other flags do not apply to a lesson
+struct SlidesArgs {                   // the scene's other flags do not apply to a lesson
     std::string lesson, outDir, deck; // at least one of outDir and deck
     std::optional<std::string> size;
     bool captions = true;

@@ -58,9 +58,7 @@ int runListEglDevices(Api api) {
     return kExitOk;
 }
 
-namespace {
-
-} // namespace
+namespace {} // namespace
 
 int runRender(const Scene& scene, const ContextRequest& context, const std::filesystem::path& out,
               bool specialize, bool verbose) {
