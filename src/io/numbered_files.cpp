@@ -49,7 +49,7 @@ std::string writeNumberedFiles(const fs::path& folder, std::string_view prefix, 
     for (int tries = 0; tries < 100000; ++tries) {
         char number[16];
         std::snprintf(number, sizeof number, "%03d", ++lastNumber);
-        const std::string stem = (folder / (std::string(prefix) + number)).string();
+        std::string stem = (folder / (std::string(prefix) + number)).string();
         std::vector<std::pair<Claim, std::string>> claimed;
         const auto unclaim = [&] {
             for (const auto& [claim, name] : claimed) ::unlink(name.c_str()); // our own links or placeholders
