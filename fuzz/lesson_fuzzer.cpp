@@ -40,7 +40,7 @@ bool safeSlideName(const std::string& name, std::size_t count) {
             (c >= '0' && c <= '9') || (i > dash && ((c >= 'a' && c <= 'z') || c == '-')) || i == dash;
         if (!ok) return false;
     }
-    return name.size() - 4 - dash - 1 <= 48;
+    return name.size() - 4 - dash - 1 <= 64; // the title part: at most 64 bytes (slide_name.cpp)
 }
 
 void checkLesson(const Lesson& lesson) {
