@@ -13,8 +13,13 @@
 
 namespace shadelab::detail {
 
+// Built by appending: gcc 12 at -O2 reports a memcpy of 2^63 bytes (-Wrestrict, a known false positive of
+// its libstdc++'s `"text" + std::string&&`) once this is inlined beside other files in a unity build.
 inline std::string quoted(const std::filesystem::path& path) {
-    return "\"" + printable(path.string()) + "\"";
+    std::string out = "\"";
+    out += printable(path.string());
+    out += '"';
+    return out;
 }
 
 inline std::string osError(int error = errno) {
