@@ -1,0 +1,333 @@
+// scripts/web.sh render and serve: the command line's rules and messages, and a server that gives the page
+// and nothing else (browser_support.h: the session and fixture).
+
+#include "web/browser_support.h"
+
+namespace shadelab::test {
+namespace {
+
+using namespace web_test;
+
+// scripts/web.sh render follows the command line's rules with its messages: a FIFO scene (it waited
+// forever) and /dev/zero (read until memory ran out) are refused as `shadelab render` refuses them; names
+// are escaped; a new file gets the mode umask gives (0600 before), a FIFO output is written through (it
+// was replaced), /dev/stdout is the open descriptor; a picture larger than one script call can carry is
+// read back in bands (8192x8192 ended in a WebDriver "script timeout").
+TEST_F(Browser, RenderScriptFollowsTheCommandLinesRules) {
+    RunOptions options;
+    options.program = SHADELAB_WEB_SH;
+    options.timeout = std::chrono::seconds(60);
+    ASSERT_EQ(::mkfifo((dir_ / "fifo.json").c_str(), 0644), 0);
+    for (const std::string& scene :
+         {std::string("fifo.json"), std::string("/dev/zero"), std::string("e\x1b[31m.json")}) {
+        const Outcome web = runWith({"render", scene, "--out", "o.png"}, dir_, options);
+        const Outcome cli = runShadelab({"render", scene, "--out", "o.png"}, dir_);
+        EXPECT_EQ(web.exitCode, 2) << scene << ": " << web.err;
+        EXPECT_EQ(web.err, cli.err) << scene;
+        EXPECT_EQ(web.err.find('\x1b'), std::string::npos) << web.err;
+    }
+    EXPECT_FALSE(fs::exists(dir_ / "o.png"));
+    // The flags are the program's one table (app::sceneFlags), read from the page: an unknown one is named,
+    // and the message lists every flag the command line has.
+    const Outcome unknown = runWith({"render", "--shade", "flat", "--out", "o.png"}, dir_, options);
+    EXPECT_EQ(unknown.exitCode, 2) << unknown.err;
+    EXPECT_NE(unknown.err.find("unknown option \"--shade\""), std::string::npos) << unknown.err;
+    for (const app::SceneFlag& flag : app::sceneFlags())
+        EXPECT_NE(unknown.err.find("--" + std::string(flag.name)), std::string::npos) << flag.name;
+    EXPECT_FALSE(fs::exists(dir_ / "o.png"));
+
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    ASSERT_EQ(runWith({"render", "--size", "32x24", "--out", "new.png"}, dir_, options).exitCode, 0);
+    EXPECT_EQ(fs::status(dir_ / "new.png").permissions(), fs::perms(0666 & ~mask));
+
+    ASSERT_EQ(::mkfifo((dir_ / "out.fifo").c_str(), 0644), 0);
+    const int fd = ::open((dir_ / "out.fifo").c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    ASSERT_GE(fd, 0);
+    std::string received;
+    bool closed = false;
+    std::thread reader([&] { closed = cli_test::readToEndWithin(fd, std::chrono::seconds(60), received); });
+    const Outcome fifo = runWith({"render", "--size", "32x24", "--out", "out.fifo"}, dir_, options);
+    if (!fifo.started) ::close(::open((dir_ / "out.fifo").c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC));
+    reader.join();
+    ::close(fd);
+    EXPECT_EQ(fifo.exitCode, 0) << fifo.err;
+    EXPECT_TRUE(closed && received.starts_with("\x89PNG")) << received.size() << " bytes through the FIFO";
+    EXPECT_TRUE(fs::is_fifo(dir_ / "out.fifo")) << "the FIFO was replaced";
+
+    const Outcome stdoutRun = runWith({"render", "--size", "32x24", "--out", "/dev/stdout"}, dir_, options);
+    EXPECT_EQ(stdoutRun.exitCode, 0) << stdoutRun.err;
+    EXPECT_TRUE(stdoutRun.out.starts_with("\x89PNG")) << stdoutRun.out.size() << " bytes on standard output";
+
+    // 3000x2900 is five bands of at most 8 MB: the same picture as the native OpenGL ES render.
+    ASSERT_EQ(runWith({"render", "--size", "3000x2900", "--out", "big.png"}, dir_, options).exitCode, 0);
+    const Image big = readPng(dir_ / "big.png");
+    Scene scene;
+    scene.width = 3000;
+    scene.height = 2900;
+    const Comparison c = compareImages(big, nativeGles().render(scene), swiftShaderTolerance(big));
+    EXPECT_TRUE(c.passed) << c.summary();
+}
+
+// scripts/web.sh render refuses what `shadelab render` refuses before any work, with its message and exit
+// code: standard output appended to the scene (`--out /dev/stdout >> scene.json`, and its other names)
+// wrote the PNG into its own input; a descriptor's name with a trailing slash (/dev/fd/1/ was taken for
+// descriptor 1) and a path under a regular file ("does not exist" where the command line says "a part of
+// ... is a file") were judged otherwise. The scene is the same after each run.
+TEST_F(Browser, RenderScriptRefusesOutputsAsTheCommandLineDoes) {
+    const std::string scene = R"({"image": {"width": 16, "height": 12}})"
+                              "\n";
+    std::ofstream(dir_ / "scene.json") << scene;
+    std::ofstream(dir_ / "afile") << "a regular file\n";
+    struct Case {
+        std::vector<std::string> args;
+        bool stdoutToScene; // standard output appended to scene.json, as `>> scene.json`
+    };
+    const std::vector<Case> cases = {
+        {{"render", "scene.json", "--out", "-"}, true},
+        {{"render", "scene.json", "--out", "/dev/stdout"}, true},
+        {{"render", "scene.json", "--out", "/dev/fd/1"}, true},
+        {{"render", "scene.json", "--out", "/proc/self/fd/1"}, true},
+        {{"render", "scene.json", "--out", "/dev/fd/1/"}, false},
+        {{"render", "scene.json", "--out", "/dev/stdout/"}, false},
+        {{"render", "scene.json", "--out", "/proc/self/fd/1/."}, false},
+        {{"render", "scene.json", "--out", "afile/sub/x.png"}, false},
+        {{"render", "scene.json", "--out", "afile/x.png"}, false},
+    };
+    for (const Case& c : cases) {
+        const std::string shown = c.args.back() + (c.stdoutToScene ? " >> scene.json" : "");
+        RunOptions options;
+        options.timeout = std::chrono::seconds(60);
+        if (c.stdoutToScene) {
+            options.stdoutPath = dir_ / "scene.json";
+            options.stdoutAppends = true;
+        }
+        options.program = SHADELAB_EXE;
+        const Outcome cli = runWith(c.args, dir_, options);
+        options.program = SHADELAB_WEB_SH;
+        const Outcome web = runWith(c.args, dir_, options);
+        EXPECT_EQ(cli.exitCode, 2) << shown << ": " << cli.err;
+        EXPECT_EQ(web.exitCode, cli.exitCode) << shown << ": " << web.err;
+        EXPECT_EQ(web.err, cli.err) << shown;
+        std::ifstream in(dir_ / "scene.json", std::ios::binary);
+        const std::string after((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        EXPECT_EQ(after, scene) << shown << ": the scene was written to";
+        std::ofstream(dir_ / "scene.json", std::ios::trunc) << scene; // whole again for the next case
+    }
+    EXPECT_FALSE(fs::exists(dir_ / "afile" / "sub"));
+}
+
+// A free TCP port on 127.0.0.1 (bound and released; the server takes it right after).
+int freePort() {
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    socklen_t size = sizeof address;
+    if (::bind(fd, reinterpret_cast<sockaddr*>(&address), size) != 0 ||
+        ::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &size) != 0) {
+        ::close(fd);
+        return -1;
+    }
+    ::close(fd);
+    return ntohs(address.sin_port);
+}
+
+// What GET `target` from 127.0.0.1:`port` (HTTP/1.0: the server closes when it is sent) answers, headers
+// and body, up to `limit` bytes; "" when nothing answers. A server that accepts and never answers fails
+// here after 5 s, not at ctest's timeout.
+std::string httpReply(int port, const std::string& target, std::size_t limit) {
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    const timeval timeout{5, 0};
+    ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &timeout, sizeof timeout);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    address.sin_port = htons(std::uint16_t(port));
+    std::string reply;
+    if (::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0) {
+        const std::string request = "GET " + target + " HTTP/1.0\r\nHost: 127.0.0.1\r\n\r\n";
+        if (::write(fd, request.data(), request.size()) == ssize_t(request.size())) {
+            char buffer[4096];
+            for (ssize_t n; reply.size() < limit && (n = ::read(fd, buffer, sizeof buffer)) > 0;)
+                reply.append(buffer, std::size_t(n));
+        }
+    }
+    ::close(fd);
+    return reply;
+}
+
+// The status code of GET `target`, or -1 when nothing answers.
+int httpStatus(int port, const std::string& target) {
+    const std::string reply = httpReply(port, target, 256);
+    return reply.starts_with("HTTP/1.") && reply.size() > 12 ? std::stoi(reply.substr(9, 3)) : -1;
+}
+
+// The body of GET `target`, "" when nothing answers.
+std::string httpBody(int port, const std::string& target) {
+    const std::string reply = httpReply(port, target, std::string::npos);
+    const std::size_t body = reply.find("\r\n\r\n");
+    return body == std::string::npos ? "" : reply.substr(body + 4);
+}
+
+// The status of GET / from a server just started on `port`, asked every 100 ms until it answers; -1 when
+// it has not within 20 s.
+int statusOnceServing(int port) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    int index = -1;
+    while ((index = httpStatus(port, "/")) < 0 && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    return index;
+}
+
+// scripts/web.sh serve serves the page and nothing else: no build files, no listings, no links out of the
+// page's folder; a port outside 1..65535 is refused (70000 bound 4464 and printed the wrong URL). With
+// --lessons DIR, DIR's files under /own-lessons/ by the same rules, and its lessons (only they, by name)
+// in /own-lessons/index.json; a DIR that is not a folder is refused.
+TEST_F(Browser, ServeGivesThePageAndNothingElse) {
+    RunOptions options;
+    options.program = SHADELAB_WEB_SH;
+    options.timeout = std::chrono::seconds(30);
+    for (const char* port : {"70000", "0", "http"}) {
+        const Outcome bad = runWith({"serve", port}, dir_, options);
+        EXPECT_EQ(bad.exitCode, 2) << port << ": " << describe(bad);
+        EXPECT_NE(bad.err.find("1..65535"), std::string::npos) << bad.err;
+    }
+    const fs::path own = makeLessonFolder(dir_);
+    for (const std::string& folder : {(dir_ / "missing").string(), (own / "plain.json").string()}) {
+        const Outcome bad =
+            runWith({"serve", std::to_string(freePort()), "--lessons", folder}, dir_, options);
+        EXPECT_EQ(bad.exitCode, 2) << folder << ": " << describe(bad);
+        EXPECT_NE(bad.err.find("--lessons must name a folder"), std::string::npos) << bad.err;
+        EXPECT_NE(bad.err.find(folder), std::string::npos) << bad.err;
+    }
+
+    const int port = freePort();
+    ASSERT_GT(port, 0);
+    const pid_t server = ::fork();
+    if (server == 0) {
+        ::execl(SHADELAB_WEB_SH, SHADELAB_WEB_SH, "serve", std::to_string(port).c_str(), "--lessons",
+                own.c_str(), static_cast<char*>(nullptr));
+        ::_exit(127);
+    }
+    ASSERT_GT(server, 0);
+    const int index = statusOnceServing(port);
+    EXPECT_EQ(index, 200) << "the page's index.html (the server did not answer within 20 s if -1)";
+    EXPECT_EQ(httpStatus(port, "/shadelab.wasm"), 200);
+    EXPECT_EQ(httpStatus(port, "/scenes/index.json"), 200);
+    for (const char* outside : {"/CMakeCache.txt", "/../CMakeCache.txt", "/generated/",
+                                "/header-only/glm/glm.hpp", "/scenes/", "/%2e%2e/CMakeCache.txt"})
+        EXPECT_EQ(httpStatus(port, outside), 404) << outside;
+    const std::string list = httpBody(port, "/own-lessons/index.json");
+    EXPECT_EQ(json::parse(list, nullptr, false), json::array({kOwnLessonName})) << list;
+    EXPECT_EQ(httpStatus(port, "/own-lessons/%3Cimg%20src%3Dx%20onerror%3Dalert(1)%3E.json"), 200);
+    EXPECT_EQ(httpStatus(port, "/own-lessons/scenes/ring.json"), 200);
+    EXPECT_EQ(httpStatus(port, "/own-lessons/plain.json"), 200) << "a file in DIR, though not listed";
+    for (const char* outside :
+         {"/own-lessons/", "/own-lessons/scenes/", "/own-lessons/linked.json",
+          "/own-lessons/../outside/secret.json", "/own-lessons/%2e%2e/outside/secret.json",
+          "/own-lessons/..%2foutside/secret.json"})
+        EXPECT_EQ(httpStatus(port, outside), 404) << outside;
+    ::kill(server, SIGTERM);
+    int status = 0;
+    ::waitpid(server, &status, 0);
+}
+
+// A client that asks for `target` and resets the connection (SO_LINGER 0) after reading a little, as a tab
+// closed mid-download does. Its small receive buffer keeps the server writing when the reset arrives.
+void requestAndHangUp(int port, const std::string& target) {
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    const int small = 4096;
+    ::setsockopt(fd, SOL_SOCKET, SO_RCVBUF, &small, sizeof small);
+    const timeval limit{5, 0};
+    ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &limit, sizeof limit);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    address.sin_port = htons(std::uint16_t(port));
+    if (::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0) {
+        const std::string request = "GET " + target + " HTTP/1.0\r\nHost: 127.0.0.1\r\n\r\n";
+        if (::write(fd, request.data(), request.size()) == ssize_t(request.size())) {
+            char buffer[256];
+            (void)!::read(fd, buffer, sizeof buffer); // the answer has started
+        }
+        const linger reset{1, 0};
+        ::setsockopt(fd, SOL_SOCKET, SO_LINGER, &reset, sizeof reset);
+    }
+    ::close(fd);
+}
+
+// web/serve.py answers a path Python cannot look up (a NUL: realpath raised, the connection closed with no
+// answer and a traceback) with 400, and a client that hangs up mid-answer (a ConnectionReset or BrokenPipe
+// traceback) leaves nothing on standard error; the server goes on answering. Served: a folder with a
+// 64 MB file, more than loopback's socket buffers take (the page's 1.3 MB wasm fit in them whole).
+TEST_F(Browser, ServeAnswersBadPathsAndIsSilentWhenAClientHangsUp) {
+    fs::create_directories(dir_ / "site");
+    std::ofstream(dir_ / "site" / "index.html") << "<!doctype html>\n";
+    std::ofstream(dir_ / "site" / "big.bin").close();
+    fs::resize_file(dir_ / "site" / "big.bin", 64 << 20); // sparse: no 64 MB written to /tmp
+    const int port = freePort();
+    ASSERT_GT(port, 0);
+    const fs::path serve = fs::path(SHADELAB_WEB_DRIVER).parent_path() / "serve.py";
+    const fs::path errors = dir_ / "serve.err";
+    const pid_t server = ::fork();
+    if (server == 0) {
+        const int err = ::open(errors.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+        if (err < 0 || ::dup2(err, STDERR_FILENO) < 0) ::_exit(126);
+        ::execl("/usr/bin/python3", "/usr/bin/python3", serve.c_str(), (dir_ / "site").c_str(),
+                std::to_string(port).c_str(), static_cast<char*>(nullptr));
+        ::_exit(127);
+    }
+    ASSERT_GT(server, 0);
+    const int index = statusOnceServing(port);
+    EXPECT_EQ(index, 200) << "index.html (the server did not answer within 20 s if -1)";
+    for (const char* bad : {"/%00", "/scenes/%00.json", "/index.html%00"})
+        EXPECT_EQ(httpStatus(port, bad), 400) << bad;
+    for (int i = 0; i < 3; ++i) requestAndHangUp(port, "/big.bin");
+    std::this_thread::sleep_for(std::chrono::milliseconds(500)); // the handlers' threads meet the resets
+    EXPECT_EQ(httpStatus(port, "/"), 200) << "the server answers after the hang-ups";
+    ::kill(server, SIGTERM);
+    int status = 0;
+    ::waitpid(server, &status, 0);
+    std::ifstream in(errors);
+    const std::string err((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(err, "") << "the server's standard error";
+}
+
+// scripts/web.sh render: the browser's `shadelab render` (a PNG of the scene's size; exit 2 with the CLI's
+// message for a bad scene; a folder as --out refused).
+TEST_F(Browser, RenderScriptWritesThePngOrSaysWhy) {
+    RunOptions options;
+    options.program = SHADELAB_WEB_SH;
+    options.timeout = std::chrono::seconds(60); // four runs, each well under the test's ctest TIMEOUT
+    const Outcome ok =
+        runWith({"render", "--size", "120x90", "--shading", "flat", "--out", "w.png"}, dir_, options);
+    ASSERT_EQ(ok.exitCode, 0) << ok.err;
+    const Image png = readPng(dir_ / "w.png");
+    EXPECT_EQ(png.width, 120);
+    EXPECT_EQ(png.height, 90);
+    Scene scene;
+    scene.width = 120;
+    scene.height = 90;
+    scene.shading = ShadingMode::Flat;
+    const Comparison c = compareImages(png, nativeGles().render(scene), swiftShaderTolerance(png));
+    EXPECT_TRUE(c.passed) << c.summary();
+
+    std::ofstream(dir_ / "bad.json") << R"({"image": {"width": 0}})";
+    const Outcome bad = runWith({"render", "bad.json", "--out", "b.png"}, dir_, options);
+    const Outcome cli = runShadelab({"render", "bad.json", "--out", "b.png"}, dir_);
+    EXPECT_EQ(bad.exitCode, 2) << bad.err;
+    EXPECT_EQ(bad.err, cli.err);
+    EXPECT_FALSE(fs::exists(dir_ / "b.png"));
+    const Outcome folder = runWith({"render", "--out", "."}, dir_, options);
+    EXPECT_EQ(folder.exitCode, 2) << folder.err;
+    // What WebGL 2 lacks is a run-time failure named by the renderer, as natively (DESIGN §7).
+    const Outcome reversed = runWith({"render", "--depth", "reversed", "--out", "r.png"}, dir_, options);
+    EXPECT_EQ(reversed.exitCode, 1) << reversed.err;
+    EXPECT_TRUE(reversed.err.starts_with("shadelab: depth reversed: needs glClipControl")) << reversed.err;
+    EXPECT_EQ(reversed.err.find("Stacktrace"), std::string::npos) << reversed.err;
+    EXPECT_FALSE(fs::exists(dir_ / "r.png"));
+}
+
+} // namespace
+} // namespace shadelab::test
