@@ -16,10 +16,13 @@
 
 namespace shadelab {
 
-// "a, b, c": the spellings of a vocabulary in its order.
-template <class Enum, std::size_t N> std::string joinNames(const std::array<Enum, N>& values) {
+// "a, b, c" (or, with `last` " or ", "a, b or c"): the spellings of a vocabulary in its order, for the
+// messages and help texts that list them, so that none is typed twice.
+template <class Enum, std::size_t N>
+std::string joinNames(const std::array<Enum, N>& values, std::string_view last = ", ") {
     std::string out;
-    for (Enum value : values) out += (out.empty() ? "" : ", ") + std::string(toString(value));
+    for (std::size_t i = 0; i < N; ++i)
+        out.append(i == 0 ? "" : i + 1 == N ? last : ", ").append(toString(values[i]));
     return out;
 }
 

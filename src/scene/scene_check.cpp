@@ -31,6 +31,10 @@ void checkIntRange(int value, IntRange range, std::string_view path) {
 
 namespace {
 
+// A perspective's vertical field of view stays below a half turn (tan(fovy/2) is infinite there), a spot's
+// cutoff at most a quarter turn (DESIGN §4: 0 ≤ cutoff_deg ≤ 90).
+constexpr double kFovyDegBelow = 180, kMaxCutoffDeg = 90;
+
 void checkGreater(double value, double min, std::string_view path) {
     checkFinite(value, path);
     if (!(value > min)) fail(path, "must be > " + formatNumber(min) + ", got " + formatNumber(value));
@@ -201,7 +205,9 @@ void checkWindow(const Projection& p) {
 void checkProjection(const Projection& p) {
     if (p.type == ProjectionType::Perspective) {
         checkGreater(p.fovyDeg, 0, "projection.fovy_deg");
-        if (!(p.fovyDeg < 180)) fail("projection.fovy_deg", "must be < 180, got " + formatNumber(p.fovyDeg));
+        if (!(p.fovyDeg < kFovyDegBelow))
+            fail("projection.fovy_deg",
+                 "must be < " + formatNumber(kFovyDegBelow) + ", got " + formatNumber(p.fovyDeg));
         // The projection holds cot(fovy/2) in 32-bit float and scales depth by it: narrower views lose the
         // picture (4.9e-324 made the window zero-wide). 1e-6 degrees keeps it near 1e8.
         if (p.fovyDeg < kMinFovyDeg)
@@ -280,7 +286,9 @@ void checkLight(const Light& light, const std::string& path) {
     if (light.type == LightType::Spot) {
         std::string cutoffPath = keyPath(path, "cutoff_deg");
         checkAtLeast(light.cutoffDeg, 0, cutoffPath);
-        if (!(light.cutoffDeg <= 90)) fail(cutoffPath, "must be <= 90, got " + formatNumber(light.cutoffDeg));
+        if (!(light.cutoffDeg <= kMaxCutoffDeg))
+            fail(cutoffPath,
+                 "must be <= " + formatNumber(kMaxCutoffDeg) + ", got " + formatNumber(light.cutoffDeg));
         checkAtLeast(light.exponent, 0, keyPath(path, "exponent"));
     }
 }

@@ -1,5 +1,6 @@
 #include "shadelab/scene/view.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -9,6 +10,7 @@
 
 #include "shadelab/geometry/subdivision.h"
 #include "shadelab/scene/scene.h"
+#include "shadelab/vocabulary.h"
 
 namespace shadelab {
 namespace {
@@ -98,9 +100,16 @@ std::optional<glm::dvec3> readColor(std::string_view text) {
     return std::nullopt;
 }
 
-constexpr const char* kSettings =
-    "term=all|ambient|diffuse|specular, normal_matrix=inverse-transpose|model, ambient=, diffuse=, "
-    "specular= (a grey or three numbers >= 0: diffuse=0.7 0.2 0.2), shininess= (>= 1)";
+std::string settingsHelp() {
+    std::string terms = joinNames(kLightingTerms), rules = joinNames(kNormalMatrixRules);
+    std::replace(terms.begin(), terms.end(), ',', '|');
+    std::replace(rules.begin(), rules.end(), ',', '|');
+    std::erase(terms, ' ');
+    std::erase(rules, ' ');
+    return "term=" + terms + ", normal_matrix=" + rules +
+           ", ambient=, diffuse=, specular= (a grey or three numbers >= 0: diffuse=0.7 0.2 0.2), shininess= "
+           "(>= 1)";
+}
 
 // "term=specular, shininess=8": each setting once; returns the reason on failure.
 std::string readSettings(std::string_view text, SplitSide& side) {
@@ -114,7 +123,7 @@ std::string readSettings(std::string_view text, SplitSide& side) {
             equals == std::string_view::npos ? "" : trim(setting.substr(equals + 1));
         const std::string shown = "\"" + std::string(setting) + "\"";
         if (equals == std::string_view::npos || value.empty())
-            return "a side's setting " + shown + " is key=value; expected " + kSettings;
+            return "a side's setting " + shown + " is key=value; expected " + settingsHelp();
         const auto once = [&](bool set) {
             return set ? "\"" + std::string(key) + "\" is set twice in one side" : std::string();
         };
@@ -122,13 +131,13 @@ std::string readSettings(std::string_view text, SplitSide& side) {
             if (auto error = once(side.term.has_value()); !error.empty()) return error;
             for (const LightingTerm term : kLightingTerms)
                 if (value == toString(term)) side.term = term;
-            if (!side.term) return "term in " + shown + " must be all, ambient, diffuse or specular";
+            if (!side.term) return "term in " + shown + " must be " + joinNames(kLightingTerms, " or ");
         } else if (key == "normal_matrix") {
             if (auto error = once(side.normalMatrix.has_value()); !error.empty()) return error;
             for (const NormalMatrixRule rule : kNormalMatrixRules)
                 if (value == toString(rule)) side.normalMatrix = rule;
             if (!side.normalMatrix)
-                return "normal_matrix in " + shown + " must be inverse-transpose or model";
+                return "normal_matrix in " + shown + " must be " + joinNames(kNormalMatrixRules, " or ");
         } else if (key == "shininess") {
             if (auto error = once(side.shininess.has_value()); !error.empty()) return error;
             side.shininess = readNumber(value);
@@ -145,7 +154,7 @@ std::string readSettings(std::string_view text, SplitSide& side) {
                        " must be a grey or three numbers >= 0 separated by spaces, e.g. " + std::string(key) +
                        "=0.7 0.2 0.2";
         } else {
-            return "unknown setting \"" + std::string(key) + "\" in a side; expected " + kSettings;
+            return "unknown setting \"" + std::string(key) + "\" in a side; expected " + settingsHelp();
         }
     }
     return "";
@@ -192,7 +201,7 @@ std::optional<std::size_t> sidesComma(std::string_view sides) {
 } // namespace
 
 std::string toString(const SplitSide& side) {
-    if (side.view) return *side.view == ViewKind::Ndc ? "ndc" : "outside";
+    if (side.view) return std::string(viewNamed(*side.view).name);
     if (!side.shading && !side.lighting && !side.level && !hasSettings(side)) return "scene";
     std::string text;
     if (side.shading) text += toString(*side.shading);
@@ -205,9 +214,7 @@ std::string toString(const View& view) {
     if (view.kind == ViewKind::Split)
         return std::string(view.layout == SplitLayout::SideBySide ? "side-by-side:" : "split:") +
                toString(view.left) + "," + toString(view.right);
-    for (const ViewName& name : kViewNames)
-        if (name.kind == view.kind) return std::string(name.name);
-    return "?";
+    return std::string(viewNamed(view.kind).name);
 }
 
 static View viewOf(ViewKind kind) {
@@ -216,15 +223,36 @@ static View viewOf(ViewKind kind) {
     return view;
 }
 
+namespace {
+
+// "scene, error, profile, outside, ndc" (`last` before the last): the views `named` picks, from their
+// one table.
+template <class Pick> std::string viewNames(Pick named, std::string_view last) {
+    std::vector<std::string_view> names;
+    for (const ViewName& view : kViewNames)
+        if (named(view.kind)) names.push_back(view.name);
+    std::string out;
+    for (std::size_t i = 0; i < names.size(); ++i)
+        out.append(i == 0 ? "" : i + 1 == names.size() ? last : ", ").append(names[i]);
+    return out;
+}
+
+// A split's side that is a whole view: the scene as it is, or a view of it from an observer.
+bool wholeSideView(ViewKind kind) {
+    return kind == ViewKind::Scene || observed(kind);
+}
+
+} // namespace
+
 ViewParse parseView(std::string_view text) {
-    constexpr const char* kExpected =
-        "expected scene, error, profile, outside, ndc, split:A,B or side-by-side:A,B (A and B each "
-        "shading[/lighting][@level][{settings}], e.g. split:gouraud,phong or "
-        "side-by-side:phong{shininess=8},phong{shininess=150})";
+    const std::string expected =
+        "expected " + viewNames([](ViewKind kind) { return kind != ViewKind::Split; }, ", ") +
+        ", split:A,B or side-by-side:A,B (A and B each shading[/lighting][@level][{settings}], e.g. "
+        "split:gouraud,phong or side-by-side:phong{shininess=8},phong{shininess=150})";
     for (const ViewName& name : kViewNames)
         if (name.kind != ViewKind::Split && text == name.name) return {viewOf(name.kind), ""};
     const bool sideBySide = text.starts_with("side-by-side:");
-    if (!text.starts_with("split:") && !sideBySide) return {std::nullopt, kExpected};
+    if (!text.starts_with("split:") && !sideBySide) return {std::nullopt, expected};
     const std::string_view sides = text.substr(sideBySide ? 13 : 6);
     const auto found = sidesComma(sides);
     if (!found)
@@ -247,16 +275,19 @@ ViewParse parseView(std::string_view text) {
         if (const std::string settingsError = readSettings(token->settings, *side); !settingsError.empty())
             return {std::nullopt, settingsError};
         // A whole view for a side: the scene as it is, or the outside or NDC view of it.
-        if (token->second.empty() && !token->level && !token->braces &&
-            (token->first == "scene" || token->first == "outside" || token->first == "ndc")) {
-            if (token->first != "scene")
-                side->view = token->first == "outside" ? ViewKind::Outside : ViewKind::Ndc;
-            continue;
+        if (token->second.empty() && !token->level && !token->braces) {
+            const auto whole = std::find_if(kViewNames.begin(), kViewNames.end(), [&](const ViewName& v) {
+                return v.name == token->first && wholeSideView(v.kind);
+            });
+            if (whole != kViewNames.end()) {
+                if (whole->kind != ViewKind::Scene) side->view = whole->kind;
+                continue;
+            }
         }
         side->level = token->level;
         if (token->first.empty() && token->second.empty()) {
             if (!token->level && !hasSettings(*side))
-                return {std::nullopt, "a split side is empty; " + std::string(kExpected)};
+                return {std::nullopt, "a split side is empty; " + expected};
             continue;
         }
         if (token->first == "scene" && token->second.empty()) continue; // "scene{shininess=8}"
@@ -265,15 +296,17 @@ ViewParse parseView(std::string_view text) {
             side->shading = parseShadingMode(token->first);
             if (!side->shading)
                 return {std::nullopt, "unknown shading \"" + std::string(token->first) +
-                                          "\" in a split side; expected flat, gouraud, phong, toon or exact "
-                                          "(or scene, outside or ndc alone)"};
+                                          "\" in a split side; expected " +
+                                          joinNames(kAllShadingModes, " or ") + " (or " +
+                                          viewNames(wholeSideView, " or ") + " alone)"};
         }
         if (loneLighting || !token->second.empty()) {
             const std::string_view lighting = loneLighting ? token->first : token->second;
             side->lighting = parseLightingModel(lighting);
             if (!side->lighting)
                 return {std::nullopt, "unknown lighting \"" + std::string(lighting) +
-                                          "\" in a split side; expected phong or blinn-phong"};
+                                          "\" in a split side; expected " +
+                                          joinNames(kLightingModels, " or ")};
         }
     }
     if (view.left == view.right)

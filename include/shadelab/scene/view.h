@@ -28,17 +28,31 @@ enum class ViewKind {
     Outside, // "outside": the scene from an observer: the eye, u, v, w, the view volume, the lights
     Ndc, // "ndc": the objects after M_proj·M_cam and the divide, in the cube [−1, 1]³, from an observer
 };
-// Every view's one spelling, in the order the help lists them ("split" takes its sides: "split:A,B").
+// Every view's one row, in the order the help lists them ("split" takes its sides: "split:A,B"): its
+// spelling, the demo's key that switches it on and off (none for the scene itself), and what it shows, one
+// line that the keys' help, --view's help and the page's view menu all print. A new view is a row here.
 struct ViewName {
     ViewKind kind;
     std::string_view name;
+    std::string_view key; // the key's label, one upper-case letter ("": no key)
+    std::string_view help;
 };
-inline constexpr std::array<ViewName, 6> kViewNames = {{{ViewKind::Scene, "scene"},
-                                                        {ViewKind::Error, "error"},
-                                                        {ViewKind::Profile, "profile"},
-                                                        {ViewKind::Outside, "outside"},
-                                                        {ViewKind::Ndc, "ndc"},
-                                                        {ViewKind::Split, "split"}}};
+inline constexpr std::array<ViewName, 6> kViewNames = {{
+    {ViewKind::Scene, "scene", "", "the scene as the camera sees it"},
+    {ViewKind::Error, "error", "E", "error view: |mode - exact| heatmap with its mean and max"},
+    {ViewKind::Profile, "profile", "I", "intensity profile along the row under the pointer"},
+    {ViewKind::Outside, "outside", "Y",
+     "outside view: the eye, u, v, w, the view volume and the lights; drag orbits the observer"},
+    {ViewKind::Ndc, "ndc", "Q",
+     "NDC view: the objects after M_proj M_cam and the divide, in the cube [-1, 1]^3"},
+    {ViewKind::Split, "split", "V", "split view: the mode beside exact; drag the divider"},
+}};
+// The row of `kind`.
+constexpr const ViewName& viewNamed(ViewKind kind) {
+    for (const ViewName& view : kViewNames)
+        if (view.kind == kind) return view;
+    return kViewNames.front();
+}
 // The views that show the scene from an observer (view_observer), not from the camera.
 inline bool observed(ViewKind kind) {
     return kind == ViewKind::Outside || kind == ViewKind::Ndc;

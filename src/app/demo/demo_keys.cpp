@@ -11,6 +11,12 @@ namespace {
 
 constexpr int kKeyMinus = '-', kKeyEqual = '='; // '+' is Shift + '=' on most layouts
 
+// A view's key, its label and its help line, from the views' one table (view.h kViewNames).
+KeyBinding viewKey(ViewKind kind, Command command) {
+    const ViewName& view = viewNamed(kind);
+    return {{int(view.key.front())}, view.key, view.help, command};
+}
+
 const std::vector<KeyBinding>& bindings() {
     static const std::vector<KeyBinding> kBindings = {
         {{'1', 'F'}, "1 / F", "flat shading", Command::Flat},
@@ -18,17 +24,11 @@ const std::vector<KeyBinding>& bindings() {
         {{'3', 'P'}, "3 / P", "Phong shading", Command::Phong},
         {{'4', 'T'}, "4 / T", "toon shading", Command::Toon},
         {{'5', 'X'}, "5 / X", "exact: the sphere ray-cast per pixel", Command::Exact},
-        {{'E'}, "E", "error view: |mode - exact| heatmap with its mean and max", Command::ToggleErrorView},
-        {{'V'}, "V", "split view: the mode beside exact; drag the divider", Command::ToggleSplitView},
-        {{'I'}, "I", "intensity profile along the row under the pointer", Command::ToggleProfileView},
-        {{'Y'},
-         "Y",
-         "outside view: the eye, u, v, w, the view volume and the lights; drag orbits the observer",
-         Command::ToggleOutsideView},
-        {{'Q'},
-         "Q",
-         "NDC view: the objects after M_proj M_cam and the divide, in the cube [-1, 1]^3",
-         Command::ToggleNdcView},
+        viewKey(ViewKind::Error, Command::ToggleErrorView),
+        viewKey(ViewKind::Split, Command::ToggleSplitView),
+        viewKey(ViewKind::Profile, Command::ToggleProfileView),
+        viewKey(ViewKind::Outside, Command::ToggleOutsideView),
+        viewKey(ViewKind::Ndc, Command::ToggleNdcView),
         {{'B'}, "B", "Phong <-> Blinn-Phong lighting", Command::ToggleLighting},
         {{'K'}, "K", "term: all, then ambient, diffuse, specular alone", Command::NextTerm},
         {{'U'},

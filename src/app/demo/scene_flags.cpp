@@ -15,12 +15,15 @@
 namespace shadelab::app {
 namespace {
 
-// "scene, error, profile, outside, ndc": the views named alone, from their one table (view.h).
-std::string viewNames() {
-    std::string names;
+// "scene (the scene as the camera sees it), error (E: error view: ...), ...": every view named alone with
+// its key and what it shows, from their one table (view.h kViewNames).
+std::string viewHelp() {
+    std::string text;
     for (const ViewName& view : kViewNames)
-        if (view.kind != ViewKind::Split) names += (names.empty() ? "" : ", ") + std::string(view.name);
-    return names;
+        if (view.kind != ViewKind::Split)
+            text += (text.empty() ? "" : ", ") + std::string(view.name) + " (" +
+                    (view.key.empty() ? "" : std::string(view.key) + ": ") + std::string(view.help) + ")";
+    return text;
 }
 
 } // namespace
@@ -58,10 +61,9 @@ const std::vector<SceneFlag>& sceneFlags() {
          "Lines over the surface: " + joinNames(kOverlays) +
              " (wireframe: the mesh's edges; normals: edges, face and vertex normals)"},
         {"view", &SceneOverrides::view,
-         "What the picture shows: " + viewNames() +
-             " (error: |mode - exact| heatmap; profile: intensity along a row; outside: the camera and its "
-             "view volume from an observer; ndc: the objects in the cube [-1,1]^3), split:A,B or "
-             "side-by-side:A,B (A, B each shading[/lighting][@level][{settings}], e.g. split:gouraud,phong, "
+         "What the picture shows: " + viewHelp() +
+             ", split:A,B or side-by-side:A,B (V: " + std::string(viewNamed(ViewKind::Split).help) +
+             "; A, B each shading[/lighting][@level][{settings}], e.g. split:gouraud,phong, "
              "split:phong@4,phong@6, side-by-side:phong{shininess=8},phong{shininess=150}; settings: term, "
              "normal_matrix, ambient, diffuse, specular, shininess)"},
         {"size", &SceneOverrides::size, "Image size WxH, e.g. 512x512 (overrides the scene)"},

@@ -54,12 +54,6 @@ const ViewExplanation& named(std::span<const ViewExplanation> rows, std::string_
     return row != rows.end() ? *row : rows.front();
 }
 
-std::string_view viewName(ViewKind kind) {
-    for (const ViewName& view : kViewNames)
-        if (view.kind == kind) return view.name;
-    return "scene";
-}
-
 constexpr std::array<ViewExplanation, kViews.size() + kShadings.size()> all() {
     std::array<ViewExplanation, kViews.size() + kShadings.size()> rows{};
     std::size_t i = 0;
@@ -80,7 +74,7 @@ std::span<const ViewExplanation> viewExplanations() {
 }
 
 std::string whatYouAreSeeing(const Scene& scene) {
-    const ViewExplanation& view = named(kViews, viewName(scene.view.kind));
+    const ViewExplanation& view = named(kViews, viewNamed(scene.view.kind).name);
     std::string text = std::string(view.name) + ": " + line(view);
     if (scene.view.kind == ViewKind::Scene || scene.view.kind == ViewKind::Split) {
         const ViewExplanation& shading = named(kShadings, toString(scene.shading));
