@@ -276,9 +276,10 @@ ViewParse parseView(std::string_view text) {
             return {std::nullopt, settingsError};
         // A whole view for a side: the scene as it is, or the outside or NDC view of it.
         if (token->second.empty() && !token->level && !token->braces) {
-            const auto whole = std::find_if(kViewNames.begin(), kViewNames.end(), [&](const ViewName& v) {
-                return v.name == token->first && wholeSideView(v.kind);
-            });
+            const auto whole =
+                std::find_if(kViewNames.begin(), kViewNames.end(), [name = token->first](const ViewName& v) {
+                    return v.name == name && wholeSideView(v.kind);
+                });
             if (whole != kViewNames.end()) {
                 if (whole->kind != ViewKind::Scene) side->view = whole->kind;
                 continue;
