@@ -1,204 +1,31 @@
+// The front (gl/renderer.h): the scene draw for a plain scene, the views for the rest, each given the
+// front's settings as the draw's options; and the images drawn over a picture.
 #include "shadelab/gl/renderer.h"
-
-#include <algorithm>
-#include <cmath>
-#include <numbers>
-#include <string>
-
-#include <glm/gtc/type_ptr.hpp>
 
 #include <glad/gl.h>
 
-#include "shadelab/errors.h"
-#include "shadelab/geometry/subdivision.h"
 #include "shadelab/gl/loader.h"
-#include "shadelab/scene/outside_view.h"
-#include "shadelab/shading/ray_cast.h"
+
+#include "gl/scene_draw.h"
+#include "gl/views.h"
 
 namespace shadelab::gl {
-namespace {
 
-// The LIGHT_* code of shaders/lighting.glsl: the enum's value (ProgramVariant::defines writes them).
-int lightTypeCode(LightType type) {
-    return int(type);
-}
+Renderer::Renderer() : sceneDraw_(std::make_unique<SceneDraw>()) {}
 
-void setVec3(GLint location, const glm::dvec3& value) {
-    const glm::vec3 v(value);
-    glUniform3fv(location, 1, glm::value_ptr(v));
-}
-
-// Calls visit(locations, light) for each light the program has a slot for: the uber program's one array
-// in scene order, or a specialized program's array per type (in scene order within a type). Ambient lights
-// have no slot in a specialized program (their sum is uAmbientProduct).
-template <class Visit>
-void forEachLightSlot(const SurfaceLocations& at, bool specialized, const std::vector<Light>& lightsView,
-                      Visit visit) {
-    if (!specialized) {
-        const std::size_t count = std::min<std::size_t>(lightsView.size(), kMaxLights); // validateScene
-        for (std::size_t i = 0; i < count; ++i) visit(at.lights[0][i], lightsView[i]);
-        return;
-    }
-    std::size_t counts[4] = {0, 0, 0, 0};
-    for (const Light& light : lightsView) {
-        const auto type = std::size_t(lightTypeCode(light.type));
-        if (type != 0) visit(at.lights[type].at(counts[type]++), light);
-    }
-}
-
-// What the lights are and where, once per frame and program; `lightsView` is already in view space. Their
-// colours depend on the object too (setLightValues).
-void setLightGeometry(const SurfaceLocations& at, bool specialized, const std::vector<Light>& lightsView) {
-    if (!specialized) glUniform1i(at.lightCount, std::min<int>(int(lightsView.size()), kMaxLights));
-    forEachLightSlot(at, specialized, lightsView, [](const LightLocations& l, const Light& light) {
-        glUniform1i(l.type, lightTypeCode(light.type)); // −1 in a specialized program: ignored
-        setVec3(l.positionView, light.position);
-        setVec3(l.directionView, safeNormalize(light.direction, glm::dvec3(0, 0, -1)));
-    });
-}
-
-// Per object: the material multiplied into each light's colours on the CPU (lightValues: k_a·I_a,
-// k_d·I_d, k_s·I_s in double, each rounded to float once), so the shaders read three colours per light
-// instead of forming products of six per fragment (shaders/lighting.glsl says why that matters on
-// llvmpipe); with the lights' attenuation and cones. A program with the values compiled in has none of
-// these uniforms (location −1: ignored).
-void setLightValues(const SurfaceLocations& at, bool specialized, const std::vector<Light>& lightsView,
-                    const Material& material) {
-    glUniform1f(at.shininess, shininessValue(material));
-    forEachLightSlot(at, specialized, lightsView, [&](const LightLocations& l, const Light& light) {
-        const LightValues v = lightValues(light, material);
-        glUniform3fv(l.ambientProduct, 1, glm::value_ptr(v.ambientProduct)); // uber programs only
-        glUniform3fv(l.diffuseProduct, 1, glm::value_ptr(v.diffuseProduct));
-        glUniform3fv(l.specularProduct, 1, glm::value_ptr(v.specularProduct));
-        glUniform3fv(l.attenuation, 1, glm::value_ptr(v.attenuation));
-        glUniform1f(l.cosCutoff, v.cosCutoff);
-        glUniform1f(l.exponent, v.exponent);
-    });
-    if (specialized) glUniform3fv(at.ambientProduct, 1, glm::value_ptr(ambientProduct(lightsView, material)));
-}
-
-void setTransforms(const SurfaceLocations& at, const glm::dmat4& clipFromView,
-                   const glm::dmat4& viewFromObject, NormalMatrixRule rule) {
-    // Composed in double; only the camera-relative products are rounded to float.
-    const glm::mat4 clipFromObject(clipFromView * viewFromObject);
-    const glm::mat4 viewFromObjectF(viewFromObject);
-    const glm::mat3 normalViewFromObjectF(normalViewFromObject(viewFromObject, rule)); // O(1): fits float
-    glUniformMatrix4fv(at.clipFromObject, 1, GL_FALSE, glm::value_ptr(clipFromObject));
-    glUniformMatrix4fv(at.viewFromObject, 1, GL_FALSE, glm::value_ptr(viewFromObjectF));
-    glUniformMatrix3fv(at.normalViewFromObject, 1, GL_FALSE, glm::value_ptr(normalViewFromObjectF));
-}
-
-// Back faces of a closed mesh lie behind its front faces: culling them halves the fragments shaded
-// (measured: ~1.9 fragments per covered pixel without). Where the near plane cuts the object open its
-// inside shows, as in the analytic reference, so there nothing is culled.
-void cullBackFaces(const SceneObject& object, const glm::dmat4& viewFromObject, double near) {
-    const double centerZ = viewFromObject[3].z;
-    const double radius = object.radius * std::max({std::abs(object.scale.x), std::abs(object.scale.y),
-                                                    std::abs(object.scale.z)});
-    if (centerZ + radius > -near) {
-        glDisable(GL_CULL_FACE);
-        return;
-    }
-    glEnable(GL_CULL_FACE);
-    glCullFace(GL_BACK);
-    // Counter-clockwise from outside in object space; a mirroring transform turns that clockwise.
-    glFrontFace(glm::determinant(glm::dmat3(viewFromObject)) < 0 ? GL_CW : GL_CCW);
-}
-
-// The screen-space rectangle, in NDC, that holds the object's projection: the projected corners of its
-// bounding box, widened by two pixels, clipped to the viewport. Where the box reaches the near plane (the
-// object may be cut open) or behind the eye, the whole viewport. Empty (x0 > x1) when nothing is visible.
-glm::vec4 proxyRectangle(const glm::dmat4& clipFromView, const glm::dmat4& viewFromObject, double near,
-                         bool orthographic, int width, int height) {
-    glm::dvec2 lo(1e300), hi(-1e300);
-    for (int corner = 0; corner < 8; ++corner) {
-        const glm::dvec4 view =
-            viewFromObject * glm::dvec4(corner & 1 ? 1 : -1, corner & 2 ? 1 : -1, corner & 4 ? 1 : -1, 1);
-        if (!orthographic && !(view.z < -near)) return {-1, -1, 1, 1};
-        const glm::dvec4 clip = clipFromView * view;
-        const glm::dvec2 ndc = glm::dvec2(clip) / clip.w;
-        lo = glm::min(lo, ndc);
-        hi = glm::max(hi, ndc);
-    }
-    const glm::dvec2 pad(4.0 / width, 4.0 / height); // two pixels
-    lo = glm::max(lo - pad, glm::dvec2(-1));
-    hi = glm::min(hi + pad, glm::dvec2(1));
-    if (!(lo.x < hi.x && lo.y < hi.y)) return {1, 1, -1, -1};
-    return {float(lo.x), float(lo.y), float(hi.x), float(hi.y)};
-}
-
-} // namespace
-
-Renderer::Renderer() = default;
-
-void Renderer::setSpecialization(Specialization specialization) {
-    specialization_ = specialization;
-}
-
-const GpuMesh& Renderer::mesh(int level, VertexNormals normals, MeshLayout layout) {
-    // Flat shading reads face normals only, so both vertex-normal kinds share one flat mesh.
-    if (layout == MeshLayout::Flat) normals = VertexNormals::Averaged;
-    auto& slot = meshes_[{level, normals, layout}];
-    if (!slot) slot = std::make_unique<GpuMesh>(buildSphere(level, normals), layout);
-    return *slot;
-}
-
-const Renderer::DrawPlan& Renderer::drawPlan(const Scene& sized, const ProgramVariant& variant) {
-    // The views draw several scenes a frame (a split's two sides, the error view's passes): the last few
-    // plans are kept, the latest first.
-    constexpr std::size_t kPlansKept = 4;
-    for (std::size_t i = 0; i < plans_.size(); ++i) {
-        const DrawPlan& p = plans_[i];
-        if (p.specialization == specialization_ && p.variant == variant && p.scene == sized) {
-            if (i != 0)
-                std::rotate(plans_.begin(), plans_.begin() + std::ptrdiff_t(i),
-                            plans_.begin() + std::ptrdiff_t(i) + 1);
-            return plans_.front();
-        }
-    }
-    DrawPlan plan{sized, variant, specialization_, {}, {}};
-    plan.programs.reserve(sized.objects.size());
-    // One program for all, or (values compiled in) one per material, found again for the next object of
-    // the same material in a row.
-    const SurfaceProgram* shared = specialization_ == Specialization::Values ? nullptr : &program(variant);
-    for (std::size_t i = 0; i < sized.objects.size(); ++i) {
-        const Material& material = sized.objects[i].material;
-        if (shared)
-            plan.programs.push_back(shared);
-        else if (i > 0 && material == sized.objects[i - 1].material)
-            plan.programs.push_back(plan.programs.back());
-        else
-            plan.programs.push_back(&program(variant.withValues(sized, material)));
-    }
-    if (sized.shading != ShadingMode::Exact) {
-        const MeshLayout layout = sized.shading == ShadingMode::Flat && !variant.flatGeometryShader
-                                      ? MeshLayout::Flat
-                                      : MeshLayout::Smooth;
-        plan.meshes.reserve(sized.objects.size());
-        for (const SceneObject& object : sized.objects)
-            plan.meshes.push_back(&mesh(subdivisionLevel(sized, object), sized.vertexNormals, layout));
-    }
-    if (plans_.size() == kPlansKept) plans_.pop_back();
-    plans_.insert(plans_.begin(), std::move(plan));
-    return plans_.front();
-}
-
-const SurfaceProgram& Renderer::program(const ProgramVariant& variant) {
-    auto& slot = programs_[variant];
-    if (!slot) {
-        slot = std::make_unique<SurfaceProgram>(buildProgram(variant), variant);
-        ++programsBuilt_;
-    }
-    return *slot;
-}
+Renderer::~Renderer() = default;
 
 void Renderer::render(const Scene& scene, int width, int height, int x) {
+    DrawOptions options;
+    options.specialization = specialization_;
+    options.flatGeometryShader = flatGeometryShader_;
+    const Viewport viewport{x, width, height};
     if (scene.view.kind == ViewKind::Scene) {
-        renderScene(scene, width, height, x);
+        sceneDraw_->draw(scene, viewport, options);
         return;
     }
-    if (!views_) views_ = std::make_unique<Views>(*this);
-    views_->draw(scene, width, height, x);
+    if (!views_) views_ = std::make_unique<Views>(*sceneDraw_);
+    views_->draw(scene, viewport, options);
 }
 
 const ViewFigures& Renderer::viewFigures() const {
@@ -206,156 +33,36 @@ const ViewFigures& Renderer::viewFigures() const {
     return views_ ? views_->figures() : kNone;
 }
 
-// A program keeps its uniforms: the frame's (the lights' geometry, the projection's kind, toon's bands) are
-// set when it is bound, and the light values again only for an object of another material than the last.
-class Renderer::ObjectBinder {
-public:
-    ObjectBinder(const DrawPlan& plan, const Scene& sized, const ProgramVariant& variant,
-                 const SceneView& view, const std::vector<Light>& lightsView)
-        : plan_(plan), sized_(sized), variant_(variant), view_(view), lightsView_(lightsView) {}
+int Renderer::programsBuilt() const {
+    return sceneDraw_->programsBuilt();
+}
 
-    // Binds the program that draws the object of that index, with the frame's and the object's uniforms
-    // set; returns where the program keeps the rest.
-    const SurfaceLocations& operator()(std::size_t index) {
-        const SurfaceProgram& surface = *plan_.programs[index];
-        const Material& material = sized_.objects[index].material;
-        if (&surface != bound_) {
-            glUseProgram(surface.program.get());
-            setFrameUniforms(surface.at);
-            bound_ = &surface;
-            valuesOf_ = nullptr;
-        }
-        if (!valuesOf_ || *valuesOf_ != material) {
-            setLightValues(surface.at, variant_.specialized, lightsView_, material);
-            valuesOf_ = &material;
-        }
-        return surface.at;
-    }
+void Renderer::drawLinesOver(const Scene& scene, std::span<const LineVertex> linesView, int width, int height,
+                             int x) {
+    sceneDraw_->drawLinesOver(scene, linesView, {x, width, height});
+}
 
-private:
-    void setFrameUniforms(const SurfaceLocations& at) const {
-        setLightGeometry(at, variant_.specialized, lightsView_);
-        glUniform1i(at.orthographic, view_.orthographic ? 1 : 0); // uber programs (specialized: a define)
-        if (sized_.shading == ShadingMode::Toon || variant_.exactToon) {
-            glUniform1f(at.toonBands, float(sized_.toonBands));
-            glUniform1f(at.toonBandWidth, float(1.0 / sized_.toonBands));
-        }
-    }
+void Renderer::drawWorld(const Scene& scene, std::span<const LineVertex> linesWorld,
+                         std::span<const LineVertex> trianglesWorld, float faceAlpha, int width, int height,
+                         int x) {
+    sceneDraw_->drawWorld(scene, linesWorld, trianglesWorld, faceAlpha, {x, width, height});
+}
 
-    const DrawPlan& plan_;
-    const Scene& sized_;
-    const ProgramVariant& variant_;
-    const SceneView& view_;
-    const std::vector<Light>& lightsView_;
-    const SurfaceProgram* bound_ = nullptr;
-    const Material* valuesOf_ = nullptr;
-};
+void Renderer::drawImageOver(const Image& image, int left, int top, int width, int height, int x) {
+    imageOver_.set(image);
+    drawSpriteOver(imageOver_, left, top, width, height, x);
+}
 
-void Renderer::renderScene(const Scene& scene, int width, int height, int x) {
-    if (width <= 0 || height <= 0) return; // a minimized window: nothing to draw, no NaN aspect
-    // Assigned, not copied: the vectors keep their storage from frame to frame.
-    sized_ = scene;
-    Scene& sized = sized_;
-    sized.width = width;
-    sized.height = height;
-    // One term of the lighting sum: the other terms' coefficients are 0, and every shader's one equation
-    // (lighting.glsl) draws that term alone, as its shading mode evaluates it.
-    if (scene.term != LightingTerm::All)
-        for (SceneObject& object : sized.objects) object.material = onlyTerm(object.material, scene.term);
-    if (ndcObserver_) sized.depth = DepthMode::Standard; // NDC is the cube [−1, 1]³ (setNdcObserver)
-    const SceneView view = sceneView(sized);
-
+void Renderer::drawSpriteOver(const Sprite& sprite, int left, int top, int width, int height, int x) {
+    if (width <= 0 || height <= 0 || sprite.width() <= 0 || sprite.height() <= 0) return;
+    if (!imagePass_) imagePass_ = std::make_unique<ImagePass>();
     glViewport(x, 0, width, height);
-    glClearColor(float(scene.background.x), float(scene.background.y), float(scene.background.z), 0.0f);
-    // DESIGN §2: near maps to NDC z = +1 (standard) or clip depth 1 (reversed), so in both modes the nearer
-    // surface has the greater depth. Reversed-Z also needs the [0, 1] clip range.
-    setClipDepthZeroToOne(view.depth != DepthMode::Standard, toString(view.depth));
-    clearDepth(0.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_GREATER);
-
-    ProgramVariant variant = ProgramVariant::forScene(sized, specialization_ != Specialization::None);
-    // The geometry stage derives each face's normal from its view-space corners: the true normal, which is
-    // the inverse-transpose rule's; the model rule needs the face normal attribute transformed by M.
-    variant.flatGeometryShader = flatGeometryShader_ && scene.shading == ShadingMode::Flat &&
-                                 scene.normalMatrix == NormalMatrixRule::InverseTranspose;
-    variant.exactToon = exactToon_ && scene.shading == ShadingMode::Exact;
-    variant.ndcView = ndcObserver_.has_value();
-    if (variant.ndcView) variant.flatGeometryShader = false; // its gl_Position is the camera's
-    lightsView_.clear();
-    for (const Light& light : scene.lights) lightsView_.push_back(transformLight(light, view.viewFromWorld));
-    const DrawPlan& plan = drawPlan(sized, variant);
-    ObjectBinder bind(plan, sized, variant, view, lightsView_);
-    if (scene.shading == ShadingMode::Exact) {
-        drawExact(sized, view, bind, x);
-    } else {
-        drawMeshes(sized, view, variant, plan, bind);
-    }
-    glUseProgram(0);
-    glDisable(GL_CULL_FACE);
-    if (scene.overlay == Overlay::Wireframe || scene.overlay == Overlay::Normals) drawOverlay(sized, view);
-    if (scene.overlay == Overlay::Lights && !ndcObserver_)
-        drawWorld(sized, lightMarkers(sized), {}, 1, width, height, x);
-    checkGlError("rendering the scene");
-}
-
-void Renderer::drawMeshes(const Scene& sized, const SceneView& view, const ProgramVariant& variant,
-                          const DrawPlan& plan, ObjectBinder& bind) {
-    for (std::size_t index = 0; index < sized.objects.size(); ++index) {
-        const SceneObject& object = sized.objects[index];
-        const SurfaceLocations& at = bind(index);
-        const glm::dmat4 viewFromObject = view.viewFromWorld * worldFromObject(object);
-        if (ndcObserver_) {
-            // Both faces: the observer may look at the inside of an object the near plane cuts open.
-            setTransforms(at, *ndcObserver_ * view.clipFromView, viewFromObject, sized.normalMatrix);
-            const glm::mat4 cameraClipFromObject(view.clipFromView * viewFromObject);
-            glUniformMatrix4fv(at.cameraClipFromObject, 1, GL_FALSE, glm::value_ptr(cameraClipFromObject));
-            glDisable(GL_CULL_FACE);
-        } else {
-            setTransforms(at, view.clipFromView, viewFromObject, sized.normalMatrix);
-            cullBackFaces(object, viewFromObject, view.volume.near);
-        }
-        if (variant.flatGeometryShader)
-            glUniform1f(at.handedness, glm::determinant(glm::dmat3(viewFromObject)) < 0 ? -1.0f : 1.0f);
-        plan.meshes[index]->draw();
-    }
-}
-
-// Exact shading: one proxy rectangle per object, its rays cast in shaders/exact.frag.glsl with what
-// ray_cast.cpp's prepareObject and PixelRays give the analytic reference.
-void Renderer::drawExact(const Scene& sized, const SceneView& view, ObjectBinder& bind, int x) {
-    // The core profile draws only with a vertex array bound, even an empty one.
-    if (!emptyVertexArray_) emptyVertexArray_ = VertexArray();
-    glDisable(GL_CULL_FACE);
-    const ViewVolume& v = view.volume;
-    glBindVertexArray(emptyVertexArray_.get());
-    for (std::size_t index = 0; index < sized.objects.size(); ++index) {
-        const SceneObject& object = sized.objects[index];
-        const glm::dmat4 viewFromObject = view.viewFromWorld * worldFromObject(object);
-        const glm::vec4 rect = proxyRectangle(view.clipFromView, viewFromObject, v.near, view.orthographic,
-                                              sized.width, sized.height);
-        if (!(rect.x < rect.z)) continue;
-        const SurfaceLocations& at = bind(index);
-        glUniform4f(at.viewport, float(x), 0.0f, float(sized.width), float(sized.height));
-        glUniform4f(at.nearRect, float(v.left), float(v.right), float(v.bottom), float(v.top));
-        // An infinite far plane clips nothing behind (as the reference): the largest float's order stands
-        // for it.
-        glUniform2f(at.nearFar, float(v.near),
-                    sized.depth == DepthMode::ReversedInfinite ? 3e38f : float(v.far));
-        glUniformMatrix4fv(at.clipFromView, 1, GL_FALSE, glm::value_ptr(glm::mat4(view.clipFromView)));
-        glUniform1f(at.depthZeroToOne, view.depth != DepthMode::Standard ? 1.0f : 0.0f);
-        glUniform1f(at.alpha, exactObjectIds_ ? float(index + 1) : 1.0f);
-        const ObjectInView prepared = prepareObject(object, view.viewFromWorld, sized.normalMatrix);
-        glUniform4fv(at.ndcRect, 1, glm::value_ptr(rect));
-        glUniformMatrix3fv(at.objectFromView, 1, GL_FALSE,
-                           glm::value_ptr(glm::mat3(prepared.objectFromView3)));
-        glUniform3fv(at.centerView, 1, glm::value_ptr(glm::vec3(prepared.originView)));
-        glUniformMatrix3fv(at.normalViewFromObject, 1, GL_FALSE,
-                           glm::value_ptr(glm::mat3(prepared.normalViewFromObject)));
-        glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
-    }
+    glDisable(GL_DEPTH_TEST);
+    imagePass_->draw(sprite, left, top, x, width, height);
     glBindVertexArray(0);
+    glUseProgram(0);
+    glEnable(GL_DEPTH_TEST);
+    checkGlError("drawing an image over the scene");
 }
 
 } // namespace shadelab::gl

@@ -1,5 +1,3 @@
-#include "shadelab/gl/views.h"
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -14,13 +12,13 @@
 #include "shadelab/gl/loader.h"
 #include "shadelab/gl/program.h"
 #include "shadelab/gl/render_target.h"
-#include "shadelab/gl/renderer.h"
 #include "shadelab/gl/screen_pass.h"
 #include "shadelab/image/image.h"
 #include "shadelab/io/text.h"
 #include "shadelab/scene/outside_view.h"
 #include "shadelab/shading/reference.h"
 
+#include "gl/views.h"
 #include "gl/views_internal.h"
 
 namespace shadelab::gl {
@@ -76,17 +74,22 @@ Image labelImage(const std::vector<std::string>& lines, int scale) {
 
 } // namespace detail
 
-Views::Views(Renderer& renderer)
-    : renderer_(renderer), targets_(std::make_unique<Targets>()), programs_(std::make_unique<Programs>()),
+Views::Views(SceneDraw& sceneDraw)
+    : sceneDraw_(sceneDraw), targets_(std::make_unique<Targets>()), programs_(std::make_unique<Programs>()),
       labels_(std::make_unique<Labels>()) {}
 
 Views::~Views() = default;
 
 void Views::resetFigures() {
-    std::vector<ViewFigures::LabelBox> labels = std::move(figures_.labels);
-    labels.clear();
-    figures_ = ViewFigures{};
-    figures_.labels = std::move(labels);
+    ViewFigures& f = figures_;
+    f.interiorMean = f.interiorMax = f.scale = 0;
+    f.interiorPixels = 0;
+    f.row = -1;
+    f.modeRow.clear();
+    f.exactRow.clear();
+    f.edgeColumns.clear();
+    f.textScale = 0;
+    f.labels.clear();
 }
 
 void Views::drawLabel(const Sprite& sprite, int left, int top, int x, int width, int height) {
@@ -94,32 +97,39 @@ void Views::drawLabel(const Sprite& sprite, int left, int top, int x, int width,
     figures_.labels.push_back({left, top, sprite.width(), sprite.height()});
 }
 
-void Views::draw(const Scene& scene, int width, int height, int x) {
-    if (width <= 0 || height <= 0) return;
+void Views::drawPart(const Scene& scene, const Viewport& viewport, const DrawOptions& options) {
+    if (scene.view.kind == ViewKind::Scene)
+        sceneDraw_.draw(scene, viewport, options);
+    else
+        draw(scene, viewport, options);
+}
+
+void Views::draw(const Scene& scene, const Viewport& viewport, const DrawOptions& options) {
+    if (viewport.width <= 0 || viewport.height <= 0) return;
     GLint destination = 0;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &destination);
     switch (scene.view.kind) {
     case ViewKind::Scene:
-        renderer_.renderScene(scene, width, height, x);
+        sceneDraw_.draw(scene, viewport, options);
         break;
     case ViewKind::Error:
-        drawError(scene, width, height, x, unsigned(destination));
+        drawError(scene, viewport, options, unsigned(destination));
         break;
     case ViewKind::Split:
-        drawSplit(scene, width, height, x);
+        drawSplit(scene, viewport, options);
         break;
     case ViewKind::Profile:
-        drawProfile(scene, width, height, x, unsigned(destination));
+        drawProfile(scene, viewport, options, unsigned(destination));
         break;
     case ViewKind::Outside:
-        drawOutside(scene, width, height, x);
+        drawOutside(scene, viewport, options);
         break;
     case ViewKind::Ndc:
-        drawNdc(scene, width, height, x);
+        drawNdc(scene, viewport, options);
         break;
     }
     glBindFramebuffer(GL_FRAMEBUFFER, GLuint(destination));
-    glEnable(GL_DEPTH_TEST); // as renderScene leaves it
+    glEnable(GL_DEPTH_TEST); // as a scene draw leaves it
     glDisable(GL_SCISSOR_TEST);
     glDisable(GL_BLEND);
     glBindVertexArray(0);
@@ -129,10 +139,9 @@ void Views::draw(const Scene& scene, int width, int height, int x) {
     checkGlError("drawing a teaching view");
 }
 
-// The current mode and exact shading of the scene into the two float targets, at the viewport's size; the
-// exact render's alpha holds each object's index + 1, so the compare pass knows which pixels one object
+// The exact render's alpha holds each object's index + 1, so the compare pass knows which pixels one object
 // covers.
-void Views::renderModeAndExact(const Scene& scene, int width, int height) {
+void Views::drawModeAndExact(const Scene& scene, int width, int height, const DrawOptions& options) {
     if (!capabilities().floatColorTargets)
         throw RuntimeError("the " + toString(scene.view) +
                            " view measures unrounded colours in float (RGBA32F) "
@@ -150,25 +159,25 @@ void Views::renderModeAndExact(const Scene& scene, int width, int height) {
     setTrueNormals(exact); // with normals by M, the error is what the wrong matrix costs
     exact.shading = ShadingMode::Exact;
     targets_->mode.bind();
-    renderer_.renderScene(mode, width, height, 0);
+    sceneDraw_.draw(mode, {0, width, height}, options);
     targets_->exact.bind();
     // Toon is measured against the exact sphere quantized the same way, as `shadelab report` does: its bands
     // are the mode's design, not its error.
-    renderer_.setExactObjectIds(true);
-    renderer_.setExactToon(scene.shading == ShadingMode::Toon);
-    renderer_.renderScene(exact, width, height, 0);
-    renderer_.setExactObjectIds(false);
-    renderer_.setExactToon(false);
+    DrawOptions exactOptions = options;
+    exactOptions.exactObjectIds = true;
+    exactOptions.exactToon = scene.shading == ShadingMode::Toon;
+    sceneDraw_.draw(exact, {0, width, height}, exactOptions);
 }
 
 // DESIGN §6's interior error, measured on the GPU (error.frag.glsl, then reduce.frag.glsl) and drawn as a
 // heatmap with its legend and figures.
-void Views::drawError(const Scene& scene, int width, int height, int x, unsigned destination) {
-    renderModeAndExact(scene, width, height);
+void Views::drawError(const Scene& scene, const Viewport& viewport, const DrawOptions& options,
+                      unsigned destination) {
+    drawModeAndExact(scene, viewport.width, viewport.height, options);
     glDisable(GL_DEPTH_TEST);
     glBindVertexArray(programs_->images.emptyVertexArray().get());
-    measureError(width, height);
-    drawHeatmap(scene, width, height, x, destination);
+    measureError(viewport.width, viewport.height);
+    drawHeatmap(scene, viewport, destination);
 }
 
 // The mode's and exact's renders compared pixel by pixel into targets_->error, then reduced to one texel
@@ -213,7 +222,8 @@ void Views::measureError(int width, int height) {
 
 // targets_->error as a heatmap over the viewport of `destination`, the legend's bar and its two ends, and
 // the figures' label.
-void Views::drawHeatmap(const Scene& scene, int width, int height, int x, unsigned destination) {
+void Views::drawHeatmap(const Scene& scene, const Viewport& viewport, unsigned destination) {
+    const int width = viewport.width, height = viewport.height, x = viewport.x;
     const Targets& t = *targets_;
     const Programs& p = *programs_;
     // The heatmap over the viewport, then its legend and figures.
@@ -331,7 +341,8 @@ void widenedForHalf(Scene& side, double factor) {
 
 } // namespace
 
-void Views::drawSplit(const Scene& scene, int width, int height, int x) {
+void Views::drawSplit(const Scene& scene, const Viewport& viewport, const DrawOptions& options) {
+    const int width = viewport.width, height = viewport.height, x = viewport.x;
     resetFigures();
     // Side by side, each side is a whole picture of half the width (its own aspect); cut at the divider,
     // each is the part of a full-width picture on its side.
@@ -345,16 +356,16 @@ void Views::drawSplit(const Scene& scene, int width, int height, int x) {
     Scene& left = targets_->leftScene;
     assignSplitSide(left, scene, scene.view.left);
     if (sideBySide) widenedForHalf(left, double(width) / std::max(1, divider));
-    renderer_.render(left, sideBySide ? divider : width, height, x); // a side may be a view
+    drawPart(left, {x, sideBySide ? divider : width, height}, options); // a side may be a view
     glEnable(GL_SCISSOR_TEST);
     glScissor(x + divider, 0, width - divider, height);
     Scene& right = targets_->rightScene;
     assignSplitSide(right, scene, scene.view.right);
     if (sideBySide) {
         widenedForHalf(right, double(width) / std::max(1, width - divider));
-        renderer_.render(right, width - divider, height, x + divider);
+        drawPart(right, {x + divider, width - divider, height}, options);
     } else
-        renderer_.render(right, width, height, x);
+        drawPart(right, viewport, options);
     // The divider: two pixels of white straddling it.
     glEnable(GL_SCISSOR_TEST);
     glScissor(x + divider - 1, 0, 2, height);

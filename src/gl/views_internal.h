@@ -11,18 +11,20 @@
 
 #include "shadelab/gl/render_target.h"
 #include "shadelab/gl/screen_pass.h"
-#include "shadelab/gl/views.h"
 #include "shadelab/image/image.h"
 #include "shadelab/scene/outside_view.h"
+
+#include "gl/views.h"
 
 namespace shadelab::gl {
 
 struct Views::Targets {
     RenderTarget mode, exact, edges, error; // RGBA32F: unrounded colours, sampled and read back
     std::vector<RenderTarget> reduce;
-    // The scenes drawn into them, and the split view's sides: assigned every frame into the same storage,
-    // so that an unchanged view's frame allocates nothing.
-    Scene modeScene, exactScene, leftScene, rightScene;
+    // The scenes drawn into them, the split view's sides and the profile's picture: assigned every frame
+    // into the same storage, so that an unchanged view's frame allocates nothing.
+    Scene modeScene, exactScene, leftScene, rightScene, profileScene, edgesScene, rowScene;
+    std::vector<float> rows[3]; // the profile's row of mode, exact and edges, RGBA floats
 };
 
 namespace detail {
@@ -78,6 +80,12 @@ struct SideFacts { // one side of the split view
 struct LabelSegment { // a line of the outside or NDC view's drawing, in pixels from the top left
     glm::dvec2 a, b;
 };
+// The outside or NDC view's scene at the viewport's size, assigned every frame, and the observer's scene
+// made from it (outside_view.h), kept while that scene stays the same.
+struct ObservedScene {
+    Scene sized, madeFor, observer;
+    bool made = false;
+};
 struct ProfilePlot {
     int row, width, height, scale;
     ShadingMode shading;
@@ -95,8 +103,13 @@ struct Views::Labels {
     KeyedSprite<int> legendBottom;     // "0", at a text scale
     KeyedSprite<detail::SideFacts> left, right;
     KeyedSprite<detail::ProfilePlot> profilePlot;
-    KeyedSprite<int> profileMarker; // its width
-    // The outside and NDC views: the title (a literal), the drawing of the last scene and its labels.
+    detail::ProfilePlot profileShown{}; // the plot's key, assigned into this storage every frame
+    KeyedSprite<int> profileMarker;     // its width
+    // The outside and NDC views: their scenes and observers, the NDC view's objects and its camera's
+    // standard-depth scene (kept storage, as Targets' scenes), the title (a literal), the drawing of the last
+    // scene and its labels.
+    detail::ObservedScene outside, ndc;
+    Scene ndcObjects, ndcStandard;
     KeyedSprite<std::pair<std::string_view, int>> title;
     std::optional<Scene> drawnScene; // what `drawing` was made for (nullopt with a drawing: the NDC cube)
     std::optional<OutsideDrawing> drawing;

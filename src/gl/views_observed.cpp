@@ -9,10 +9,11 @@
 
 #include <glad/gl.h>
 
-#include "gl/views_internal.h"
-#include "shadelab/gl/renderer.h"
 #include "shadelab/io/text.h"
 #include "shadelab/scene/outside_view.h"
+
+#include "gl/views.h"
+#include "gl/views_internal.h"
 
 namespace shadelab::gl {
 
@@ -121,33 +122,52 @@ std::optional<glm::dvec2> pixelAt(const glm::dmat4& clipFromSpace, const glm::dv
     return glm::dvec2((clip.x / clip.w + 1) / 2 * width, (1 - clip.y / clip.w) / 2 * height);
 }
 
+// The scene at the viewport's size, and `make`'s observer of it, both into `kept`'s storage: the observer is
+// made again only for another scene (an unchanged view's frame allocates nothing).
+template <typename Make>
+const Scene& observerOf(detail::ObservedScene& kept, const Scene& scene, const Viewport& viewport,
+                        Make make) {
+    Scene& sized = kept.sized;
+    sized = scene;
+    sized.width = viewport.width;
+    sized.height = viewport.height;
+    if (!kept.made || !(kept.madeFor == sized)) {
+        kept.made = false;
+        kept.observer = make(sized); // at the size of `sized`, as outside_view.h's observers are
+        kept.madeFor = sized;
+        kept.made = true;
+    }
+    return kept.observer;
+}
+
 } // namespace
 
-void Views::drawOutside(const Scene& scene, int width, int height, int x) {
+void Views::drawOutside(const Scene& scene, const Viewport& viewport, const DrawOptions& options) {
+    const int width = viewport.width, height = viewport.height;
     resetFigures();
-    const Scene sized = atSize(scene, width, height);
-    const Scene observer = observerScene(sized);
-    renderer_.renderScene(observer, width, height, x);
-    // The drawing is in world space: made again only for another scene, not as the observer orbits.
     Labels& l = *labels_;
+    const Scene& observer = observerOf(l.outside, scene, viewport, observerScene);
+    const Scene& sized = l.outside.sized;
+    sceneDraw_.draw(observer, viewport, options);
+    // The drawing is in world space: made again only for another scene, not as the observer orbits.
     if (!l.drawing || !l.drawnScene || !(*l.drawnScene == sized)) {
         l.observed.clear();
         l.drawing = outsideDrawing(sized);
         l.drawnScene = sized;
     }
-    const SceneView observerView = sceneView(atSize(observer, width, height));
+    const SceneView observerView = sceneView(observer);
     const glm::dmat4 observerClipFromWorld = observerView.clipFromView * observerView.viewFromWorld;
     objectBoxes(
         sized, [&](const glm::dvec3& p) { return pixelAt(observerClipFromWorld, p, width, height); },
         l.objectBoxes);
     drawObserved(*l.drawing, observer,
-                 leavesOutTheMinusOne(scene) ? "OUTSIDE VIEW, UNNEGATED MATRIX" : "OUTSIDE VIEW", width,
-                 height, x);
+                 leavesOutTheMinusOne(scene) ? "OUTSIDE VIEW, UNNEGATED MATRIX" : "OUTSIDE VIEW", viewport);
 }
 
 void Views::drawObserved(const OutsideDrawing& drawing, const Scene& observer, std::string_view title,
-                         int width, int height, int x) {
-    renderer_.drawWorld(observer, {}, drawing.faces, kFaceAlpha, width, height, x);
+                         const Viewport& viewport) {
+    const int width = viewport.width, height = viewport.height, x = viewport.x;
+    sceneDraw_.drawWorld(observer, {}, drawing.faces, kFaceAlpha, viewport);
     glDisable(GL_DEPTH_TEST);
     glViewport(x, 0, width, height);
     glBindVertexArray(programs_->images.emptyVertexArray().get());
@@ -159,18 +179,19 @@ void Views::drawObserved(const OutsideDrawing& drawing, const Scene& observer, s
                                                      [&] { return labelImage({std::string(title)}, scale); });
     drawLabel(titleLabel, scale * 4, scale * 4, x, width, height);
     // The labels, then the lines over them, so that no label hides a corner of the view volume.
-    drawLabels(drawing, observer, width, height, x);
-    renderer_.drawWorld(observer, drawing.lines, {}, kFaceAlpha, width, height, x);
+    drawLabels(drawing, observer, viewport);
+    sceneDraw_.drawWorld(observer, drawing.lines, {}, kFaceAlpha, viewport);
     glEnable(GL_DEPTH_TEST);
 }
 
-void Views::drawLabels(const OutsideDrawing& drawing, const Scene& observer, int width, int height, int x) {
+// `observer` is at the viewport's size (observerOf).
+void Views::drawLabels(const OutsideDrawing& drawing, const Scene& observer, const Viewport& viewport) {
+    const int width = viewport.width, height = viewport.height, x = viewport.x;
     glDisable(GL_DEPTH_TEST);
     glViewport(x, 0, width, height);
     glBindVertexArray(programs_->images.emptyVertexArray().get());
     const int scale = textScale(width, height);
-    const Scene sized = atSize(observer, width, height);
-    const SceneView view = sceneView(sized);
+    const SceneView view = sceneView(observer);
     const glm::dmat4 clipFromWorld = view.clipFromView * view.viewFromWorld;
     std::vector<Segment>& segments = labels_->segments;
     segmentsInPicture(drawing.lines, clipFromWorld, width, height, segments);
@@ -190,30 +211,28 @@ void Views::drawLabels(const OutsideDrawing& drawing, const Scene& observer, int
     }
 }
 
-void Views::drawNdc(const Scene& scene, int width, int height, int x) {
+void Views::drawNdc(const Scene& scene, const Viewport& viewport, const DrawOptions& options) {
+    const int width = viewport.width, height = viewport.height;
     resetFigures();
-    const Scene sized = atSize(scene, width, height);
-    const Scene observer = ndcObserverScene(sized);
-    const SceneView observerView = sceneView(observer);
-    Scene objects = sized;
-    objects.view = View{};
-    renderer_.setNdcObserver(observerView.clipFromView * observerView.viewFromWorld);
-    try {
-        renderer_.renderScene(objects, width, height, x);
-    } catch (...) {
-        renderer_.setNdcObserver(std::nullopt);
-        throw;
-    }
-    renderer_.setNdcObserver(std::nullopt);
     Labels& l = *labels_;
+    const Scene& observer = observerOf(l.ndc, scene, viewport, ndcObserverScene);
+    const Scene& sized = l.ndc.sized;
+    const SceneView observerView = sceneView(observer);
+    Scene& objects = l.ndcObjects;
+    objects = sized;
+    objects.view = View{};
+    DrawOptions ndcOptions = options;
+    ndcOptions.observerClipFromNdc = observerView.clipFromView * observerView.viewFromWorld;
+    sceneDraw_.draw(objects, viewport, ndcOptions);
     if (!l.drawing || l.drawnScene) {
         l.observed.clear();
         l.drawing = ndcCubeDrawing();
         l.drawnScene.reset();
     }
-    // Each object's corners through the camera's standard-depth matrices (as renderScene draws the objects
-    // here) into NDC, kept to the cube (the rest is clipped), then through the observer.
-    Scene standard = sized;
+    // Each object's corners through the camera's standard-depth matrices (as the scene draw draws the
+    // objects here) into NDC, kept to the cube (the rest is clipped), then through the observer.
+    Scene& standard = l.ndcStandard;
+    standard = sized;
     standard.depth = DepthMode::Standard;
     const SceneView camera = sceneView(standard);
     const glm::dmat4 cameraClipFromWorld = camera.clipFromView * camera.viewFromWorld;
@@ -231,7 +250,7 @@ void Views::drawNdc(const Scene& scene, int width, int height, int x) {
                  scene.projection.type == ProjectionType::Orthographic
                      ? "NDC VIEW: AFTER M_ORTH M_CAM AND THE DIVIDE"
                      : "NDC VIEW: AFTER M_PROJ M_CAM AND THE DIVIDE",
-                 width, height, x);
+                 viewport);
 }
 
 } // namespace shadelab::gl

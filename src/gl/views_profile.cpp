@@ -1,4 +1,4 @@
-// The profile view (gl/views.h): the intensity along one row of the picture, the current mode's against
+// The profile view (src/gl/views.h): the intensity along one row of the picture, the current mode's against
 // exact shading's, with the columns where a mesh edge crosses the row — where Gouraud's and flat's steps
 // and kinks come from.
 #include <algorithm>
@@ -9,10 +9,11 @@
 
 #include <glad/gl.h>
 
-#include "gl/views_internal.h"
-#include "shadelab/gl/renderer.h"
 #include "shadelab/image/image.h"
 #include "shadelab/io/text.h"
+
+#include "gl/views.h"
+#include "gl/views_internal.h"
 
 namespace shadelab::gl {
 namespace {
@@ -62,10 +63,10 @@ Image profilePlot(const detail::ProfilePlot& p) {
 
 } // namespace
 
-int profileRow(const Scene& scene, int height) {
+int profileRow(const Scene& scene, int height, Scene& sized) {
     if (scene.view.at) return std::clamp(int(*scene.view.at * height), 0, height - 1);
     if (scene.objects.empty()) return height / 2;
-    Scene sized = scene;
+    sized = scene;
     sized.height = height;
     const SceneView view = sceneView(sized);
     const glm::dvec4 clip = view.clipFromView * view.viewFromWorld * glm::dvec4(scene.objects[0].center, 1);
@@ -75,23 +76,40 @@ int profileRow(const Scene& scene, int height) {
     return int(yFromTop);
 }
 
-void Views::drawProfile(const Scene& scene, int width, int height, int x, unsigned destination) {
-    renderModeAndExact(scene, width, height);
+namespace {
+
+// Row y (from the bottom) of `target` as RGBA floats, into `row`'s storage.
+void readFloatRow(const RenderTarget& target, int y, std::vector<float>& row) {
+    row.resize(std::size_t(target.width()) * 4);
+    target.bind();
+    glReadPixels(0, y, target.width(), 1, GL_RGBA, GL_FLOAT, row.data());
+}
+
+} // namespace
+
+void Views::drawProfile(const Scene& scene, const Viewport& viewport, const DrawOptions& options,
+                        unsigned destination) {
+    const int width = viewport.width, height = viewport.height;
+    drawModeAndExact(scene, width, height, options);
     Targets& t = *targets_;
-    Scene mode = scene;
+    Scene& mode = t.profileScene;
+    mode = scene;
     mode.view = View{};
-    Scene edges = mode; // the same render with the mesh's edges over it: where they differ, an edge crosses
+    Scene& edges = t.edgesScene; // the same render with the mesh's edges over it: where they differ, an edge
+    edges = mode;                // crosses
     edges.overlay = Overlay::Wireframe;
     t.edges.fit(width, height, ColorFormat::Rgba32F, depthFormatFor(scene.depth));
     t.edges.bind();
-    renderer_.renderScene(edges, width, height, 0);
+    sceneDraw_.draw(edges, {0, width, height}, options);
 
     resetFigures();
-    const int row = profileRow(scene, height);
+    const int row = profileRow(scene, height, t.rowScene);
     figures_.row = row;
     const int glRow = height - 1 - row;
-    const std::vector<float> m = t.mode.readFloatRow(glRow), e = t.exact.readFloatRow(glRow),
-                             w = t.edges.readFloatRow(glRow);
+    std::vector<float>&m = t.rows[0], &e = t.rows[1], &w = t.rows[2];
+    readFloatRow(t.mode, glRow, m);
+    readFloatRow(t.exact, glRow, e);
+    readFloatRow(t.edges, glRow, w);
     figures_.modeRow.resize(std::size_t(width));
     figures_.exactRow.resize(std::size_t(width));
     for (int i = 0; i < width; ++i) {
@@ -106,21 +124,24 @@ void Views::drawProfile(const Scene& scene, int width, int height, int x, unsign
     // The picture itself, then the plot over a third of it (below the row, or above it when the row is in
     // the lower half), the row marked across the picture.
     glBindFramebuffer(GL_FRAMEBUFFER, destination);
-    renderer_.renderScene(mode, width, height, x);
+    sceneDraw_.draw(mode, viewport, options);
+    const int x = viewport.x;
     glDisable(GL_DEPTH_TEST);
     glViewport(x, 0, width, height);
     glBindVertexArray(programs_->images.emptyVertexArray().get());
     const int scale = textScale(width, height);
     const int plotHeight = std::max(height / 3, 24);
     const int plotTop = row < height / 2 ? height - plotHeight : 0;
-    detail::ProfilePlot shown{row,
-                              width,
-                              plotHeight,
-                              scale,
-                              scene.shading,
-                              figures_.modeRow,
-                              figures_.exactRow,
-                              figures_.edgeColumns};
+    // The plot's key assigned into kept storage, not built: its rows are copied without allocating.
+    detail::ProfilePlot& shown = labels_->profileShown;
+    shown.row = row;
+    shown.width = width;
+    shown.height = plotHeight;
+    shown.scale = scale;
+    shown.shading = scene.shading;
+    shown.modeRow = figures_.modeRow;
+    shown.exactRow = figures_.exactRow;
+    shown.edgeColumns = figures_.edgeColumns;
     const Sprite& plot = labels_->profilePlot.update(shown, [&] { return profilePlot(shown); });
     figures_.textScale = scale;
     drawLabel(plot, 0, plotTop, x, width, height);

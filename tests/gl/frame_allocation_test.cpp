@@ -35,8 +35,8 @@ Scene withView(Scene scene, std::string_view text) {
 }
 
 // Every shading mode under both lighting models and each specialization; one term; the wrong matrices;
-// orthographic; several objects of several materials; the wireframe; and the error and split views with
-// their labels.
+// orthographic; several objects of several materials; each overlay (wireframe, normals, lights); and every
+// view with its labels: error, split (a side a view too), profile, outside and NDC.
 std::vector<FrameCase> frameCases() {
     std::vector<FrameCase> cases;
     const Scene base = litSphereScene(96, LightType::Spot);
@@ -71,11 +71,19 @@ std::vector<FrameCase> frameCases() {
         several.objects[i].material.diffuse = {0.2 * double(i), 0.5, 0.3};
     }
     cases.push_back({"three-objects", several});
-    Scene wireframe = base;
-    wireframe.overlay = Overlay::Wireframe;
-    cases.push_back({"wireframe", wireframe});
-    for (const char* view : {"error", "split:gouraud,phong", "split:phong@2,phong@6", "split:flat,exact"})
+    for (const Overlay overlay : {Overlay::Wireframe, Overlay::Normals, Overlay::Lights}) {
+        Scene overlaid = base;
+        overlaid.overlay = overlay;
+        cases.push_back({std::string(toString(overlay)), overlaid});
+    }
+    for (const char* view : {"error", "split:gouraud,phong", "split:phong@2,phong@6", "split:flat,exact",
+                             "split:scene,outside", "profile", "outside", "ndc"})
         cases.push_back({view, withView(base, view)});
+    Scene profileOverlaid = withView(base, "profile");
+    profileOverlaid.overlay = Overlay::Wireframe;
+    cases.push_back({"profile-wireframe", profileOverlaid});
+    Scene orthographicNdc = withView(orthographic, "ndc");
+    cases.push_back({"ndc-orthographic", orthographicNdc});
     return cases;
 }
 

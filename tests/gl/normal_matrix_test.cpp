@@ -8,7 +8,7 @@
 
 #include "app/report/report.h"
 #include "gl/gl_test_support.h"
-#include "shadelab/gl/views.h"
+#include "shadelab/gl/view_figures.h"
 
 namespace shadelab::test {
 namespace {

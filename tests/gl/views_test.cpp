@@ -1,4 +1,4 @@
-// The teaching views (gl/views.h) against their parts: the error view's figures against
+// The teaching views (src/gl/views.h) against their parts: the error view's figures against
 // `shadelab report`'s measure of the same configuration, the split view's halves against plain renders of
 // its sides, the profile's samples against the rendered rows.
 #include <algorithm>
@@ -10,7 +10,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "gl/gl_test_support.h"
-#include "shadelab/gl/views.h"
+#include "gl/views.h" // private (src/gl/): splitSideScene, profileRow
 #include "shadelab/image/image_file.h"
 #include "shadelab/scene/outside_view.h"
 

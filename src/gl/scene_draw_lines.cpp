@@ -1,6 +1,6 @@
-// What Renderer draws over a scene it rendered: the overlay's edges and normals, lines given in view space
-// (the probe's vectors), the outside view's world-space faces and lines, and CPU-made images (labels), with
-// the line program they share.
+// What a SceneDraw draws over a scene it drew: the overlay's edges, normals and lights, lines given in view
+// space (the probe's vectors) and the outside view's world-space faces and lines, with the line program they
+// share.
 #include <array>
 #include <span>
 
@@ -12,11 +12,13 @@
 #include "shadelab/geometry/overlay.h"
 #include "shadelab/geometry/subdivision.h"
 #include "shadelab/gl/loader.h"
-#include "shadelab/gl/renderer.h"
+#include "shadelab/scene/outside_view.h"
+
+#include "gl/scene_draw.h"
 
 namespace shadelab::gl {
 
-const Renderer::LineProgram& Renderer::lineProgram() {
+const SceneDraw::LineProgram& SceneDraw::lineProgram() {
     if (!lineProgram_) {
         Program program = buildLineProgram();
         const GLint clipFromSpace = glGetUniformLocation(program.get(), "uClipFromSpace");
@@ -35,7 +37,7 @@ constexpr std::size_t kMaxCachedOverlays = 64;
 
 } // namespace
 
-void Renderer::drawOverlay(const Scene& sized, const SceneView& view) {
+void SceneDraw::drawOverlay(const Scene& sized, const SceneView& view, const DrawOptions& options) {
     const LineProgram& lines = lineProgram();
     glUseProgram(lines.program.get());
     for (const SceneObject& object : sized.objects) {
@@ -51,44 +53,41 @@ void Renderer::drawOverlay(const Scene& sized, const SceneView& view) {
         if (!edges)
             edges = std::make_unique<GpuLines>(overlayLines(buildSphere(level, sized.vertexNormals),
                                                             sized.overlay, glm::dmat3(world), rule));
-        const glm::mat4 clipFromObject(ndcObserver_.value_or(glm::dmat4(1)) * view.clipFromView *
-                                       view.viewFromWorld * worldFromObject(object));
+        const glm::mat4 clipFromObject(options.observerClipFromNdc.value_or(glm::dmat4(1)) *
+                                       view.clipFromView * view.viewFromWorld * worldFromObject(object));
         glUniformMatrix4fv(lines.clipFromSpace, 1, GL_FALSE, glm::value_ptr(clipFromObject));
         edges->draw();
     }
     glUseProgram(0);
 }
 
-void Renderer::drawImageOver(const Image& image, int left, int top, int width, int height, int x) {
-    imageOver_.set(image);
-    drawSpriteOver(imageOver_, left, top, width, height, x);
+std::span<const LineVertex> SceneDraw::lightMarkers(const Scene& sized) {
+    LightMarkers& m = lightMarkers_;
+    if (!m.made || m.lights != sized.lights || m.eye != sized.eye || m.target != sized.target) {
+        m.made = false;
+        m.lines = shadelab::lightMarkers(sized); // outside_view.h: from the lights, the eye and the target
+        m.lights = sized.lights;
+        m.eye = sized.eye;
+        m.target = sized.target;
+        m.made = true;
+    }
+    return m.lines;
 }
 
-void Renderer::drawSpriteOver(const Sprite& sprite, int left, int top, int width, int height, int x) {
-    if (width <= 0 || height <= 0 || sprite.width() <= 0 || sprite.height() <= 0) return;
-    if (!imagePass_) imagePass_ = std::make_unique<ImagePass>();
-    glViewport(x, 0, width, height);
-    glDisable(GL_DEPTH_TEST);
-    imagePass_->draw(sprite, left, top, x, width, height);
-    glBindVertexArray(0);
-    glUseProgram(0);
-    glEnable(GL_DEPTH_TEST);
-    checkGlError("drawing an image over the scene");
-}
-
-// The matrices of the scene at the viewport's size, with the viewport and the clip range of its depth mode
-// set, for lines drawn over what renderScene drew there.
-static SceneView viewportOver(const Scene& scene, int width, int height, int x) {
-    const SceneView view = sceneView(atSize(scene, width, height));
-    glViewport(x, 0, width, height);
+SceneView SceneDraw::viewportOver(const Scene& scene, const Viewport& viewport) {
+    sizedOver_ = scene; // into the same storage every frame, as draw()'s
+    sizedOver_.width = viewport.width;
+    sizedOver_.height = viewport.height;
+    const SceneView view = sceneView(sizedOver_);
+    glViewport(viewport.x, 0, viewport.width, viewport.height);
     setClipDepthZeroToOne(view.depth != DepthMode::Standard, toString(view.depth));
     return view;
 }
 
-void Renderer::drawLinesOver(const Scene& scene, std::span<const LineVertex> linesView, int width, int height,
-                             int x) {
-    if (width <= 0 || height <= 0 || linesView.empty()) return;
-    const SceneView view = viewportOver(scene, width, height, x);
+void SceneDraw::drawLinesOver(const Scene& scene, std::span<const LineVertex> linesView,
+                              const Viewport& viewport) {
+    if (viewport.width <= 0 || viewport.height <= 0 || linesView.empty()) return;
+    const SceneView view = viewportOver(scene, viewport);
     glDisable(GL_DEPTH_TEST);
     if (!streamedLines_) streamedLines_ = std::make_unique<GpuLines>();
     streamedLines_->set(linesView);
@@ -102,12 +101,12 @@ void Renderer::drawLinesOver(const Scene& scene, std::span<const LineVertex> lin
     checkGlError("drawing lines over the scene");
 }
 
-void Renderer::drawWorld(const Scene& scene, std::span<const LineVertex> linesWorld,
-                         std::span<const LineVertex> trianglesWorld, float faceAlpha, int width, int height,
-                         int x) {
-    if (width <= 0 || height <= 0) return;
-    const SceneView view = viewportOver(scene, width, height, x);
-    glEnable(GL_DEPTH_TEST); // GL_GREATER, as renderScene left it (DESIGN §2)
+void SceneDraw::drawWorld(const Scene& scene, std::span<const LineVertex> linesWorld,
+                          std::span<const LineVertex> trianglesWorld, float faceAlpha,
+                          const Viewport& viewport) {
+    if (viewport.width <= 0 || viewport.height <= 0) return;
+    const SceneView view = viewportOver(scene, viewport);
+    glEnable(GL_DEPTH_TEST); // GL_GREATER, as draw() left it (DESIGN §2)
     const LineProgram& lines = lineProgram();
     glUseProgram(lines.program.get());
     const glm::mat4 clipFromWorld(view.clipFromView * view.viewFromWorld);

@@ -1,0 +1,122 @@
+// The one draw of a Scene (DESIGN §7's one renderer: render, report, bench, the window and the page all draw
+// through it): the scene's objects, shaded as its mode says, into whatever framebuffer is bound, with the
+// overlay over them. Everything a draw depends on is an argument — the scene, the viewport and the options
+// that pick the programs' variant — so that the views (gl/views.h) compose draws without switching anything
+// between them; what a SceneDraw keeps is caches of what it built (programs, meshes, plans, lines).
+#pragma once
+
+#include <array>
+#include <map>
+#include <memory>
+#include <optional>
+#include <span>
+#include <tuple>
+#include <vector>
+
+#include "shadelab/gl/mesh.h"
+#include "shadelab/gl/program.h"
+#include "shadelab/scene/scene.h"
+
+namespace shadelab::gl {
+
+// Where a draw goes: the rectangle (x, 0, width, height) of the bound framebuffer.
+struct Viewport {
+    int x = 0, width = 0, height = 0;
+};
+
+// How a draw writes its pixels, chosen with the programs it draws with (as ProgramVariant's defines are).
+struct DrawOptions {
+    // How far programs are specialized (gl/program_variant.h), and flat shading from shared vertices and a
+    // geometry shader instead of duplicated vertices with face data (the same picture; `shadelab bench`).
+    Specialization specialization = Specialization::Values;
+    bool flatGeometryShader = false;
+    // Exact shading writes each object's index + 1 as alpha instead of 1 (the error view's compare pass).
+    bool exactObjectIds = false;
+    // Exact shading quantizes the lighting as toon shading does (the error view's exact answer for toon).
+    bool exactToon = false;
+    // The NDC view: the meshes (and their overlay) drawn through the camera's M_proj·M_cam into its NDC
+    // space and on through this matrix, every fragment outside the camera's clip volume discarded; the
+    // camera's standard-depth matrices are used whatever its depth mode, so NDC is the cube [−1, 1]³. Exact
+    // shading has no mesh to transform (the scene check refuses it).
+    std::optional<glm::dmat4> observerClipFromNdc;
+};
+
+class SceneDraw {
+public:
+    SceneDraw();
+    ~SceneDraw();
+    SceneDraw(const SceneDraw&) = delete;
+    SceneDraw& operator=(const SceneDraw&) = delete;
+
+    // `scene` itself, whatever its view says, over the viewport (whose size may differ from the scene's
+    // image size; the aspect comes from the viewport). The clear covers the whole target; a 0×0 viewport
+    // draws nothing. With scene.overlay, the objects' edges (normals, lights) are drawn over them.
+    void draw(const Scene& scene, const Viewport& viewport, const DrawOptions& options);
+    // Lines given in view space over what draw() drew into the same viewport, never hidden (the probe's).
+    void drawLinesOver(const Scene& scene, std::span<const LineVertex> linesView, const Viewport& viewport);
+    // World-space triangles and lines (GL_LINES pairs), depth-tested against what scene's draw left in the
+    // depth buffer (lines behind an object are hidden): the triangles first, blended with `faceAlpha` and
+    // without writing depth, then the lines opaque over them.
+    void drawWorld(const Scene& scene, std::span<const LineVertex> linesWorld,
+                   std::span<const LineVertex> trianglesWorld, float faceAlpha, const Viewport& viewport);
+    // Programs compiled so far: switching back to a variant already built never recompiles.
+    int programsBuilt() const { return programsBuilt_; }
+
+private:
+    const GpuMesh& mesh(int level, VertexNormals normals, MeshLayout layout);
+    const SurfaceProgram& program(const ProgramVariant& variant);
+    struct LineProgram {
+        Program program;
+        int clipFromSpace = -1; // uClipFromSpace, looked up once
+        int translucency = -1;  // uTranslucency
+    };
+    const LineProgram& lineProgram();
+    void drawOverlay(const Scene& sized, const SceneView& view, const DrawOptions& options);
+    // The lights' markers of the "lights" overlay, made again only when what they depend on changes.
+    std::span<const LineVertex> lightMarkers(const Scene& sized);
+    // The matrices of `scene` at the viewport's size, with the viewport and the clip range of its depth mode
+    // set, for lines drawn over what draw() drew there.
+    SceneView viewportOver(const Scene& scene, const Viewport& viewport);
+    // What each object of a scene is drawn with, resolved once for the scene and kept while neither it nor
+    // an option changes: a frame then builds no variant's #define text and finds no program or mesh in a
+    // map (programs_ and meshes_ never drop an entry, so the pointers stay valid).
+    struct DrawPlan {
+        Scene scene;                                 // the scene as draw() draws it (atSize, the term)
+        ProgramVariant variant;                      // the frame's variant, before an object's values
+        Specialization specialization{};             // the options' when it was made
+        std::vector<const SurfaceProgram*> programs; // one per object
+        std::vector<const GpuMesh*> meshes;          // one per object (none in exact shading)
+    };
+    const DrawPlan& drawPlan(const Scene& sized, const ProgramVariant& variant,
+                             Specialization specialization);
+    // Binds, for a frame, the program that draws each object (scene_draw.cpp).
+    class ObjectBinder;
+    void drawMeshes(const Scene& sized, const SceneView& view, const ProgramVariant& variant,
+                    const DrawPlan& plan, ObjectBinder& bind, const DrawOptions& options);
+    void drawExact(const Scene& sized, const SceneView& view, ObjectBinder& bind, int x,
+                   const DrawOptions& options);
+
+    int programsBuilt_ = 0;
+    std::map<ProgramVariant, std::unique_ptr<SurfaceProgram>> programs_;
+    std::map<std::tuple<int, VertexNormals, MeshLayout>, std::unique_ptr<GpuMesh>> meshes_;
+    std::unique_ptr<LineProgram> lineProgram_;
+    // By level, normals, overlay and, for the normals, the object's scale and the normal-matrix rule.
+    using OverlayKey = std::tuple<int, VertexNormals, Overlay, std::array<double, 3>, NormalMatrixRule>;
+    std::map<OverlayKey, std::unique_ptr<GpuLines>> overlays_;
+    std::unique_ptr<GpuLines> streamedLines_, streamedTriangles_;
+    VertexArray emptyVertexArray_{NoCreate}; // exact shading's proxies have no attributes (made at first use)
+    std::vector<DrawPlan> plans_;            // drawPlan's, the latest first
+    // draw()'s scene at the viewport's size and its lights in view space, and viewportOver's scene, assigned
+    // every frame into the same storage: an unchanged scene's frame allocates nothing.
+    Scene sized_, sizedOver_;
+    std::vector<Light> lightsView_;
+    // lightMarkers' lines and what they were made from (the lights, the eye and the target).
+    struct LightMarkers {
+        std::vector<Light> lights;
+        glm::dvec3 eye{0}, target{0};
+        std::vector<LineVertex> lines;
+        bool made = false;
+    } lightMarkers_;
+};
+
+} // namespace shadelab::gl
