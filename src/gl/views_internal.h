@@ -1,6 +1,7 @@
-// What the teaching views' three files share (views.cpp: the dispatch, the error and split views;
-// views_profile.cpp: the profile; views_observed.cpp: the outside and NDC views): the GL objects they
-// draw with, the labels' layout and the sprites that keep each label until what it shows changes.
+// What the teaching views' files share (views.cpp: the dispatch and the error view; views_split.cpp: the
+// split view; views_profile.cpp: the profile; views_observed.cpp: the outside and NDC views): the GL
+// objects they draw with, the scenes they draw kept from frame to frame, the labels' layout and the
+// sprites that keep each label until what it shows changes.
 #pragma once
 
 #include <optional>

@@ -1,6 +1,6 @@
-// What the teaching views (gl/views.h) draw with besides the Renderer and its render targets: full-screen
-// (or any rectangle) fragment passes, and CPU-made images (labels, plots) drawn into the picture. Each owns
-// its GL objects (gl/handles.h).
+// What the teaching views (src/gl/views.h) draw with besides the scene draw and their render targets:
+// full-screen (or any rectangle) fragment passes, and CPU-made images (labels, plots, the demo's bands)
+// drawn into the picture. Each owns its GL objects (gl/handles.h).
 #pragma once
 
 #include <vector>
