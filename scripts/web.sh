@@ -5,10 +5,12 @@
 #                                        serves the page (build-web/site/) on 127.0.0.1 (default port 8000,
 #                                        1..65535), prints the URL; --lessons adds DIR's lessons (and the
 #                                        files they name inside DIR) to the page's picker, no rebuild
-#   scripts/web.sh render [SCENE.json] [--shading S] [--lighting L] [--subdivisions N] [--size WxH]
-#                         [--depth D] [--tolerance-px T] --out FILE.png
-#                                        draws the scene in headless Chromium through the WebGL 2 build and
-#                                        writes the canvas's pixels: the browser's `shadelab render`
+#   scripts/web.sh render [--shading S] [--lighting L] [--subdivisions N] [--size WxH] [--depth D]
+#                         [--tolerance-px T] < SCENE.json > FILE.png
+#                                        draws the scene read from standard input in headless Chromium
+#                                        through the WebGL 2 build and writes the canvas's pixels as a PNG to
+#                                        standard output: the browser's `shadelab render - --out -` (files
+#                                        are the command line's, whose rules live once, in src/io/)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 
@@ -68,7 +70,7 @@ render)
   exec /usr/bin/python3 "$root/web/driver.py" render "$@"
   ;;
 *)
-  echo "usage: scripts/web.sh build | serve [PORT] [--lessons DIR] | render [SCENE.json] [flags] --out FILE.png" >&2
+  echo "usage: scripts/web.sh build | serve [PORT] [--lessons DIR] | render [flags] < SCENE.json > FILE.png" >&2
   exit 2
   ;;
 esac

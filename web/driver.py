@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
 """Drives the browser build in Debian's headless Chromium (chromium-driver + python3-selenium).
 
-  driver.py render [SCENE.json] [--shading S] [--lighting L] [--subdivisions N] [--size WxH]
-                   [--depth D] [--tolerance-px T] --out FILE.png
-      draws the scene through the WebGL 2 build and writes the canvas's pixels (read back from the GL
-      framebuffer, not a screenshot of the page) as an opaque PNG, as `shadelab render` does;
+  driver.py render [--shading S] [--lighting L] [--subdivisions N] [--size WxH] [--depth D] ... < SCENE.json
+      draws the scene read from standard input through the WebGL 2 build and writes the canvas's pixels
+      (read back from the GL framebuffer, not a screenshot of the page) as an opaque PNG to standard output.
+      No files: which files may be read and written, and how, is the command line's (`shadelab render`,
+      src/io/), so that its rules have one implementation; the shell opens the redirections;
   driver.py session
       reads one JSON request per line on standard input and answers one JSON line each (tests/web/).
 
@@ -25,7 +26,6 @@ import zlib
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from serve import PageHandler, PageServer  # noqa: E402  (the page's files only, as scripts/web.sh serve)
-import cli_rules  # noqa: E402  (the command line's rules for scene files and outputs)
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'build-web', 'site')
 CHROME_ARGS = ['--headless=new', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--no-sandbox',
@@ -208,6 +208,10 @@ class Page:
             send('touchEnd', [])
         time.sleep(0.2)
 
+    def quoted(self, text):
+        """shadelab's quotedValue(), as the page has it (page_lesson.js)."""
+        return self.js('return quotedValue(arguments[0])', text)
+
     def load(self, text, name):
         return self.js('return window.shadelab.loadText(arguments[0], arguments[1])', text, name)
 
@@ -252,62 +256,49 @@ def png_bytes(width, height, rgba):
 
 def render(argv):
     # Every option takes a value; which names are flags the page says (the program's one table of them,
-    # window.shadelab.tables().flags), once it has started.
-    scene_path, flags, out = None, {}, None
+    # window.shadelab.tables().flags), once it has started. Anything else (a scene file, --out) is a file,
+    # which only the command line reads and writes.
+    flags = {}
     i = 0
     while i < len(argv):
         arg = argv[i]
-        if arg.startswith('--'):
-            name = arg[2:].split('=', 1)[0]
-            if '=' in arg:
-                value = arg.split('=', 1)[1]
-            elif i + 1 < len(argv):
-                i += 1
-                value = argv[i]
-            else:
-                return fail(2, '%s needs a value' % cli_rules.quoted('--' + name))
-            if name == 'out':
-                out = value
-            else:
-                flags[name] = value
-        elif arg.startswith('-') and arg != '-':
-            return fail(2, 'unknown option %s; render takes SCENE.json, the scene flags and --out'
-                        % cli_rules.quoted(arg))
-        elif scene_path is None:
-            scene_path = arg
+        if not arg.startswith('--') or arg.split('=', 1)[0] == '--out':
+            return fail(2, 'scripts/web.sh render reads the scene from standard input and writes the PNG to '
+                        'standard output (scripts/web.sh render [flags] < SCENE.json > FILE.png); for files, '
+                        'shadelab render SCENE.json --out FILE.png')
+        name = arg[2:].split('=', 1)[0]
+        if '=' in arg:
+            flags[name] = arg.split('=', 1)[1]
+        elif i + 1 < len(argv):
+            i += 1
+            flags[name] = argv[i]
         else:
-            return fail(2, 'one scene file only, got %s and %s' % (cli_rules.quoted(scene_path),
-                                                                  cli_rules.quoted(arg)))
+            flags[name] = None
         i += 1
-    if out is None:
-        return fail(2, '--out is required: the PNG to write, or - for standard output')
-    # The command line's rules, before any work: the output (what it is, that it may be written), the scene
-    # (a regular file of at most 16 MiB, or -), and that one is not the other.
-    try:
-        target = cli_rules.resolve_output(out)
-        cli_rules.refuse_overwriting_input(out, '--out', scene_path)
-        text, name = b'{}', 'defaults'
-        if scene_path is not None:
-            text, name = cli_rules.read_scene(scene_path), scene_path
-    except cli_rules.InputError as e:
-        return fail(2, str(e))
     page = Page()
     try:
         if page.failed:
             return fail(1, page.failed)
-        known = page.js('return window.shadelab.tables().flags')
-        for name in flags:
-            if name not in known:
-                return fail(2, 'unknown option %s; render takes SCENE.json, --%s and --out'
-                            % (cli_rules.quoted('--' + name), ', --'.join(known)))
-        message = page.load(text.decode('utf-8', errors='replace'), name) or page.flags(flags)
+        tables = page.js('return window.shadelab.tables()')
+        for name, value in flags.items():
+            if name not in tables['flags']:
+                return fail(2, 'unknown option %s; render takes --%s' % (page.quoted('--' + name),
+                                                                          ', --'.join(tables['flags'])), page)
+            if value is None:
+                return fail(2, '%s needs a value' % page.quoted('--' + name), page)
+        # At most one byte past the command line's bound; beyond it the page's message for a scene file too
+        # large to read (page_lesson.js tooLargeMessage, naming standard input as the command line does
+        # while it reads), without handing the page 16 MiB it would refuse.
+        text = sys.stdin.buffer.read(tables['maxSceneBytes'] + 1)
+        if len(text) > tables['maxSceneBytes']:
+            return fail(2, page.js('return tooLargeMessage(arguments[0])', 'standard input'), page)
+        message = page.load(text.decode('utf-8', errors='replace'), '-') or page.flags(flags)
         if message:
-            return fail(2, message)
+            return fail(2, message, page)
         width, height, rgba = page.capture()
-        cli_rules.write_output(target, png_bytes(width, height, rgba))
+        sys.stdout.buffer.write(png_bytes(width, height, rgba))
+        sys.stdout.buffer.flush()
         return 0
-    except cli_rules.RuntimeFailure as e:
-        return fail(1, str(e))
     finally:
         page.close()
 
@@ -350,6 +341,11 @@ def session():
                     'const e = document.querySelector(arguments[0]);'
                     'return e ? {hidden: e.hidden, text: e.textContent, value: e.value === undefined ? null :'
                     ' String(e.value), whiteSpace: getComputedStyle(e).whiteSpace} : null;', request['selector'])}
+            elif op == 'menus':  # every <select> of the panel: its id and its options' values and labels
+                answer = {'menus': page.js(
+                    'return Array.from(document.querySelectorAll("select")).map((s) => ({id: s.id,'
+                    ' values: Array.from(s.options).map((o) => o.value),'
+                    ' labels: Array.from(s.options).map((o) => o.textContent)}));')}
             elif op == 'sleep':  # lets the page's own timers run (a notice that goes away by itself)
                 time.sleep(min(float(request['seconds']), 30))
                 answer = {}
@@ -440,11 +436,13 @@ def session():
     return 0
 
 
-def fail(code, message):
-    """As shadelab's main: the message with control bytes escaped (newlines and tabs kept)."""
-    lines = str(message).split('\n')
-    shown = '\n'.join('\t'.join(cli_rules.printable(part) for part in line.split('\t')) for line in lines)
-    sys.stderr.write('shadelab: %s\n' % shown)
+def fail(code, message, page=None):
+    """As shadelab's main: the message with control bytes escaped (newlines and tabs kept) by the page's
+    printable() (shadelab's, in page_lesson.js); the driver's own messages name no input without a page."""
+    if page is not None and not page.failed:
+        message = page.js('return arguments[0].split("\\n").map((l) => l.split("\\t").map(printable)'
+                          '.join("\\t")).join("\\n")', str(message))
+    sys.stderr.write('shadelab: %s\n' % message)
     return code
 
 
@@ -456,7 +454,7 @@ def main():
             return fail(1, '%s' % e)
     if len(sys.argv) == 2 and sys.argv[1] == 'session':
         return session()
-    return fail(2, 'usage: driver.py render [SCENE.json] [flags] --out FILE.png | driver.py session')
+    return fail(2, 'usage: driver.py render [flags] < SCENE.json > FILE.png | driver.py session')
 
 
 if __name__ == '__main__':

@@ -1,5 +1,6 @@
-// The page around shadelab.wasm, in six classic scripts that share one global scope, loaded in this order
+// The page around shadelab.wasm, in seven classic scripts that share one global scope, loaded in this order
 // by index.html: page_core.js (the shared state and the message line), page_input.js (keys and mouse),
+// page_menus.js (the panel's menus from the program's tables),
 // page_panel.js (the control panel), page_capture.js (pixels, S, and the calls the tests and web/driver.py
 // make), page_lesson.js (a lesson's files: bounded fetches, step paths checked first), and page.js (the
 // module's start and scene loading), which loads shadelab.js last.
@@ -11,7 +12,16 @@
 const $ = (id) => document.getElementById(id);
 const params = new URLSearchParams(location.search);
 let api = null; // the shadelab_* functions, once the module has started
-let tables = null; // the program's flags, levels and key codes (shadelab_tables), once it has started
+// The program's flags, levels, key codes and menus (shadelab_tables), once it has started: page.js sets
+// `tables`, and the menus are filled from them then (page_menus.js), before the panel shows a value.
+let programTables = null;
+Object.defineProperty(globalThis, 'tables', {
+  get: () => programTables,
+  set: (value) => {
+    programTables = value;
+    fillMenus(value.menus);
+  },
+});
 let saved = 0;
 // Where scripts/web.sh serve --lessons DIR serves that folder (web/serve.py kOwnLessons).
 const kOwnLessons = 'own-lessons/';

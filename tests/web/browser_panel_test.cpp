@@ -1,6 +1,9 @@
 // The page's panel, menus, messages, canvas, downloads and presentation label, as the window and the command
 // line have them (browser_support.h: the session and fixture).
 
+#include <map>
+
+#include "shadelab/scene/view.h"
 #include "web/browser_support.h"
 
 namespace shadelab::test {
@@ -579,6 +582,54 @@ TEST_F(Browser, LargeScenesLoadAndTooLargeOnesGetTheCommandLineMessage) {
     EXPECT_EQ(session.answer(afterSlide).at("message"), "") << "the material edit of 10,000 objects";
     EXPECT_EQ(sceneShown.at("objects").at(0).at("material").at("shininess"), 31.6);
     EXPECT_EQ(sceneShown.at("objects").at(9999).at("material").at("shininess"), 31.6);
+}
+
+template <class Enum, std::size_t N> std::vector<std::string> spellings(const std::array<Enum, N>& values) {
+    std::vector<std::string> out;
+    for (Enum value : values) out.emplace_back(toString(value));
+    return out;
+}
+
+// The panel's menus are the C++ tables (STYLE 5), not lists typed into index.html: every <select> of a
+// vocabulary holds its table's values in its order (the projection menu: the two O switches between; the
+// view menu: view.h's kViewNames), and a value's key is in its label (shading 1..5, views E, V, I, Y, Q).
+// Fails with a value dropped from the menus the page reads (tables.cpp's term menu given kLightingTerms
+// without specular: the page's menu lacked it, so the table was not what the page showed).
+TEST_F(Browser, EveryMenuHoldsItsCppTablesValues) {
+    Session session;
+    session.open();
+    const std::size_t menus = session.menus();
+    if (!session.run(dir_)) return;
+    std::vector<std::string> views;
+    for (const ViewName& view : kViewNames) views.emplace_back(view.name);
+    const std::map<std::string, std::vector<std::string>> expected = {
+        {"shading", spellings(kAllShadingModes)},
+        {"lighting", spellings(kLightingModels)},
+        {"term", spellings(kLightingTerms)},
+        {"perspective-matrix", spellings(kPerspectiveMatrices)},
+        {"normal-matrix", spellings(kNormalMatrixRules)},
+        {"projection", spellings(std::array{ProjectionType::Perspective, ProjectionType::Orthographic})},
+        {"normals", spellings(kVertexNormals)},
+        {"overlay", spellings(kOverlays)},
+        {"view-kind", views},
+    };
+    std::map<std::string, json> shown;
+    for (const json& menu : session.answer(menus).at("menus")) shown[menu.at("id")] = menu;
+    for (const auto& [id, values] : expected) {
+        ASSERT_TRUE(shown.contains(id)) << "no menu #" << id;
+        EXPECT_EQ(shown[id].at("values").get<std::vector<std::string>>(), values) << "#" << id;
+    }
+    const auto labels = [&](const std::string& id) {
+        return shown[id].at("labels").get<std::vector<std::string>>();
+    };
+    EXPECT_EQ(labels("shading").at(0), "flat (1)");
+    EXPECT_EQ(labels("shading").at(4), "exact (5)");
+    for (std::size_t i = 0; i < kViewNames.size(); ++i)
+        if (!kViewNames[i].key.empty()) {
+            EXPECT_NE(labels("view-kind").at(i).find("(" + std::string(kViewNames[i].key) + ")"),
+                      std::string::npos)
+                << labels("view-kind").at(i);
+        }
 }
 
 // A % in ?scene= that is no escape: the page starts and says it cannot fetch that scene (a URIError stopped

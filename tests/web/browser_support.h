@@ -141,6 +141,8 @@ public:
         return add({{"op", "panel"}, {"selector", selector}, {"value", value}, {"event", event}});
     }
     std::size_t message() { return add({{"op", "message"}}); }
+    // Every <select> on the page: [{id, values, labels}] of its options.
+    std::size_t menus() { return add({{"op", "menus"}}); }
     std::size_t capture(const std::string& kind = "rgba8") {
         return add({{"op", "capture"}, {"kind", kind}});
     }
