@@ -29,7 +29,8 @@ set(SHADELAB_GL_SOURCES
 set(SHADELAB_DEMO_STATE_SOURCES
   src/app/demo/demo_state.cpp src/app/demo/demo_camera.cpp src/app/demo/demo_keys.cpp
   src/app/demo/demo_text.cpp src/app/demo/probe_text.cpp src/app/demo/matrices_text.cpp src/app/demo/scene_flags.cpp
-  src/app/demo/demo_presets.cpp src/app/demo/demo_edits.cpp src/app/demo/view_explanations.cpp)
+  src/app/demo/demo_presets.cpp src/app/demo/demo_edits.cpp src/app/demo/view_explanations.cpp
+  src/app/demo/lesson_player.cpp src/app/demo/probe_cache.cpp src/app/demo/presentation_images.cpp src/app/demo/scene_setters.cpp)
 # Drawing the demo's picture (GL), also shared by the window and the page.
 set(SHADELAB_DEMO_DRAW_SOURCES src/app/demo/demo_draw.cpp)
 

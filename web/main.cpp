@@ -157,8 +157,8 @@ EMSCRIPTEN_KEEPALIVE const char* shadelab_load_lesson(const char* json, const ch
                 page().warnings.push_back(std::string(name) + ": steps[" + std::to_string(i) +
                                           "]: " + warning);
         auto state = std::make_unique<DemoState>(lesson.steps.front().scene);
-        state->presenting = page().state->presenting; // the page's own setting, as a step keeps it
-        state->showPanel = page().state->showPanel;
+        state->setPresenting(page().state->presenting()); // the page's own setting, as a step keeps it
+        state->setShowPanel(page().state->showPanel());
         state->openLesson(std::make_shared<const Lesson>(std::move(lesson)));
         page().state = std::move(state);
         page().sceneName = name;

@@ -57,25 +57,21 @@ function bind() {
   const load = c('shadelab_load_scene', 'string', ['number', 'string']);
   const lesson = c('shadelab_load_lesson', 'string', ['number', 'string', 'number']);
   const flags = c('shadelab_apply_flags', 'string', ['number']);
-  const edit = c('shadelab_edit_settings', 'string', ['number']);
-  const material = c('shadelab_edit_material', 'string', ['number']);
+  const setValue = c('shadelab_set', 'string', ['string', 'string']);
   return {
     loadScene: (text, name) => viaHeap(text, (pointer) => load(pointer, name)),
     loadLesson: (text, name, files) =>
       viaHeap(text, (pointer) => viaHeap(JSON.stringify(files), (filesPointer) => lesson(pointer, name, filesPointer))),
     applyFlags: (text) => viaHeap(text, flags),
-    editSettings: (text) => viaHeap(text, edit),
-    editMaterial: (text) => viaHeap(text, material),
-    chooseObject: c('shadelab_choose_object', null, ['number']),
-    editScale: c('shadelab_edit_scale', 'string', ['number', 'number', 'number']),
-    editViewVolume: c('shadelab_edit_view_volume', 'string', ['string']),
+    // Every control's value through the setter the window's panel uses (src/app/demo/scene_setters.h):
+    // set('lighting', 'phong'), set('lights[0].cutoff_deg', '20'); '' or the refusal.
+    set: (name, value) => setValue(name, String(value)),
     key: c('shadelab_key', 'number', ['number']),
     drag: c('shadelab_drag', null, ['number', 'number']),
     zoom: c('shadelab_zoom', null, ['number']),
     dragLight: c('shadelab_drag_light', null, ['number', 'number']),
     probe: c('shadelab_probe', 'string', ['number', 'number']),
     pointer: c('shadelab_pointer', null, ['number', 'number', 'number']),
-    setMatch: c('shadelab_set_match_highlight', null, ['number']),
     redraw: c('shadelab_redraw', null, []),
     // The panel's values without the scenes' objects (twice a second), and everything with them.
     panelText: () => Module.ccall('shadelab_panel', 'string', [], []),

@@ -10,7 +10,7 @@ const fromHex = (hex) => [1, 3, 5].map((i) => parseInt(hex.substr(i, 2), 16) / 2
 let ui = null;
 let shownPanel = ''; // the panel's values that refresh last showed, as text
 
-// The panel shows the state; a control changes it by a key's command or by an edited scene. `ifChanged`:
+// The panel shows the state; a control sets one value (set). `ifChanged`:
 // nothing is written when the values are those shown (a draw error is shown again all the same: it stays
 // until an action replaces it).
 function refresh(ifChanged = false) {
@@ -123,8 +123,9 @@ function showLights(lights) {
     group.className = 'light';
     group.append(Object.assign(document.createElement('div'), {textContent: 'light ' + (i + 1) + ': ' + light.type}));
     // A range slider shows its number beside it (an <output> that follows the slider as it moves).
-    const field = (label, input, change) => {
-      input.addEventListener('change', () => edit((s) => change(s.lights[i], input)));
+    const name = (key) => 'lights[' + i + '].' + key;
+    const field = (label, input, key, value) => {
+      input.addEventListener('change', () => set(name(key), value(input)));
       const row = document.createElement('label');
       row.append(input);
       if (input.type === 'range') {
@@ -140,7 +141,7 @@ function showLights(lights) {
       const inputs = [0, 1, 2].map((k) => Object.assign(document.createElement('input'),
           {type: 'number', step, value: light[key][k], className: 'component'}));
       for (const input of inputs)
-        input.addEventListener('change', () => edit((s) => { s.lights[i][key] = inputs.map((x) => Number(x.value)); }));
+        input.addEventListener('change', () => set(name(key), inputs.map((x) => x.value).join(' ')));
       row.append(...inputs, ' ' + label);
       group.append(row);
     };
@@ -149,100 +150,61 @@ function showLights(lights) {
     for (const [term, label] of [['ambient', 'I_a ambient'], ['diffuse', 'I_d diffuse'], ['specular', 'I_s specular']]) {
       if (!light[term] || (light.type === 'ambient' && term !== 'ambient')) continue;
       field(label, Object.assign(document.createElement('input'), {type: 'color', value: toHex(light[term])}),
-            (l, input) => { l[term] = fromHex(input.value); });
+            term, (input) => fromHex(input.value).join(' '));
     }
     if (positional(light)) vector('attenuation a b c', 'attenuation', 0.01);
     if (light.type === 'spot') {
       field('cutoff (deg)', Object.assign(document.createElement('input'),
                 {type: 'range', min: 0, max: 90, step: 0.5, value: light.cutoff_deg}),
-            (l, input) => { l.cutoff_deg = Number(input.value); });
+            'cutoff_deg', (input) => input.value);
       field('exponent', Object.assign(document.createElement('input'),
                 {type: 'range', min: 0, max: 128, step: 1, value: light.exponent || 0}),
-            (l, input) => { l.exponent = Number(input.value); });
+            'exponent', (input) => input.value);
     }
     box.append(group);
   });
 }
 
-// Edits the scene's values (not its objects, not the view) and hands them back; a refused edit shows its
-// message.
-function edit(change) {
-  const settings = api.panel().settings;
-  change(settings);
-  showMessage(api.editSettings(JSON.stringify(settings)));
-  refresh();
-}
-
-function pressUntil(code, done, limit = 12) {
-  for (let i = 0; i < limit && !done(api.panel()); ++i) press(code);
+// Sets one value through the setter every panel shares (src/app/demo/scene_setters.h: the window's panel
+// calls the same); a refused value shows the check's message, as a scene file's would.
+function set(name, value) {
+  showMessage(api.set(name, value));
   refresh();
 }
 
 function wireControls() {
   wireMouse();
-  const keyOf = {flat: asciiKey('1'), gouraud: asciiKey('2'), phong: asciiKey('3'), toon: asciiKey('4'), exact: asciiKey('5')};
-  $('shading').addEventListener('change', (e) => press(keyOf[e.target.value]));
-  $('lighting').addEventListener('change', (e) => pressUntil(asciiKey('B'), (u) => u.currentSettings.lighting === e.target.value, 1));
-  $('term').addEventListener('change', (e) => pressUntil(asciiKey('K'), (u) => u.currentSettings.term === e.target.value, 3));
-  $('perspective-matrix').addEventListener('change',
-      (e) => pressUntil(asciiKey('U'), (u) => u.currentSettings.perspective_matrix === e.target.value, 1));
-  $('normal-matrix').addEventListener('change',
-      (e) => pressUntil(asciiKey('J'), (u) => u.currentSettings.normal_matrix === e.target.value, 1));
-  $('match').addEventListener('change', (e) => { api.setMatch(e.target.checked ? 1 : 0); refresh(); });
-  $('level').addEventListener('input', (e) => {
-    const target = Number(e.target.value);
-    pressUntil(ui.level < target ? tables.keys['+'] : tables.keys['-'], (u) => u.level === target);
-  });
-  $('auto').addEventListener('change', (e) => pressUntil(asciiKey('A'), (u) => u.autoLevel === e.target.checked, 1));
-  // E, V, I, Y and Q each switch their view on (from any other) and off again, as in the window.
-  $('view-kind').addEventListener('change', (e) => {
-    const keyOf = {error: asciiKey('E'), split: asciiKey('V'), profile: asciiKey('I'), outside: asciiKey('Y'), ndc: asciiKey('Q')};
-    const shown = viewName(ui.view);
-    if (e.target.value !== shown) press(keyOf[e.target.value === 'scene' ? shown : e.target.value]);
-    refresh();
-  });
-  $('overlay').addEventListener('change', (e) => pressUntil(asciiKey('W'), (u) => u.overlay === e.target.value, 3));
-  $('projection').addEventListener('change',
-      (e) => pressUntil(asciiKey('O'), (u) => u.orthographic === (e.target.value === 'orthographic'), 1));
-  $('normals').addEventListener('change',
-      (e) => pressUntil(asciiKey('N'), (u) => (u.currentSettings.vertex_normals || 'averaged') === e.target.value, 1));
+  // Each control sets its value by name; the keys (1-5, B, K, U, J, +, -, A, E, V, I, Y, Q, W, O, N) set the
+  // same values through their commands.
+  const selects = {shading: 'shading', lighting: 'lighting', term: 'term', 'perspective-matrix': 'perspective_matrix',
+                   'normal-matrix': 'normal_matrix', 'view-kind': 'view', overlay: 'overlay', projection: 'projection',
+                   normals: 'vertex_normals'};
+  for (const [id, name] of Object.entries(selects))
+    $(id).addEventListener('change', (e) => set(name, e.target.value));
+  $('match').addEventListener('change', (e) => set('match_highlight', e.target.checked));
+  $('level').addEventListener('input', (e) => set('level', e.target.value));
+  $('auto').addEventListener('change', (e) => set('auto_level', e.target.checked));
   // The material controls edit the chosen object (0: all objects; a probe click chooses the object it hits).
   const chooseObject = (e) => {
     if (e.target.value === '') return; // the field being retyped
-    api.chooseObject(Math.round(Number(e.target.value)));
-    refresh();
+    set('object', Math.round(Number(e.target.value)));
   };
   $('object').addEventListener('input', chooseObject);
   $('object').addEventListener('change', chooseObject);
-  const editMaterial = (change) => {
-    showMessage(api.editMaterial(JSON.stringify(change)));
-    refresh();
-  };
-  for (const term of ['ka', 'kd', 'ks']) {
-    const field = {ka: 'ambient', kd: 'diffuse', ks: 'specular'}[term];
-    $(term).addEventListener('input', (e) => editMaterial({[field]: fromHex(e.target.value)}));
-  }
+  for (const [id, term] of [['ka', 'ambient'], ['kd', 'diffuse'], ['ks', 'specular']])
+    $(id).addEventListener('input', (e) => set('material.' + term, fromHex(e.target.value).join(' ')));
   $('shininess').addEventListener('input', (e) =>
-    editMaterial({shininess: Math.round(10 ** Number(e.target.value) * 10) / 10}));
+    set('material.shininess', Math.round(10 ** Number(e.target.value) * 10) / 10));
   // The object's scale: x, y, z (an uneven one makes the ellipsoid of the normal-matrix lesson, J).
   for (const axis of ['x', 'y', 'z'])
-    $('scale-' + axis).addEventListener('input', () => {
-      showMessage(api.editScale(...['x', 'y', 'z'].map((a) => Number($('scale-' + a).value))));
-      refresh();
-    });
+    $('scale-' + axis).addEventListener('input', () => set('scale', ['x', 'y', 'z'].map((a) => $('scale-' + a).value).join(' ')));
   // The view volume: the drawn projection with the one value changed (DemoState::editViewVolume).
-  const editVolume = (change) => {
-    const volume = Object.assign({}, ui.currentSettings.projection, change);
-    showMessage(api.editViewVolume(JSON.stringify(volume)));
-    refresh();
-  };
-  $('fovy').addEventListener('input', (e) => editVolume({fovy_deg: Number(e.target.value)}));
+  $('fovy').addEventListener('input', (e) => set('projection.fovy_deg', e.target.value));
   for (const side of ['left', 'right', 'bottom', 'top'])
-    $(side).addEventListener('change', (e) => editVolume({[side]: Number(e.target.value)}));
+    $(side).addEventListener('change', (e) => set('projection.' + side, e.target.value));
   for (const plane of ['near', 'far'])
-    $(plane).addEventListener('input', (e) =>
-      editVolume({[plane]: Number((10 ** Number(e.target.value)).toPrecision(3))}));
-  $('bands').addEventListener('input', (e) => edit((s) => { s.toon_bands = Number(e.target.value); }));
+    $(plane).addEventListener('input', (e) => set('projection.' + plane, (10 ** Number(e.target.value)).toPrecision(3)));
+  $('bands').addEventListener('input', (e) => set('toon_bands', e.target.value));
   $('next-material').addEventListener('click', () => press(asciiKey('M')));
   $('next-lights').addEventListener('click', () => press(asciiKey('L')));
   $('reset').addEventListener('click', () => press(asciiKey('R')));

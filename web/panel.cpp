@@ -1,6 +1,6 @@
 // The page's control panel: what it shows (panelJson, twice a second), the edits its controls make, and
 // the tables it reads instead of repeating them.
-#include <cstring>
+#include <optional>
 #include <string>
 
 #include <emscripten/emscripten.h>
@@ -8,6 +8,7 @@
 
 #include "app/demo/matrices_text.h"
 #include "app/demo/scene_flags.h"
+#include "app/demo/scene_setters.h"
 #include "app/demo/view_explanations.h"
 #include "page_state.h"
 #include "shadelab/geometry/sphere.h"
@@ -19,7 +20,8 @@ namespace shadelab::web {
 
 // The scene as JSON without its objects: the panel's refresh runs twice a second, and the objects of a
 // large scene are megabytes of JSON (10,000 of them: 2 s a call, and the page stopped answering).
-nlohmann::json settingsJson(Scene scene) { // by value: DemoState::current's copy moves in
+nlohmann::json settingsJson(const Scene& given) {
+    Scene scene = given; // twice a second: a copy of the objects costs far less than their JSON would
     scene.objects.clear();
     nlohmann::json json = nlohmann::json::parse(sceneToJson(scene));
     json.erase("objects");
@@ -53,6 +55,13 @@ nlohmann::json panelJson() {
     const DemoState& s = *p.state;
     const Scene& scene = p.state->scene();
     const app::PictureRect picture = pictureRect();
+    // The scene as drawn in the picture: the kept one when it was drawn at the picture's size (presenting a
+    // lesson, the picture above the band is smaller), else made for it.
+    const Scene& drawn = s.drawn();
+    std::optional<Scene> sized;
+    if (drawn.width != picture.width || drawn.height != picture.height)
+        sized = s.current(picture.width, picture.height);
+    const Scene& current = sized ? *sized : drawn;
     const auto shown = s.shownObject();
     const nlohmann::json material = shown ? materialJson(scene, *shown) : nullptr;
     return {
@@ -60,24 +69,24 @@ nlohmann::json panelJson() {
         {"status", app::statusText(s)},
         {"help", app::keyHelpText()},
         {"viewHelp", app::viewHelpText()}, // what each view and shading mode shows: the help's second table
-        {"showHelp", s.showHelp},
-        {"showPanel", s.showPanel},
-        {"presenting", s.presenting},
+        {"showHelp", s.showHelp()},
+        {"showPanel", s.showPanel()},
+        {"presenting", s.presenting()},
         {"presentation", app::presentationLabel(s)},
-        {"matchHighlight", s.matchHighlight},
+        {"matchHighlight", s.matchHighlight()},
         {"level", s.level()},
         {"autoLevel", s.autoLevel()},
         {"orthographic", s.orthographic()},
         {"material", s.materialName()},
         {"lights", s.lightsName()},
-        {"overlay", toString(s.drawn().overlay)},
-        {"view", toString(s.drawn().view)},
-        {"viewReport", s.viewReport},
-        {"seeing", app::whatYouAreSeeing(s.drawn())}, // one line: what is drawn, in which space, the formula
+        {"overlay", toString(drawn.overlay)},
+        {"view", toString(drawn.view)},
+        {"viewReport", s.viewReport()},
+        {"seeing", app::whatYouAreSeeing(drawn)}, // one line: what is drawn, in which space, the formula
         {"probe", app::probeText(s)},
-        {"matrices", app::matricesPanelText(s.current(picture.width, picture.height), shown)},
-        {"settings", settingsJson(scene)}, // the scene less its objects
-        {"currentSettings", settingsJson(s.current(picture.width, picture.height))}, // as drawn, likewise
+        {"matrices", app::matricesPanelText(current, shown)},
+        {"settings", settingsJson(scene)},          // the scene less its objects
+        {"currentSettings", settingsJson(current)}, // as drawn, likewise
         {"objectCount", scene.objects.size()},
         {"shownMaterial", material},
         {"shownScale",
@@ -104,68 +113,13 @@ using namespace shadelab::web;
 
 extern "C" {
 
-// Panel edits (toon bands, the lights): `json` is the scene's values less its objects (the panel's
-// "settings"), which replace the scene's; the objects and the view (orbit, presets) stay.
-EMSCRIPTEN_KEEPALIVE const char* shadelab_edit_settings(const char* json) {
-    return guarded([&] {
-        checkSceneTextSize(std::strlen(json), "panel");
-        Scene scene = parseScene(json, "panel");
-        scene.objects = page().state->scene().objects;
-        validateScene(scene);
-        page().state->scene() = std::move(scene);
-        requestDraw();
-    });
-}
-
-// The panel's object chooser: 0 for all objects, i for object i (DemoState::chooseEditedObject).
-EMSCRIPTEN_KEEPALIVE void shadelab_choose_object(int number) {
-    page().state->chooseEditedObject(number);
-}
-
-// A material slider: `json` holds the properties it changed, e.g. {"shininess": 31.6}, for the shown
-// material (DemoState::editMaterial: the chosen object's, or that property of every object). The values
-// pass through the scene parser at the shown object's place, so a refused one reads as in a scene file.
-EMSCRIPTEN_KEEPALIVE const char* shadelab_edit_material(const char* json) {
-    return guarded([&] {
-        DemoState& state = *page().state;
-        const auto shown = state.shownObject();
-        if (!shown) return;
-        const nlohmann::json changes = nlohmann::json::parse(json);
-        nlohmann::json material = materialJson(state.scene(), *shown);
-        for (const auto& [key, value] : changes.items()) material[key] = value;
-        const Material parsed = parseMaterial(material.dump(), *shown, "panel");
-        // Only the properties the slider changed: the others stay exactly as they are (not as printed).
-        Material edited = state.scene().objects[*shown].material;
-        if (changes.contains("ambient")) edited.ambient = parsed.ambient;
-        if (changes.contains("diffuse")) edited.diffuse = parsed.diffuse;
-        if (changes.contains("specular")) edited.specular = parsed.specular;
-        if (changes.contains("shininess")) edited.shininess = parsed.shininess;
-        state.editMaterial(edited);
-        requestDraw();
-    });
-}
-
-// The panel's scale sliders: the shown object's scale (DemoState::editScale), or a message.
-EMSCRIPTEN_KEEPALIVE const char* shadelab_edit_scale(double x, double y, double z) {
-    return guarded([&] {
-        page().state->editScale({x, y, z});
-        requestDraw();
-    });
-}
-
-// The panel's view-volume fields: the drawn projection with a value changed, written as the scene's
-// "projection" ({"type": "perspective", "fovy_deg": 30, "near": 1, "far": 9}), read by the scene parser
-// (its messages name projection.<field>) and applied by DemoState::editViewVolume; or a message.
-EMSCRIPTEN_KEEPALIVE const char* shadelab_edit_view_volume(const char* projectionJson) {
-    return guarded([&] {
-        const nlohmann::json wrapped = {{"projection", nlohmann::json::parse(projectionJson)}};
-        page().state->editViewVolume(parseScene(wrapped.dump(), "view volume").projection);
-        requestDraw();
-    });
-}
-
-EMSCRIPTEN_KEEPALIVE void shadelab_set_match_highlight(int on) {
-    page().state->matchHighlight = on != 0;
+// Every control of the page's panel: the value `name` set to `text` through the setter the window's panel
+// uses too (app/demo/scene_setters.h), e.g. ("lighting", "phong"), ("material.shininess", "31.6"),
+// ("lights[0].cutoff_deg", "20"); "" when set, else the refusal, in the words of the scene file's check.
+EMSCRIPTEN_KEEPALIVE const char* shadelab_set(const char* name, const char* text) {
+    std::string refusal = app::setValue(*page().state, name, text);
+    if (refusal.empty()) requestDraw();
+    return give(std::move(refusal));
 }
 
 // What the panel's refresh reads, twice a second: everything but the scenes' objects (panelJson).

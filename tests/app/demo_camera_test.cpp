@@ -464,8 +464,8 @@ TEST(DemoStateRandom, RandomCommandsDragsAndZoomsAlwaysGiveAValidScene) {
                 context << "zoom " << s;
                 state.zoom(s);
             } else {
-                state.matchHighlight = !state.matchHighlight;
-                context << "matchHighlight " << state.matchHighlight;
+                state.setMatchHighlight(!state.matchHighlight());
+                context << "matchHighlight " << state.matchHighlight();
             }
             const Scene s = state.current();
             ASSERT_NO_THROW(validateScene(s)) << context.str();

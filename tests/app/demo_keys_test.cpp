@@ -185,15 +185,15 @@ TEST(DemoApply, WindowCommandsReturnFalseAndChangeNothing) {
 
 TEST(DemoApply, HelpAndPanelToggle) {
     DemoState state(Scene{});
-    const bool help = state.showHelp, panel = state.showPanel;
+    const bool help = state.showHelp(), panel = state.showPanel();
     state.apply(Command::ToggleHelp);
     state.apply(Command::TogglePanel);
-    EXPECT_NE(state.showHelp, help);
-    EXPECT_NE(state.showPanel, panel);
+    EXPECT_NE(state.showHelp(), help);
+    EXPECT_NE(state.showPanel(), panel);
     state.apply(Command::ToggleHelp);
     state.apply(Command::TogglePanel);
-    EXPECT_EQ(state.showHelp, help);
-    EXPECT_EQ(state.showPanel, panel);
+    EXPECT_EQ(state.showHelp(), help);
+    EXPECT_EQ(state.showPanel(), panel);
 }
 
 TEST(DemoApply, NTogglesVertexNormals) {

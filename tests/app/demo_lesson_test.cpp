@@ -27,8 +27,8 @@ TEST(DemoLesson, StepKeysMoveThroughTheStepsAndRReturnsToTheStep) {
     DemoState state(Scene{});
     EXPECT_TRUE(state.apply(Command::NextStep));
     EXPECT_NE(state.lastChange().find("no lesson open"), std::string::npos) << state.lastChange();
-    state.presenting = true;
-    state.showPanel = false;
+    state.setPresenting(true);
+    state.setShowPanel(false);
     state.openLesson(lesson);
     EXPECT_EQ(state.step(), 0u);
     EXPECT_EQ(state.scene().shading, ShadingMode::Flat);
@@ -42,8 +42,8 @@ TEST(DemoLesson, StepKeysMoveThroughTheStepsAndRReturnsToTheStep) {
     EXPECT_EQ(state.lastChange(), "step 2 of 2: Two");
     EXPECT_EQ(state.scene().shading, ShadingMode::Toon);
     EXPECT_EQ(state.level(), 2);
-    EXPECT_TRUE(state.presenting) << "the window's settings are kept";
-    EXPECT_FALSE(state.showPanel);
+    EXPECT_TRUE(state.presenting()) << "the window's settings are kept";
+    EXPECT_FALSE(state.showPanel());
     // Inside the step: keys and the mouse change it; R gives the step back as written.
     state.apply(Command::Phong);
     state.apply(Command::LevelUp);

@@ -52,7 +52,7 @@ Scene phongScene() {
 TEST(DemoLighting, BFromPhongMultipliesEveryShininessByFourAndBackDivides) {
     const Scene scene = threeObjectScene(); // Phong lighting; shininess 32, 12, 300
     DemoState state(scene);
-    ASSERT_TRUE(state.matchHighlight) << "the issue: the matching is on by default in the demo";
+    ASSERT_TRUE(state.matchHighlight()) << "the issue: the matching is on by default in the demo";
     EXPECT_TRUE(state.apply(Command::ToggleLighting));
     Scene s = state.current();
     EXPECT_EQ(s.lighting, LightingModel::BlinnPhong);
@@ -76,7 +76,7 @@ TEST(DemoLighting, BFromBlinnPhongDividesByFour) {
 TEST(DemoLighting, BWithoutMatchingLeavesShininessAlone) {
     const Scene scene = threeObjectScene();
     DemoState state(scene);
-    state.matchHighlight = false;
+    state.setMatchHighlight(false);
     for (LightingModel expected :
          {LightingModel::BlinnPhong, LightingModel::Phong, LightingModel::BlinnPhong}) {
         state.apply(Command::ToggleLighting);
@@ -214,19 +214,19 @@ TEST(DemoState, LevelUpBeyondTheWorkLimitIsRefused) {
     DemoState state(scene);
     state.apply(Command::LevelUp);
     EXPECT_EQ(state.current().objects.at(0).subdivisions, 9);
-    EXPECT_NE(state.levelRefusal.find("level 10 refused"), std::string::npos) << state.levelRefusal;
-    EXPECT_NE(state.levelRefusal.find("triangles per frame"), std::string::npos) << state.levelRefusal;
+    EXPECT_NE(state.levelRefusal().find("level 10 refused"), std::string::npos) << state.levelRefusal();
+    EXPECT_NE(state.levelRefusal().find("triangles per frame"), std::string::npos) << state.levelRefusal();
     EXPECT_NE(statusText(state).find("level 10 refused"), std::string::npos) << statusText(state);
     state.apply(Command::LevelDown);
     EXPECT_EQ(state.current().objects.at(0).subdivisions, 8);
-    EXPECT_EQ(state.levelRefusal, "");
+    EXPECT_EQ(state.levelRefusal(), "");
 
     // A split draws every object once per side: at level 9 that is twice the limit, so V is refused too,
     // and a split's own @levels count (render --view split:phong@10,gouraud@10 drew 2 × 268 M triangles).
     DemoState split(scene);
     split.apply(Command::ToggleSplitView);
     EXPECT_EQ(split.current().view.kind, ViewKind::Scene);
-    EXPECT_NE(split.levelRefusal.find("split view refused"), std::string::npos) << split.levelRefusal;
+    EXPECT_NE(split.levelRefusal().find("split view refused"), std::string::npos) << split.levelRefusal();
     Scene sides = scene;
     for (SceneObject& o : sides.objects) o.subdivisions = 0;
     sides.view = parseViewOrThrow("split:phong@10,gouraud@10", "--view");
@@ -294,7 +294,7 @@ TEST(DemoMaterials, PresetsNameTheirKind) {
 // with Phong must show the plastic α, not a quarter of it.
 TEST(DemoMaterials, PresetChosenUnderBlinnPhongIsItsAlphaAfterB) {
     DemoState state(Scene{}); // blinn-phong
-    ASSERT_TRUE(state.matchHighlight);
+    ASSERT_TRUE(state.matchHighlight());
     for (int preset = 0; preset < 3; ++preset) {
         state.apply(Command::NextMaterial);
         const std::string name = state.materialName();

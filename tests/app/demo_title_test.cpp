@@ -41,18 +41,18 @@ TEST(DemoPresentation, LabelNamesModeLightingLevelAndExponent) {
     Scene scene;
     scene.objects[0].material.shininess = 32;
     DemoState state(scene);
-    EXPECT_FALSE(state.presenting);
+    EXPECT_FALSE(state.presenting());
     EXPECT_TRUE(state.apply(Command::TogglePresentation));
-    EXPECT_TRUE(state.presenting);
+    EXPECT_TRUE(state.presenting());
     EXPECT_EQ(presentationLabel(state), "PHONG SHADING\nBLINN-PHONG LIGHTING\nLEVEL 5 | BETA = 32");
     state.apply(Command::Gouraud);
-    state.matchHighlight = false;
+    state.setMatchHighlight(false);
     state.apply(Command::ToggleLighting);
     state.apply(Command::LevelDown);
     EXPECT_EQ(presentationLabel(state), "GOURAUD SHADING\nPHONG LIGHTING\nLEVEL 4 | ALPHA = 32");
     EXPECT_FALSE(state.apply(Command::ToggleFullScreen)) << "the window's to carry out";
     state.apply(Command::TogglePresentation);
-    EXPECT_FALSE(state.presenting);
+    EXPECT_FALSE(state.presenting());
 }
 
 } // namespace

@@ -51,7 +51,8 @@ void OrbitCamera::zoom(double wheelSteps) {
 }
 
 void DemoState::drag(double dxPixels, double dyPixels) {
-    if (holdingDivider_) return;      // the drag moves the split's divider (pointer())
+    if (holdingDivider_) return; // the drag moves the split's divider (pointer())
+    drawn_.stale = true;
     if (observed(scene_.view.kind)) { // the observer orbits; the camera keeps its own keys
         Observer& o = scene_.view.observer;
         o.azimuthDeg = std::remainder(o.azimuthDeg - 0.5 * dxPixels, 360.0);
@@ -64,6 +65,7 @@ void DemoState::drag(double dxPixels, double dyPixels) {
 }
 
 void DemoState::zoom(double wheelSteps) {
+    drawn_.stale = true;
     if (observed(scene_.view.kind)) {
         Observer& o = scene_.view.observer;
         o.zoom = std::clamp(o.zoom * std::pow(0.9, wheelSteps), kMinObserverZoom, kMaxObserverZoom);

@@ -37,7 +37,7 @@ std::string viewReport(const Scene& scene, const gl::ViewFigures& figures) {
 }
 
 void FramedPicture::drawPicture(gl::Renderer& renderer, DemoState& state, int width, int height) {
-    const Scene scene = state.drawn();
+    const Scene& scene = state.drawn();
     renderer.render(scene, width, height);
     const gl::ViewFigures& figures = renderer.viewFigures();
     const ReportFacts reported{scene.view,
@@ -48,11 +48,11 @@ void FramedPicture::drawPicture(gl::Renderer& renderer, DemoState& state, int wi
                                figures.row};
     if (reported_.changed(reported)) report_ = viewReport(scene, figures);
     // Copied only when the state's differs: a new state (a lesson step) starts without it.
-    if (state.viewReport != report_) state.viewReport = report_;
+    state.setViewReport(report_);
     drawProbeVectors(renderer, scene, state.probe(), width, height);
     // Presentation mode without a lesson: the label over the bottom left, drawn here, so that the window
     // and the page draw it the same way (a lesson's band is drawn by draw(), under the picture).
-    if (!state.presenting || state.lesson()) return;
+    if (!state.presenting() || state.lesson()) return;
     const PresentationFacts facts = presentationFacts(scene);
     const gl::Sprite& label = label_.update(std::tuple{facts, width, height}, [&] {
         PresentationLabelImage made = presentationLabelImage(presentationLabel(facts), width, height);
@@ -97,7 +97,7 @@ void FramedPicture::draw(gl::Renderer& renderer, DemoState& state, const Picture
     try {
         // Presenting a lesson, the step's band takes the bottom of the picture's place and the picture is
         // drawn above it (pictureAboveBand), as `shadelab slides` composes the step's slide at this size.
-        const Lesson* lesson = state.presenting ? state.lesson() : nullptr;
+        const Lesson* lesson = state.presenting() ? state.lesson() : nullptr;
         const gl::Sprite* band = nullptr;
         shown_ = picture;
         if (lesson) {
@@ -112,7 +112,7 @@ void FramedPicture::draw(gl::Renderer& renderer, DemoState& state, const Picture
         if (shown_.width > 0 && shown_.height > 0) {
             state.setViewport(shown_.width, shown_.height);
             target_.fit(shown_.width, shown_.height, gl::ColorFormat::Rgba8,
-                        gl::depthFormatFor(state.scene().depth)); // the depth drawn() keeps
+                        gl::depthFormatFor(state.drawn().depth));
             target_.bind();
             drawPicture(renderer, state, shown_.width, shown_.height);
             // GL counts rows up from the bottom; the picture's place is measured from the top.

@@ -44,30 +44,49 @@ DemoState::DemoState(Scene scene)
     for (const SceneObject& o : scene_.objects) exponents_.push_back(o.material.shininess);
 }
 
+void DemoState::setViewport(int width, int height) {
+    if (width == viewportWidth_ && height == viewportHeight_) return; // every frame sets it
+    viewportWidth_ = width;
+    viewportHeight_ = height;
+    drawn_.stale = true;
+}
+
+const Scene& DemoState::drawn() const {
+    if (drawn_.stale) {
+        // Versions are unique across states (a lesson step is a new one), so a cache keyed by a version
+        // never mistakes another state's scene for this one's. A change that leaves the scene as it was
+        // (a click on the background, a zero drag) keeps the version, and what is cached by it.
+        static std::uint64_t lastVersion = 0;
+        Scene fresh = current(viewportWidth_, viewportHeight_);
+        if (drawn_.version == 0 || fresh != drawn_.scene) {
+            drawn_.scene = std::move(fresh);
+            drawn_.version = ++lastVersion;
+        }
+        drawn_.stale = false;
+    }
+    return drawn_.scene;
+}
+
+std::uint64_t DemoState::drawnVersion() const {
+    (void)drawn(); // made if stale
+    return drawn_.version;
+}
+
 void DemoState::openLesson(std::shared_ptr<const Lesson> lesson, std::size_t index) {
-    if (!lesson || lesson->steps.empty()) throw InputError("a lesson has at least one step");
-    lesson_ = std::move(lesson);
-    goToStep(std::min(index, lesson_->steps.size() - 1));
+    player_.open(std::move(lesson), index);
+    goToStep(player_.step());
     lastChange_ = stepName();
 }
 
 void DemoState::goToStep(std::size_t index) {
-    DemoState step(lesson_->steps[index].scene);
-    step.lesson_ = lesson_;
-    step.step_ = index;
-    step.matchHighlight = matchHighlight;
-    step.showHelp = showHelp;
-    step.showPanel = showPanel;
-    step.presenting = presenting;
+    LessonPlayer player = player_;
+    player.open(player_.shared(), index);
+    DemoState step(player.current().scene);
+    step.player_ = std::move(player);
+    step.window_ = window_;
     step.viewportWidth_ = viewportWidth_;
     step.viewportHeight_ = viewportHeight_;
     *this = std::move(step);
-}
-
-std::string DemoState::stepName() const {
-    if (!lesson_) return "";
-    return "step " + std::to_string(step_ + 1) + " of " + std::to_string(lesson_->steps.size()) + ": " +
-           lesson_->steps[step_].title;
 }
 
 // In split view the mode keys change the left side (which the split names); a side never equals the other,
@@ -80,24 +99,67 @@ void DemoState::setShading(ShadingMode mode) {
         if (view.left == view.right) view.right.shading = previous;
     }
     scene_.shading = mode;
+    drawn_.stale = true;
     // The NDC view transforms the mesh; exact shading has none (the scene check refuses the pair).
     if (mode == ShadingMode::Exact && view.kind == ViewKind::Ndc) view.kind = ViewKind::Scene;
 }
 
 void DemoState::pointer(double x, double y, bool leftHeld) {
-    const Scene shown = drawn();
+    const int width = drawn().width, height = drawn().height;
     const View& view = scene_.view;
-    if (view.kind == ViewKind::Profile && shown.height > 0)
-        scene_.view.at = std::clamp(y / shown.height, 0.0, 1.0);
-    if (view.kind == ViewKind::Split && shown.width > 0) {
-        const double divider = view.at.value_or(0.5) * shown.width;
+    // Only a change makes the drawn scene again: the pointer moves far more often than the divider.
+    const auto moveTo = [&](double at) {
+        if (scene_.view.at == at) return;
+        scene_.view.at = at;
+        drawn_.stale = true;
+    };
+    if (view.kind == ViewKind::Profile && height > 0) moveTo(std::clamp(y / height, 0.0, 1.0));
+    if (view.kind == ViewKind::Split && width > 0) {
+        const double divider = view.at.value_or(0.5) * width;
         if (leftHeld && !leftWasHeld_) holdingDivider_ = std::abs(x - divider) <= 8;
         if (!leftHeld) holdingDivider_ = false;
-        if (holdingDivider_) scene_.view.at = std::clamp(x / shown.width, 0.0, 1.0);
+        if (holdingDivider_) moveTo(std::clamp(x / width, 0.0, 1.0));
     } else {
         holdingDivider_ = false;
     }
     leftWasHeld_ = leftHeld;
+}
+
+void DemoState::setLighting(LightingModel model) {
+    if (model != scene_.lighting) toggleLighting();
+}
+
+void DemoState::setView(ViewKind kind) {
+    const ViewKind shown = scene_.view.kind;
+    if (kind == shown) return;
+    if (kind == ViewKind::Ndc && scene_.shading == ShadingMode::Exact) { // the scene check's own words
+        Scene check = valuesCopy();
+        check.view = View{};
+        check.view.kind = ViewKind::Ndc;
+        validateSceneValues(check);
+    }
+    const auto toggleOf = [](ViewKind k) {
+        return k == ViewKind::Error     ? Command::ToggleErrorView
+               : k == ViewKind::Split   ? Command::ToggleSplitView
+               : k == ViewKind::Profile ? Command::ToggleProfileView
+               : k == ViewKind::Outside ? Command::ToggleOutsideView
+                                        : Command::ToggleNdcView;
+    };
+    const ViewKind toggled = kind == ViewKind::Scene ? shown : kind; // off: the shown view's toggle
+    if (toggled == ViewKind::Split) {
+        const View before = scene_.view;
+        if (shown != ViewKind::Split) scene_.view = View{}; // a split is built from the scene's own view
+        levelRefusal_.clear();
+        toggleSplitView();
+        if (!levelRefusal_.empty()) {
+            scene_.view = before;
+            throw InputError(levelRefusal_);
+        }
+    } else {
+        toggleView(toggleOf(toggled));
+    }
+    drawn_.stale = true; // after the change: toggleSplitView reads drawn() on the way
+    describe(toggleOf(toggled));
 }
 
 // E, V, I, Y, Q: the view on, or back to the scene; false (with lastChange_ saying why) when refused.
@@ -121,6 +183,7 @@ bool DemoState::toggleView(Command command) {
 // The mode (which 1-5 then change) beside exact; beside exact itself, Gouraud and Phong. A split draws
 // every object twice: refused (levelRefusal says why) beyond the limits.
 void DemoState::toggleSplitView() {
+    drawn_.stale = true;
     if (scene_.view.kind == ViewKind::Split) {
         scene_.view = View{};
         return;
@@ -133,10 +196,11 @@ void DemoState::toggleSplitView() {
     Scene candidate = drawn();
     candidate.view = split;
     if (const std::string why = overLimits(candidate); !why.empty()) {
-        levelRefusal = "split view refused: " + why;
+        levelRefusal_ = "split view refused: " + why;
         return;
     }
     scene_.view = split;
+    drawn_.stale = true; // drawn() above made it for the candidate
 }
 
 // M: the next material preset on every object, then the scene's own again.
@@ -150,33 +214,29 @@ void DemoState::nextMaterial() {
         // Presets are given as α; the scene's own exponent belongs to the scene's lighting model.
         double exponent = presetExponent(scene_.objects[i].material.shininess);
         if (material_ == 0)
-            exponent = !matchHighlight || initial_.lighting == scene_.lighting ? own.shininess
-                       : scene_.lighting == LightingModel::BlinnPhong          ? own.shininess * 4
-                                                                               : own.shininess / 4;
+            exponent = !window_.matchHighlight || initial_.lighting == scene_.lighting ? own.shininess
+                       : scene_.lighting == LightingModel::BlinnPhong                  ? own.shininess * 4
+                                                                                       : own.shininess / 4;
         setShininess(i, exponent);
     }
 }
 
 // PgDn, PgUp, Home, End; lastChange_ says where it went, or why it did not.
 void DemoState::moveThroughLesson(Command command) {
-    if (!lesson_) {
-        lastChange_ = "no lesson open (shadelab LESSON.json opens one)";
+    const StepMove move = command == Command::FirstStep  ? StepMove::First
+                          : command == Command::LastStep ? StepMove::Last
+                          : command == Command::NextStep ? StepMove::Next
+                                                         : StepMove::Previous;
+    if (std::string refused = player_.move(move); !refused.empty()) {
+        lastChange_ = std::move(refused);
         return;
     }
-    const std::size_t last = lesson_->steps.size() - 1;
-    const std::size_t to = command == Command::FirstStep  ? 0
-                           : command == Command::LastStep ? last
-                           : command == Command::NextStep ? std::min(step_ + 1, last)
-                                                          : (step_ == 0 ? 0 : step_ - 1);
-    if (to == step_ && (command == Command::NextStep || command == Command::PreviousStep)) {
-        lastChange_ = to == 0 ? "already at the first step" : "already at the last step";
-        return;
-    }
-    goToStep(to);
+    goToStep(player_.step());
     lastChange_ = stepName();
 }
 
 bool DemoState::apply(Command command) {
+    drawn_.stale = true; // most commands change the drawn scene; drawn() keeps it when none did
     switch (command) {
     case Command::Flat:
         setShading(ShadingMode::Flat);
@@ -224,14 +284,11 @@ bool DemoState::apply(Command command) {
     case Command::LevelDown:
         changeLevels(-1);
         break;
-    case Command::AutoLevel: { // A again leaves auto at the level it shows
-        const Scene shown = drawn();
-        for (SceneObject& o : scene_.objects)
-            o.subdivisions = autoLevel() ? subdivisionLevel(shown, o) : kAutoSubdivisions;
+    case Command::AutoLevel: // A again leaves auto at the level it shows
+        setAutoLevel(!autoLevel());
         break;
-    }
     case Command::ToggleProjection:
-        orthographic_ = !orthographic_;
+        setOrthographic(!orthographic_);
         break;
     case Command::ToggleNormals:
         scene_.vertexNormals =
@@ -251,8 +308,8 @@ bool DemoState::apply(Command command) {
         scene_.lights = lights_ == 0 ? initial_.lights : lightPresets()[std::size_t(lights_ - 1)].lights;
         break;
     case Command::ResetView:
-        if (lesson_) {
-            goToStep(step_); // the step as written, not only its camera
+        if (lesson()) {
+            goToStep(step()); // the step as written, not only its camera
             lastChange_ = stepName() + " (as written)";
             return true;
         }
@@ -266,19 +323,21 @@ bool DemoState::apply(Command command) {
         moveThroughLesson(command);
         return true;
     case Command::TogglePanel:
-        showPanel = !showPanel;
+        window_.showPanel = !window_.showPanel;
         break;
     case Command::ToggleHelp:
-        showHelp = !showHelp;
+        window_.showHelp = !window_.showHelp;
         break;
     case Command::TogglePresentation:
-        presenting = !presenting;
+        window_.presenting = !window_.presenting;
         break;
     case Command::ToggleFullScreen:
     case Command::Screenshot:
     case Command::Quit:
         return false;
     }
+    // Again after the change: a command that reads drawn() on its way (auto level, split) made it before.
+    drawn_.stale = true;
     lastChange_ = describeChange(command);
     return true;
 }
@@ -291,6 +350,7 @@ void DemoState::dragLight(double dxPixels, double dyPixels) {
         return;
     }
     const std::size_t index = std::size_t(light - scene_.lights.begin());
+    drawn_.stale = true;
     const bool positional = light->type != LightType::Directional;
     const glm::dvec3 target = camera_.target;
     const glm::dvec3 offset = positional ? light->position - target : -unitDirection(light->direction);
@@ -316,16 +376,17 @@ void DemoState::dragLight(double dxPixels, double dyPixels) {
 }
 
 bool DemoState::probeAt(double x, double y) {
-    const Scene shown = drawn();
+    const Scene& shown = drawn();
     if (observed(shown.view.kind)) return false; // the picture is the observer's, not the camera's
-    probePoint_ = pickSurfacePoint(shown, x, y);
-    if (!probePoint_) {
+    const std::optional<ProbePoint> point = pickSurfacePoint(shown, x, y);
+    if (!point) {
+        probe_.clear();
         lastChange_ = "probe off";
         return false;
     }
-    if (editedObject != kAllObjects)
-        editedObject = int(probePoint_->object); // the panel edits what was picked
-    if (const auto report = probe()) {
+    probe_.pin(*point);
+    if (editedObject_ != kAllObjects) editedObject_ = int(point->object); // the panel edits what was picked
+    if (const auto& report = probe()) {
         char text[160];
         std::snprintf(text, sizeof text, "probe: %s differs from exact by %.2f/255",
                       std::string(toString(shown.shading)).c_str(), probeError255(*report));
@@ -334,43 +395,29 @@ bool DemoState::probeAt(double x, double y) {
     return true;
 }
 
-std::optional<ProbeReport> DemoState::probe() const {
-    if (!probePoint_ || probePoint_->object >= scene_.objects.size()) return std::nullopt;
-    Scene shown = drawn();
-    if (probeReport_ && probeScene_ == shown && probeReport_->point.object == probePoint_->object &&
-        probeReport_->point.directionObject == probePoint_->directionObject)
-        return probeReport_;
-    const int level = subdivisionLevel(shown, shown.objects[probePoint_->object]);
-    if (!probeMesh_ || probeMesh_->level != level || probeMeshNormals_ != shown.vertexNormals) {
-        probeMesh_ = buildSphere(level, shown.vertexNormals);
-        probeMeshNormals_ = shown.vertexNormals;
-    }
-    probeReport_ = probeSurface(shown, *probePoint_, *probeMesh_);
-    probeScene_ = std::move(shown);
-    return probeReport_;
-}
-
 // Each object one level up or down from the level it is drawn at ("auto" resolved first).
 // A change that would draw more than the scene limits allow (README "Limits and memory": the triangles of
 // every object, of both sides of a split) is refused, and levelRefusal says why.
 void DemoState::changeLevels(int delta) {
-    const Scene scene = drawn();
+    const Scene& scene = drawn();
     Scene changed = scene_;
     for (SceneObject& o : changed.objects)
         o.subdivisions = std::clamp(subdivisionLevel(scene, o) + delta, 0, kMaxSubdivisions);
     if (const std::string why = overLimits(changed); !why.empty()) {
-        levelRefusal = "level " + std::to_string(level() + delta) + " refused: " + why;
+        levelRefusal_ = "level " + std::to_string(level() + delta) + " refused: " + why;
         return;
     }
-    levelRefusal.clear();
+    levelRefusal_.clear();
     scene_.objects = std::move(changed.objects);
+    drawn_.stale = true;
 }
 
 // β ≈ 4α keeps the highlight's size: the half-vector's angle is half the reflection's (DESIGN §3).
 void DemoState::toggleLighting() {
     const bool toBlinn = scene_.lighting == LightingModel::Phong;
     scene_.lighting = toBlinn ? LightingModel::BlinnPhong : LightingModel::Phong;
-    if (!matchHighlight) return;
+    drawn_.stale = true;
+    if (!window_.matchHighlight) return;
     for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
         // A value edited in the panel since the last toggle replaces the remembered one.
         if (scene_.objects[i].material.shininess != std::max(1.0, exponents_[i]))

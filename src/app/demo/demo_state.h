@@ -4,6 +4,7 @@
 // current()), demo_keys.cpp (the bindings) and demo_text.cpp (title, status, probe table, label).
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <span>
@@ -12,6 +13,9 @@
 #include <utility>
 #include <vector>
 
+#include "app/demo/lesson_player.h"
+#include "app/demo/presentation_images.h"
+#include "app/demo/probe_cache.h"
 #include "shadelab/geometry/sphere.h"
 #include "shadelab/image/image.h"
 #include "shadelab/scene/lesson.h"
@@ -115,22 +119,35 @@ struct PictureRect {
 };
 PictureRect fitPicture(int sceneWidth, int sceneHeight, int areaWidth, int areaHeight);
 
+// The demo's state: the scene and how commands, the mouse and the panels change it (demo_state.cpp,
+// demo_camera.cpp, demo_edits.cpp), with a lesson player, the probe and the scene it draws, each kept in a
+// room of its own. Every change goes through a method, so the drawn scene is made again only when
+// something changed it, and handed out by reference: a frame of an unchanged scene copies none.
 class DemoState {
 public:
     explicit DemoState(Scene scene);
 
     // The scene to draw: the edited scene with the orbit camera and the chosen projection, for a
     // framebuffer of width × height (0: the scene's own image size). Until the user orbits or zooms, the
-    // camera is the scene's own, exactly as `shadelab render` sees it.
+    // camera is the scene's own, exactly as `shadelab render` sees it. A copy: for a capture at another
+    // size; the frame's own is drawn().
     Scene current(int width = 0, int height = 0) const;
     // The size the window (or the page) last drew at, which "auto" levels and the title are computed for
     // (0 × 0 until set: the scene's own image size); drawn() is current() at that size.
-    void setViewport(int width, int height) {
-        viewportWidth_ = width;
-        viewportHeight_ = height;
+    void setViewport(int width, int height);
+    // current() at the viewport, kept: made again after a change (an edit, a command, the mouse, the
+    // viewport, a lesson step), the same object otherwise. Valid until the next change.
+    const Scene& drawn() const;
+    // Counts the changes of drawn(): equal versions, equal scenes (what a cache of it keys on).
+    std::uint64_t drawnVersion() const;
+    // The edited scene (before the orbit camera and the projection).
+    const Scene& scene() const { return scene_; }
+    // The edited scene, to change in place; drawn() is made again at its next call. Prefer a setter
+    // (scene_setters.h), which checks the value.
+    Scene& scene() {
+        drawn_.stale = true;
+        return scene_;
     }
-    Scene drawn() const { return current(viewportWidth_, viewportHeight_); }
-    Scene& scene() { return scene_; } // for the control panel's live edits
     // The scene's own image size: the aspect the window fits the picture to (fitPicture).
     int sceneWidth() const { return scene_.width; }
     int sceneHeight() const { return scene_.height; }
@@ -150,39 +167,54 @@ public:
     // and button change. Profile view: the row under it is profiled. Split view: a press within 8 px of
     // the divider grabs it and the drag moves it (drag() then leaves the camera alone).
     void pointer(double x, double y, bool leftHeld);
-    void clearProbe() { probePoint_.reset(); }
+    void clearProbe() { probe_.clear(); }
     // The probe evaluated for the drawn scene (it follows orbits, level and mode changes); nullopt
-    // without one.
-    std::optional<ProbeReport> probe() const;
+    // without one. Kept until the drawn scene or the point changes (probe_cache.h).
+    const std::optional<ProbeReport>& probe() const { return probe_.report(drawn(), drawnVersion()); }
 
     // Applies a command; returns false for the commands the window carries out itself (screenshot, quit).
     bool apply(Command command);
+    // What the keys 1-5, B and E, V, I, Y, Q do, as values (the setters of scene_setters.h): a mode (in split
+    // view the left side's), the lighting model (with B's rule), a view on, or back to the scene. setView
+    // throws InputError with the scene check's message for a view the scene could not hold (NDC with exact
+    // shading) and the limits' for a split too large.
+    void setShading(ShadingMode mode);
+    void setLighting(LightingModel model);
+    void setView(ViewKind kind);
+    // The title's last change as the key `command` words it: a panel's setter says what it did so too.
+    void describe(Command command) { lastChange_ = describeChange(command); }
 
     // A lesson being stepped through (README "Lessons"): the state becomes `index`'s step as written (its
     // scene, the camera it names, no material or light preset, no probe), keeping what belongs to the
     // window rather than the step (panel, help, presentation, B's rule, the viewport). The step keys move
     // through it; R returns to the step as written; every other key works inside the step.
     void openLesson(std::shared_ptr<const Lesson> lesson, std::size_t index = 0);
-    const Lesson* lesson() const { return lesson_.get(); }
-    const std::shared_ptr<const Lesson>& sharedLesson() const { return lesson_; }
-    std::size_t step() const { return step_; }
+    const Lesson* lesson() const { return player_.lesson(); }
+    const std::shared_ptr<const Lesson>& sharedLesson() const { return player_.shared(); }
+    std::size_t step() const { return player_.step(); }
     // "step 3 of 15: The view volume"; "" without a lesson.
-    std::string stepName() const;
+    std::string stepName() const { return player_.stepName(); }
+
+    // What belongs to the window rather than the scene: a lesson step keeps them.
+    bool showHelp() const { return window_.showHelp; }
+    bool showPanel() const { return window_.showPanel; }
+    bool presenting() const { return window_.presenting; } // F2, --present: the large label for a class
+    void setShowPanel(bool shown) { window_.showPanel = shown; }
+    void setPresenting(bool on) { window_.presenting = on; }
+    // B keeps the highlight size: β = 4α going to Blinn-Phong, α = β/4 back.
+    bool matchHighlight() const { return window_.matchHighlight; }
+    void setMatchHighlight(bool on) { window_.matchHighlight = on; }
 
     // Why the last level change (+, -, the page's level slider) or split view (V) was refused, or "".
-    std::string levelRefusal;
-    bool matchHighlight = true; // B keeps the highlight size: β = 4α going to Blinn-Phong, α = β/4 back
-    bool showHelp = false;
-    bool showPanel = true;
-    bool presenting = false; // F2, --present: the large label for a class (presentationLabel)
+    const std::string& levelRefusal() const { return levelRefusal_; }
     // The object the control panel's material edits apply to (an index into the scene's objects), or
     // kAllObjects, chosen explicitly. A probe click picks the object it hits.
     static constexpr int kAllObjects = -1;
-    int editedObject = 0;
+    int editedObject() const { return editedObject_; }
     // "the object" (a scene of one), "object 3 of 12" or "all 12 objects": what the status line says.
     std::string editedObjectName() const;
     // The chooser as the window's panel and the page number it: 0 for all objects, i for object i.
-    int editedObjectNumber() const { return editedObject == kAllObjects ? 0 : editedObject + 1; }
+    int editedObjectNumber() const { return editedObject_ == kAllObjects ? 0 : editedObject_ + 1; }
     void chooseEditedObject(int number); // clamped to the scene's objects
     // The object whose material the panel shows: the edited one (the first when all are edited); nullopt
     // for a scene without objects.
@@ -190,23 +222,41 @@ public:
     // A panel edit of the shown material: `edited` becomes the edited object's material. With all objects
     // chosen, each property that differs from the shown material's is set on every object, so one slider
     // changes that property everywhere and each object keeps its others. materialName() then says so.
+    // Throws InputError naming objects[N].material.<field> for a value a scene file could not hold.
     void editMaterial(const Material& edited);
     // A panel edit of the shown object's scale (the ellipsoid's axes, times its radius), for the
     // normal-matrix lesson (J): the edited object's; with all objects chosen, the component that differs
     // from the shown object's is set on every object, as editMaterial does. Throws InputError naming
-    // objects[N].scale for a component that is zero or not finite, as a scene file would.
+    // objects[N].scale[i] for a component that is zero or not finite, in a scene file's words.
     void editScale(const glm::dvec3& scale);
     // A panel edit of the view volume (the lecture's "viewing and projection normalization"): `edited`
     // becomes the drawn projection, its type included (O then toggles from it, and zoom scales an
     // orthographic box from where it was edited). Throws InputError naming projection.<field> for a value
     // a scene file could not hold (near >= far, fovy outside (0, 180), left == right...).
     void editViewVolume(const Projection& edited);
+    // A panel edit of the scene's values other than its objects and view (lights, toon bands, the
+    // lecture's switches): `edit` changes a copy, which is checked as a scene file's values are and then
+    // kept. Throws InputError (nothing changed) for a value a scene file could not hold.
+    template <class Edit> void editValues(Edit&& edit) {
+        Scene edited = valuesCopy(); // its objects are none: an edit of them is not kept
+        edit(edited);
+        keepValues(std::move(edited));
+    }
     // What the last drawn view measured, in words ("error: interior mean 2.54/255, max 98.5/255"), set by
     // FramedPicture::draw (demo_draw.h); "" for the plain scene.
-    std::string viewReport;
+    const std::string& viewReport() const { return viewReport_; }
+    void setViewReport(const std::string& report) {
+        if (report != viewReport_) viewReport_ = report;
+    }
     // The level drawn (of the first object): its own, or what "auto" chose for the drawn view.
     int level() const;
     bool autoLevel() const;
+    // The level of every object (each its own level + or − steps, "auto" resolved first), as + and − do;
+    // false with levelRefusal() saying why when the scene limits refuse it.
+    bool setLevel(int level);
+    void setAutoLevel(bool on);
+    // The drawn projection orthographic or perspective (O).
+    void setOrthographic(bool on);
     std::string materialName() const;
     // What the last key changed, in words ("orthographic projection", "material: metal"); "" at first.
     const std::string& lastChange() const { return lastChange_; }
@@ -215,8 +265,11 @@ public:
     bool orthographic() const { return orthographic_; }
 
 private:
+    // The scene's values without its objects (what editValues changes), and keeping them, checked, with
+    // the scene's objects.
+    Scene valuesCopy();
+    void keepValues(Scene edited);
     void changeLevels(int delta);
-    void setShading(ShadingMode mode);
     void toggleLighting();
     void setShininess(std::size_t object, double exponent);
     double presetExponent(double alpha) const;
@@ -229,8 +282,7 @@ private:
     void nextMaterial();
     void moveThroughLesson(Command command);
 
-    std::shared_ptr<const Lesson> lesson_; // null: a scene alone
-    std::size_t step_ = 0;
+    LessonPlayer player_;
     Scene initial_, scene_;
     OrbitCamera initialCamera_, camera_;
     bool cameraMoved_ = false;
@@ -242,14 +294,19 @@ private:
     std::vector<double> exponents_;
     bool orthographic_ = false;
     int viewportWidth_ = 0, viewportHeight_ = 0;
-    std::string lastChange_;
-    std::optional<ProbePoint> probePoint_;
-    // The last probe evaluated and the scene it was evaluated for: a level-10 mesh takes ~0.1 s to build
-    // and search, so the probe is recomputed only when the drawn scene or the point changes.
-    mutable std::optional<Scene> probeScene_;
-    mutable std::optional<ProbeReport> probeReport_;
-    mutable std::optional<SphereMesh> probeMesh_;
-    mutable VertexNormals probeMeshNormals_ = VertexNormals::Averaged;
+    struct WindowSettings {
+        bool showHelp = false, showPanel = true, presenting = false, matchHighlight = true;
+    } window_;
+    std::string lastChange_, levelRefusal_, viewReport_;
+    int editedObject_ = 0;
+    // drawn(): made from the state above at its first call after a change (stale), kept until the next.
+    struct Drawn {
+        Scene scene;
+        std::uint64_t version = 0;
+        bool stale = true;
+    };
+    mutable Drawn drawn_;
+    mutable ProbeCache probe_; // a cache of the drawn scene's probe, filled by probe() const
     bool holdingDivider_ = false, leftWasHeld_ = false;
     int material_ = 0;            // 0: the scene's own, i: materialPresets()[i − 1]
     bool materialEdited_ = false; // by the panel since the last M
@@ -261,39 +318,8 @@ private:
 std::string windowTitle(const DemoState& state, double frameMs);
 // The control panel's first lines: modes, level, projection, normals, material and lights.
 std::string statusText(const DemoState& state);
-// Presentation mode's label, large enough for the back of a classroom: "PHONG SHADING", "BLINN-PHONG
-// LIGHTING" and "LEVEL 5 | BETA = 96" on three lines (ALPHA under Phong lighting; the first object's
-// exponent; RAY-CAST instead of the level in exact mode). ASCII, upper case, as it has always read.
+// Presentation mode's label for the drawn scene (presentation_images.h: presentationLabel).
 std::string presentationLabel(const DemoState& state);
-// What the label says, as values: the window remakes its label only when these change.
-struct PresentationFacts {
-    ShadingMode shading = ShadingMode::Phong;
-    bool normalsByM = false, unnegated = false;
-    LightingModel lighting = LightingModel::BlinnPhong;
-    LightingTerm term = LightingTerm::All;
-    int level = 0;
-    std::optional<double> shininess; // the first object's; none without objects
-    bool operator==(const PresentationFacts&) const = default;
-};
-PresentationFacts presentationFacts(const Scene& drawn); // drawn: DemoState::drawn()
-std::string presentationLabel(const PresentationFacts& facts);
-// The label as the window and the page both draw it over the bottom left of a picture of width × height:
-// DejaVu Sans Mono Bold on a translucent dark box, its lines as tall as a twelfth of the picture's height
-// (55 px at 720) or smaller where the widest line would not fit the width, so it is never clipped; the
-// same picture size always gives the same image. `margin` is the gap to the picture's left and bottom.
-struct PresentationLabelImage {
-    Image image;
-    int margin = 0;
-};
-PresentationLabelImage presentationLabelImage(const std::string& label, int width, int height);
-// A lesson step's title and caption as the window, the page and `shadelab slides` draw them across the bottom
-// of a picture of width × height: a translucent dark band as wide as the picture, the title in lines an
-// eighteenth of the height and the caption's a thirtieth, each to the nearest 11 px (55 and 33 px at 1080,
-// 44 and 22 at 720), the caption's lines as written and wrapped at spaces to the width (a word too long for
-// a line is cut between characters). Both sizes step down until the band is at most 40 % of the height; the
-// same text and size give the same image.
-// Drawn at (0, height − image.height); an empty image for a width or height under 1.
-Image lessonBandImage(const std::string& title, const std::string& caption, int width, int height);
 // The probe's table for the panel and the page: the ambient, diffuse and specular terms and the pixel for
 // the current mode beside the exact ones, their difference in 1/255, and the vectors n, v, l, r or h.
 std::string probeText(const ProbeReport& probe, ShadingMode mode, LightingModel lighting);

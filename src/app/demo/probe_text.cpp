@@ -88,9 +88,9 @@ std::string pointStagesText(const PointStages& p) {
 } // namespace
 
 std::string probeText(const DemoState& state) {
-    const auto probe = state.probe();
+    const auto& probe = state.probe();
     if (!probe) return "";
-    const Scene shown = state.drawn();
+    const Scene& shown = state.drawn();
     return probeText(*probe, shown.shading, shown.lighting) +
            pointStagesText(tracePoint(shown, probe->point.object, probe->point.directionObject));
 }

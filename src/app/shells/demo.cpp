@@ -54,8 +54,8 @@ public:
                                        : 1.0),
           panel_(window_, uiScale_) {
         // Presenting starts with the whole window for the picture (C shows the panel).
-        state_.showPanel = !options.hidePanel && !options.present;
-        state_.presenting = options.present;
+        state_.setShowPanel(!options.hidePanel && !options.present);
+        state_.setPresenting(options.present);
         panelBeforePresenting_ = !options.hidePanel;
         if (options.lesson) state_.openLesson(options.lesson);
         // Specialized to the lights only: the panel's colour and shininess sliders then recompile nothing
@@ -120,7 +120,7 @@ private:
         return pictureRect(width, height);
     }
     PictureRect pictureRect(int width, int height) const {
-        const int column = panelColumnWidth(width, state_.showPanel, uiScale_);
+        const int column = panelColumnWidth(width, state_.showPanel(), uiScale_);
         PictureRect rect = fitPicture(state_.sceneWidth(), state_.sceneHeight(), width - column, height);
         rect.x += column;
         return rect;
@@ -136,7 +136,7 @@ private:
         drawPicture(pictureRect(width, height), width, height);
         remakeTexts(now);
         insidePanel_ = true;
-        panel_.draw(state_, status_, panelColumnWidth(width, state_.showPanel, uiScale_));
+        panel_.draw(state_, status_, panelColumnWidth(width, state_.showPanel(), uiScale_));
         insidePanel_ = false;
     }
 
@@ -194,9 +194,9 @@ private:
             if (panel_.wantsKeyboard()) return;
             const auto command = commandForKey(key);
             if (!command) return;
-            const bool wasPresenting = state_.presenting;
+            const bool wasPresenting = state_.presenting();
             if (state_.apply(*command)) {
-                if (state_.presenting != wasPresenting) presentingChanged();
+                if (state_.presenting() != wasPresenting) presentingChanged();
                 return;
             }
             if (*command == Command::Quit) window_.requestClose();
@@ -210,11 +210,11 @@ private:
     // F2 into presentation hides the panel, so the picture has the whole window for the class; F2 out of
     // it brings the panel back if it was shown before (or was shown with C meanwhile).
     void presentingChanged() {
-        if (state_.presenting) {
-            panelBeforePresenting_ = state_.showPanel;
-            state_.showPanel = false;
+        if (state_.presenting()) {
+            panelBeforePresenting_ = state_.showPanel();
+            state_.setShowPanel(false);
         } else {
-            state_.showPanel = state_.showPanel || panelBeforePresenting_;
+            state_.setShowPanel(state_.showPanel() || panelBeforePresenting_);
         }
     }
 

@@ -5,7 +5,7 @@
 #include <variant>
 
 #include "app/demo/demo_draw.h"
-#include "app/demo/demo_state.h"
+#include "app/demo/presentation_images.h"
 #include "app/measure/memory_budget.h"
 #include "app/shells/commands.h"
 #include "app/shells/deck.h"

@@ -11,6 +11,7 @@
 #include <imgui_impl_opengl3.h>
 
 #include "app/demo/matrices_text.h"
+#include "app/demo/scene_setters.h"
 #include "app/demo/view_explanations.h"
 #include "app/shells/panel_font.h"
 #include "shadelab/context/window.h"
@@ -48,67 +49,75 @@ bool wrappedCheckbox(const char* id, const char* label, bool* value) {
     return changed;
 }
 
-// ImGui edits floats; the scene is double. Edits a colour in place, clamped to >= 0 (DESIGN §4).
-bool colorEdit(const char* label, glm::dvec3& color) {
+// What the panel's controls set: a value by its name through the setters every panel shares
+// (scene_setters.h), which check it as a scene file's value is checked. A refusal is kept with the name of
+// the value it refused and shown under that value's section, in the check's words.
+struct Controls {
+    DemoState& state;
+    std::string& refusal;
+    std::string& refused; // the name of the value refused
+    void set(std::string_view name, const std::string& text) {
+        refusal = setValue(state, name, text);
+        refused = refusal.empty() ? "" : std::string(name);
+    }
+    // The refusal, if one of the values whose names start with `prefix` was refused.
+    void showRefusal(std::string_view prefix) const {
+        if (!refusal.empty() && std::string_view(refused).starts_with(prefix))
+            ImGui::TextColored({1.0f, 0.5f, 0.4f, 1.0f}, "%s", refusal.c_str());
+    }
+};
+
+// ImGui edits floats; the scene is double.
+void colorEdit(Controls& controls, const char* label, const glm::dvec3& color, const std::string& name) {
     float c[3] = {float(color.x), float(color.y), float(color.z)};
-    if (!ImGui::ColorEdit3(label, c, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR)) return false;
-    color = glm::max(glm::dvec3(c[0], c[1], c[2]), glm::dvec3(0));
-    return true;
+    if (ImGui::ColorEdit3(label, c, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR))
+        controls.set(name, valueText(glm::dvec3(c[0], c[1], c[2])));
 }
 
-bool dragVec3(const char* label, glm::dvec3& v, float speed) {
+void dragVec3(Controls& controls, const char* label, const glm::dvec3& v, float speed,
+              const std::string& name) {
     float f[3] = {float(v.x), float(v.y), float(v.z)};
-    if (!ImGui::DragFloat3(label, f, speed)) return false;
-    v = glm::dvec3(f[0], f[1], f[2]);
-    return true;
+    if (ImGui::DragFloat3(label, f, speed)) controls.set(name, valueText(glm::dvec3(f[0], f[1], f[2])));
 }
 
-bool materialControls(Material& m) {
-    bool changed = colorEdit("k_a ambient", m.ambient);
-    changed |= colorEdit("k_d diffuse", m.diffuse);
-    changed |= colorEdit("k_s specular", m.specular);
+void materialControls(Controls& controls, const Material& m) {
+    colorEdit(controls, "k_a ambient", m.ambient, "material.ambient");
+    colorEdit(controls, "k_d diffuse", m.diffuse, "material.diffuse");
+    colorEdit(controls, "k_s specular", m.specular, "material.specular");
     float shininess = float(m.shininess);
     // A drag field, not a slider: a slider's handle covers its digits. Logarithmic: 1..1000 by feel.
-    if (ImGui::DragFloat("shininess", &shininess, 0.5f, 1, 1000, "%.1f",
-                         ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp)) {
-        m.shininess = std::max(1.0f, shininess); // DESIGN §3: exponents >= 1
-        changed = true;
-    }
-    return changed;
+    if (ImGui::DragFloat("shininess", &shininess, 0.5f, 1, 1000, "%.1f", ImGuiSliderFlags_Logarithmic))
+        controls.set("material.shininess", valueText(shininess));
 }
 
-void lightControls(Light& light, int index) {
+void lightControls(Controls& controls, const Light& light, int index) {
     ImGui::PushID(index);
     const std::string_view type = toString(light.type);
+    const std::string name = "lights[" + std::to_string(index) + "].";
     if (ImGui::TreeNodeEx("light", ImGuiTreeNodeFlags_DefaultOpen, "light %d: %.*s", index + 1,
                           int(type.size()), type.data())) {
         if (light.type == LightType::Point || light.type == LightType::Spot)
-            dragVec3("position", light.position, 0.05f);
-        if (light.type == LightType::Directional || light.type == LightType::Spot) {
-            glm::dvec3 direction = light.direction;
-            if (dragVec3("direction", direction, 0.02f) && glm::length(direction) > 1e-6)
-                light.direction = direction;
-        }
-        colorEdit("I_a ambient", light.ambient);
+            dragVec3(controls, "position", light.position, 0.05f, name + "position");
+        if (light.type == LightType::Directional || light.type == LightType::Spot)
+            dragVec3(controls, "direction", light.direction, 0.02f, name + "direction");
+        colorEdit(controls, "I_a ambient", light.ambient, name + "ambient");
         if (light.type != LightType::Ambient) {
-            colorEdit("I_d diffuse", light.diffuse);
-            colorEdit("I_s specular", light.specular);
+            colorEdit(controls, "I_d diffuse", light.diffuse, name + "diffuse");
+            colorEdit(controls, "I_s specular", light.specular, name + "specular");
         }
         if (light.type == LightType::Point || light.type == LightType::Spot) {
-            glm::dvec3 a = light.attenuation;
             // The formula on a line of its own: beside the three fields the label wrapped.
             ImGui::TextUnformatted("attenuation 1/(a + b·t + c·t²): a b c");
-            if (dragVec3("##attenuation", a, 0.01f)) {
-                a = glm::max(a, glm::dvec3(0)); // DESIGN §3: a, b, c >= 0 with a positive sum
-                if (a.x + a.y + a.z > 0) light.attenuation = a;
-            }
+            dragVec3(controls, "##attenuation", light.attenuation, 0.01f, name + "attenuation");
         }
         if (light.type == LightType::Spot) {
             float cutoff = float(light.cutoffDeg), exponent = float(light.exponent);
             if (ImGui::SliderFloat("cutoff (deg)", &cutoff, 0, 90))
-                light.cutoffDeg = std::clamp(cutoff, 0.0f, 90.0f);
-            if (ImGui::SliderFloat("exponent", &exponent, 0, 128)) light.exponent = std::max(exponent, 0.0f);
+                controls.set(name + "cutoff_deg", valueText(cutoff));
+            if (ImGui::SliderFloat("exponent", &exponent, 0, 128))
+                controls.set(name + "exponent", valueText(exponent));
         }
+        controls.showRefusal(name);
         ImGui::TreePop();
     }
     ImGui::PopID();
@@ -117,35 +126,27 @@ void lightControls(Light& light, int index) {
 // The drawn view volume (the lecture's "viewing and projection normalization"): the field of view or the
 // window l, r, b, t, and near and far, as distances. An edit the scene could not hold (near past far) is
 // refused with its message under the fields.
-void viewVolumeControls(DemoState& state, std::string& refusal) {
-    Projection p = state.drawn().projection;
-    const Projection before = p;
+void viewVolumeControls(Controls& controls) {
+    const Projection& p = controls.state.drawn().projection;
     // near and far drag by 1 % of their value a pixel (a near of 0.01 and of 10 both by feel); the window's
     // edges linearly.
-    auto drag = [](const char* label, double& value, float speed, float lowest, float highest,
-                   ImGuiSliderFlags flags) {
+    auto drag = [&](const char* label, const char* name, double value, float speed, float lowest,
+                    float highest) {
         float f = float(value);
-        if (ImGui::DragFloat(label, &f, speed, lowest, highest, "%.4g", flags)) value = double(f);
+        if (ImGui::DragFloat(label, &f, speed, lowest, highest, "%.4g"))
+            controls.set(std::string("projection.") + name, valueText(f));
     };
     if (p.type == ProjectionType::Perspective) {
-        drag("fovy (deg)", p.fovyDeg, 0.2f, 1, 170, ImGuiSliderFlags_None);
+        drag("fovy (deg)", "fovy_deg", p.fovyDeg, 0.2f, 1, 170);
     } else {
-        drag("left l", p.left, 0.01f, -100, 100, ImGuiSliderFlags_None);
-        drag("right r", p.right, 0.01f, -100, 100, ImGuiSliderFlags_None);
-        drag("bottom b", p.bottom, 0.01f, -100, 100, ImGuiSliderFlags_None);
-        drag("top t", p.top, 0.01f, -100, 100, ImGuiSliderFlags_None);
+        drag("left l", "left", p.left, 0.01f, -100, 100);
+        drag("right r", "right", p.right, 0.01f, -100, 100);
+        drag("bottom b", "bottom", p.bottom, 0.01f, -100, 100);
+        drag("top t", "top", p.top, 0.01f, -100, 100);
     }
-    drag("near (n = −near)", p.near, float(p.near) * 0.01f, 0.001f, 1000, ImGuiSliderFlags_None);
-    drag("far (f = −far)", p.far, float(p.far) * 0.01f, 0.001f, 10000, ImGuiSliderFlags_None);
-    if (p != before) {
-        try {
-            state.editViewVolume(p);
-            refusal.clear();
-        } catch (const InputError& e) {
-            refusal = e.what();
-        }
-    }
-    if (!refusal.empty()) ImGui::TextColored({1.0f, 0.5f, 0.4f, 1.0f}, "%s", refusal.c_str());
+    drag("near (n = −near)", "near", p.near, float(p.near) * 0.01f, 0.001f, 1000);
+    drag("far (f = −far)", "far", p.far, float(p.far) * 0.01f, 0.001f, 10000);
+    controls.showRefusal("projection.");
 }
 
 // A caption's lines are broken for the slide's band, wider than the panel's column: here they are one
@@ -210,56 +211,64 @@ namespace {
 // The lecture's three switches: which term of the lighting sum is drawn (K cycles them), the perspective
 // matrix (U: WebGL's, or the lecture's before its -1, everything clipped) and what transforms normals
 // (J: the right matrix, or M itself, the lecture's wrong one).
-void lectureSwitches(Scene& scene) {
+void lectureSwitches(Controls& controls) {
+    const Scene& scene = controls.state.drawn();
     ImGui::AlignTextToFramePadding();
     ImGui::TextUnformatted("term (K):");
     for (const LightingTerm term : kLightingTerms)
-        if (radio(std::string(toString(term)).c_str(), scene.term == term)) scene.term = term;
+        if (radio(std::string(toString(term)).c_str(), scene.term == term))
+            controls.set("term", std::string(toString(term)));
     ImGui::AlignTextToFramePadding();
     ImGui::TextUnformatted("perspective matrix (U):");
     for (const PerspectiveMatrix matrix : kPerspectiveMatrices) {
         const char* label = matrix == PerspectiveMatrix::Unnegated ? "unnegated" : "WebGL (−1)";
-        if (radio(label, scene.perspectiveMatrix == matrix)) scene.perspectiveMatrix = matrix;
+        if (radio(label, scene.perspectiveMatrix == matrix))
+            controls.set("perspective_matrix", std::string(toString(matrix)));
     }
     ImGui::AlignTextToFramePadding();
     ImGui::TextUnformatted("normals by (J):");
     for (const NormalMatrixRule rule : kNormalMatrixRules) {
         const char* label = rule == NormalMatrixRule::Model ? "M (wrong)" : "(M⁻¹)ᵀ";
-        if (radio(label, scene.normalMatrix == rule)) scene.normalMatrix = rule;
+        if (radio(label, scene.normalMatrix == rule))
+            controls.set("normal_matrix", std::string(toString(rule)));
     }
 }
 
 // The material and scale of the chosen object (a probe click picks one), or of all of them when "all
 // objects" (0) is chosen. An uneven scale makes an ellipsoid, where normals by M (J) go wrong.
-void materialSection(DemoState& state) {
-    const Scene& scene = state.scene();
-    const int count = int(scene.objects.size());
+void materialSection(Controls& controls) {
+    const DemoState& state = controls.state;
+    const int count = int(state.scene().objects.size());
     if (count > 1) {
         int chosen = state.editedObjectNumber();
         if (ImGui::DragInt("object (0: all)", &chosen, 0.1f, 0, count,
                            chosen == 0 ? "all objects" : "object %d", ImGuiSliderFlags_AlwaysClamp))
-            state.chooseEditedObject(chosen);
+            controls.set("object", std::to_string(chosen));
     }
-    Material edited = scene.objects[*state.shownObject()].material;
-    if (materialControls(edited)) state.editMaterial(edited);
-    glm::vec3 scale(state.scene().objects[*state.shownObject()].scale);
-    if (ImGui::DragFloat3("scale x y z", &scale.x, 0.01f, 0.1f, 4.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp))
-        state.editScale(glm::dvec3(scale));
+    const SceneObject& shown = state.scene().objects[*state.shownObject()];
+    materialControls(controls, shown.material);
+    glm::vec3 scale(shown.scale);
+    if (ImGui::DragFloat3("scale x y z", &scale.x, 0.01f, 0.1f, 4.0f, "%.2f"))
+        controls.set("scale", valueText(glm::dvec3(scale)));
+    controls.showRefusal("material.");
+    controls.showRefusal("scale");
 }
 
 } // namespace
 
 // e, u, v, w, M_cam, the projection matrix, and the shown object's M and normal matrix, live.
 void Panel::matricesSection(const DemoState& state) {
-    if (matricesFor_.changed({state.drawn(), state.shownObject()}))
+    if (matricesFor_.changed({state.drawnVersion(), state.shownObject()}))
         matricesText_ = matricesPanelText(state.drawn(), state.shownObject());
     ImGui::TextUnformatted(matricesText_.c_str());
 }
 
 // The probe's table, or how to make one.
 void Panel::probeSection(DemoState& state) {
-    const Scene drawn = state.drawn();
-    if (probeFor_.changed({state.probe(), drawn.shading, drawn.lighting})) probeText_ = probeText(state);
+    // The report is the drawn scene's (its version names it, the mode and the lighting model) at the point.
+    const auto& probe = state.probe();
+    if (probeFor_.changed({state.drawnVersion(), probe ? std::optional(probe->point) : std::nullopt}))
+        probeText_ = probeText(state);
     if (!probeText_.empty()) {
         ImGui::TextUnformatted(probeText_.c_str());
         if (ImGui::Button("remove the probe")) state.clearProbe();
@@ -272,7 +281,7 @@ void Panel::probeSection(DemoState& state) {
 
 // Docked: the whole left column, beside the picture rather than over it.
 void Panel::controlsWindow(DemoState& state, const std::string& status, int columnWidth) {
-    Scene& scene = state.scene();
+    Controls controls{state, refusal_, refused_};
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowPos({0, 0}, ImGuiCond_Always);
     ImGui::SetNextWindowSize({float(columnWidth), display.y}, ImGuiCond_Always);
@@ -286,22 +295,26 @@ void Panel::controlsWindow(DemoState& state, const std::string& status, int colu
     ImGui::TextDisabled("C hides this panel, H shows the keys");
     if (state.lesson() != nullptr) lessonControls(state);
     ImGui::TextUnformatted(status.c_str());
-    wrappedCheckbox("##match highlight", "B keeps the highlight size (β = 4α)", &state.matchHighlight);
-    lectureSwitches(scene);
+    bool match = state.matchHighlight();
+    if (wrappedCheckbox("##match highlight", "B keeps the highlight size (β = 4α)", &match))
+        controls.set("match_highlight", match ? "true" : "false");
+    lectureSwitches(controls);
     if (ImGui::CollapsingHeader("what you are seeing", ImGuiTreeNodeFlags_DefaultOpen))
         ImGui::TextUnformatted(whatYouAreSeeing(state.drawn()).c_str());
-    if (!scene.objects.empty() && ImGui::CollapsingHeader("material", ImGuiTreeNodeFlags_DefaultOpen))
-        materialSection(state);
-    if (ImGui::CollapsingHeader("view volume")) viewVolumeControls(state, volumeRefusal_);
+    if (!state.scene().objects.empty() && ImGui::CollapsingHeader("material", ImGuiTreeNodeFlags_DefaultOpen))
+        materialSection(controls);
+    if (ImGui::CollapsingHeader("view volume")) viewVolumeControls(controls);
     if (ImGui::CollapsingHeader("matrices")) matricesSection(state);
     if (ImGui::CollapsingHeader("lights"))
-        for (std::size_t i = 0; i < scene.lights.size(); ++i) lightControls(scene.lights[i], int(i));
+        for (std::size_t i = 0; i < state.scene().lights.size(); ++i)
+            lightControls(controls, state.scene().lights[i], int(i));
     if (ImGui::CollapsingHeader("probe (click an object)", ImGuiTreeNodeFlags_DefaultOpen))
         probeSection(state);
     if (ImGui::CollapsingHeader("toon")) {
-        int bands = scene.toonBands;
+        int bands = state.scene().toonBands;
         if (ImGui::SliderInt("bands", &bands, kMinToonBands, kMaxToonBands))
-            scene.toonBands = std::clamp(bands, kMinToonBands, kMaxToonBands);
+            controls.set("toon_bands", std::to_string(bands));
+        controls.showRefusal("toon_bands");
     }
     ImGui::PopItemWidth();
     ImGui::PopTextWrapPos();
@@ -312,8 +325,8 @@ void Panel::draw(DemoState& state, const std::string& status, int columnWidth) {
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
-    if (state.showPanel) controlsWindow(state, status, columnWidth);
-    if (state.showHelp) helpWindow();
+    if (state.showPanel()) controlsWindow(state, status, columnWidth);
+    if (state.showHelp()) helpWindow();
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     // Debian builds Dear ImGui's OpenGL 3 backend for desktop GL only (no IMGUI_IMPL_OPENGL_ES3): on an

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -30,8 +31,9 @@ public:
     bool wantsKeyboard() const;
     bool wantsMouse() const;
 
-    // Builds and draws this frame's panel and help over the bound framebuffer. Every edited value is
-    // clamped to its valid range here, so nothing invalid reaches the scene or the shader.
+    // Builds and draws this frame's panel and help over the bound framebuffer. Every edited value goes
+    // through its setter (scene_setters.h), which refuses what a scene file could not hold; the refusal
+    // shows under the value's section.
     void draw(DemoState& state, const std::string& status, int columnWidth);
 
 private:
@@ -40,12 +42,12 @@ private:
     void probeSection(DemoState& state);
 
     Api api_;
-    std::string volumeRefusal_; // why the last view-volume edit was refused, shown under its fields
-    // The matrices' and the probe's texts, made again only when the drawn scene, the shown object or the
-    // probe changes: a frame of an unchanged scene builds neither.
-    LastKey<std::pair<Scene, std::optional<std::size_t>>> matricesFor_;
+    std::string refusal_, refused_; // the last refusal of a setter, and the value it refused
+    // The matrices' and the probe's texts, made again only when the drawn scene (its version), the shown
+    // object or the probe changes: a frame of an unchanged scene builds neither.
+    LastKey<std::pair<std::uint64_t, std::optional<std::size_t>>> matricesFor_;
     std::string matricesText_;
-    LastKey<std::tuple<std::optional<ProbeReport>, ShadingMode, LightingModel>> probeFor_;
+    LastKey<std::pair<std::uint64_t, std::optional<ProbePoint>>> probeFor_;
     std::string probeText_;
 };
 
