@@ -15,7 +15,7 @@ cd "$(dirname "$0")/.."
 # The program: what `scripts/run.sh` installs.
 program_packages=(
   # toolchain
-  g++ cmake make pkg-config ca-certificates
+  g++ cmake make ninja-build pkg-config ca-certificates
   # libraries, all found by find_package / pkg-config
   libglfw3-dev libglm-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libosmesa6-dev libpng-dev
   nlohmann-json3-dev libcli11-dev libbenchmark-dev python3-glad libimgui-dev libstb-dev fonts-dejavu-core
@@ -103,7 +103,9 @@ case $mode in
     # Eight files to a compile (CMakeLists.txt: SHADELAB_UNITY_BUILD): the first window in half the time.
     configure_args=(-DSHADELAB_UNITY_BUILD=ON)
     # A first configure leaves the tests out, so GoogleTest need not be installed; a tree that has them keeps them.
-    [ -f build/CMakeCache.txt ] || configure_args+=(-DSHADELAB_BUILD_TESTS=OFF)
+    # It is Ninja's: it compiles a target's files while the libraries it links are still being built (make
+    # waits for each library), and it does not run make's and CMake's dependency scans at every step.
+    [ -f build/CMakeCache.txt ] || configure_args+=(-G Ninja -DSHADELAB_BUILD_TESTS=OFF)
     ;;
   all)
     install_missing "${program_packages[@]}" "${tests_packages[@]}" "${tools_packages[@]}"
