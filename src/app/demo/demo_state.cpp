@@ -8,7 +8,6 @@
 #include <cmath>
 #include <cstdio>
 
-#include "app/demo/demo_format.h"
 #include "shadelab/errors.h"
 #include "shadelab/geometry/subdivision.h"
 
@@ -23,15 +22,6 @@ std::string overLimits(const Scene& scene) {
         return e.what();
     }
     return "";
-}
-
-// `v` turned by the rotation that takes unit `from` to unit `to` (about their common perpendicular).
-glm::dvec3 rotateLike(const glm::dvec3& v, const glm::dvec3& from, const glm::dvec3& to) {
-    const glm::dvec3 axis = glm::cross(from, to);
-    const double sine = glm::length(axis), cosine = glm::dot(from, to);
-    if (!(sine > 1e-15)) return v;
-    const glm::dvec3 k = axis / sine; // Rodrigues' formula
-    return v * cosine + glm::cross(k, v) * sine + k * glm::dot(k, v) * (1 - cosine);
 }
 
 } // namespace
@@ -340,39 +330,6 @@ bool DemoState::apply(Command command) {
     drawn_.stale = true;
     lastChange_ = describeChange(command);
     return true;
-}
-
-void DemoState::dragLight(double dxPixels, double dyPixels) {
-    const auto light = std::find_if(scene_.lights.begin(), scene_.lights.end(),
-                                    [](const Light& l) { return l.type != LightType::Ambient; });
-    if (light == scene_.lights.end()) {
-        lastChange_ = "no light to move (only ambient light)";
-        return;
-    }
-    const std::size_t index = std::size_t(light - scene_.lights.begin());
-    drawn_.stale = true;
-    const bool positional = light->type != LightType::Directional;
-    const glm::dvec3 target = camera_.target;
-    const glm::dvec3 offset = positional ? light->position - target : -unitDirection(light->direction);
-    if (!(glm::length(offset) > 0)) {
-        lastChange_ = "light " + std::to_string(index + 1) + " sits at the target: nothing to orbit";
-        return;
-    }
-    // The camera's orbit, the other way round: dragging right moves the light right on the screen.
-    OrbitCamera orbit = OrbitCamera::looking(target + offset, target);
-    orbit.drag(-dxPixels, -dyPixels);
-    const glm::dvec3 moved = orbit.eye() - target;
-    const glm::dvec3 from = glm::normalize(offset), to = glm::normalize(moved);
-    if (positional) {
-        light->position = target + moved;
-        if (light->type == LightType::Spot) light->direction = rotateLike(light->direction, from, to);
-        lastChange_ = "light " + std::to_string(index + 1) + " (" + std::string(toString(light->type)) +
-                      ") at " + formatVector(light->position);
-    } else {
-        light->direction = -to;
-        lastChange_ = "light " + std::to_string(index + 1) + " (directional) travelling " +
-                      formatVector(light->direction);
-    }
 }
 
 bool DemoState::probeAt(double x, double y) {

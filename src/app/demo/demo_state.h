@@ -1,7 +1,9 @@
 // What the demo window shows and how keys and the mouse change it: plain data and pure functions, no GL
 // and no GLFW, so the key set is tested on the CPU and the screenshot state is exactly what is drawn.
-// Defined in demo_state.cpp (DemoState's commands and mouse, the presets), demo_camera.cpp (OrbitCamera,
-// current()), demo_keys.cpp (the bindings) and demo_text.cpp (title, status, probe table, label).
+// Defined in demo_state.cpp (DemoState's commands), demo_camera.cpp (the mouse, current()), demo_edits.cpp
+// (the panels' edits), demo_keys.cpp (the bindings) and demo_text.cpp (title, status, probe table, label);
+// the rooms it holds have headers of their own (lesson_player.h, probe_cache.h, and the presets, camera
+// and layout it is made of), and its values are set by name through scene_setters.h.
 #pragma once
 
 #include <cstdint>
@@ -13,7 +15,10 @@
 #include <utility>
 #include <vector>
 
+#include "app/demo/demo_presets.h"
 #include "app/demo/lesson_player.h"
+#include "app/demo/orbit_camera.h"
+#include "app/demo/picture_layout.h"
 #include "app/demo/presentation_images.h"
 #include "app/demo/probe_cache.h"
 #include "shadelab/geometry/sphere.h"
@@ -23,15 +28,6 @@
 #include "shadelab/shading/probe.h"
 
 namespace shadelab::app {
-
-// The width of the demo's control panel, docked as a left column beside the picture (0 when hidden): at
-// most 420 px and at most half the window, so the picture always keeps at least half of it.
-// `uiScale` (--ui-scale, --present) widens it with the text.
-inline int panelColumnWidth(int windowWidth, bool panelShown, double uiScale = 1) {
-    if (!panelShown || windowWidth <= 0) return 0;
-    const int widest = int(420 * uiScale);
-    return windowWidth / 2 < widest ? windowWidth / 2 : widest;
-}
 
 enum class Command {
     Flat,
@@ -81,43 +77,6 @@ std::optional<Command> commandForKey(int key);
 std::string keyHelpText(); // one line per binding
 // The same as rows (keys, action): the window's help draws them as a table whose wrapped lines stay aligned.
 std::vector<std::pair<std::string, std::string>> keyHelpRows();
-
-// Orbits the target on a sphere: azimuth around +y, elevation clamped short of the poles so the camera
-// frame (up = +y) is never degenerate.
-struct OrbitCamera {
-    glm::dvec3 target{0, 0, 0};
-    double distance = 4;
-    double azimuthRad = 0;   // 0: eye on +z of the target
-    double elevationRad = 0; // 0: level with the target; ±kMaxElevation at most
-
-    static constexpr double kMaxElevationRad = 1.5533430342749532; // 89°
-    static OrbitCamera looking(const glm::dvec3& eye, const glm::dvec3& target);
-    glm::dvec3 eye() const;
-    void drag(double dxPixels, double dyPixels); // 0.5° per pixel
-    void zoom(double wheelSteps);                // ×0.9 per step in, clamped to a sane range
-};
-
-struct MaterialPreset {
-    std::string_view name;
-    Material material;
-};
-struct LightPreset {
-    std::string_view name;
-    std::vector<Light> lights;
-};
-std::span<const MaterialPreset> materialPresets(); // matte (k_s = 0), plastic (α = 8), metal (α = 150)
-std::span<const LightPreset> lightPresets();       // point, directional, spot, three coloured lights
-
-// Where a picture goes in an area of the window (pixels, from the area's top left): the largest rectangle
-// of the scene's own aspect that fits, centred, with bars above and below or at the sides. The window then
-// frames the scene as `render` does at that size; a 0 × 0 rectangle for an empty area.
-struct PictureRect {
-    int x = 0, y = 0, width = 0, height = 0;
-    bool contains(double px, double py) const {
-        return px >= x && px < x + width && py >= y && py < y + height;
-    }
-};
-PictureRect fitPicture(int sceneWidth, int sceneHeight, int areaWidth, int areaHeight);
 
 // The demo's state: the scene and how commands, the mouse and the panels change it (demo_state.cpp,
 // demo_camera.cpp, demo_edits.cpp), with a lesson player, the probe and the scene it draws, each kept in a
