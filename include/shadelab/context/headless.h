@@ -38,7 +38,7 @@ public:
     // Flat shading through shared vertices and a geometry shader (see gl/renderer.h).
     void setFlatGeometryShader(bool enabled);
     int programsBuilt() const;
-    // What the last render's view measured (gl/views.h): the error view's figures, the profile's samples.
+    // What the last render's view measured (gl/view_figures.h): the error view's figures, the profile's rows.
     const gl::ViewFigures& viewFigures() const;
     const std::string& rendererString() const { return rendererString_; }
 
