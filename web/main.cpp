@@ -178,7 +178,7 @@ EMSCRIPTEN_KEEPALIVE const char* shadelab_apply_flags(const char* flags) {
                 throw InputError("unknown flag --" + printable(name) + "; the flags are " + app::flagList());
             *into = value.get<std::string>();
         }
-        const Scene scene = app::applyOverrides(page().state->scene(), o, page().sceneName);
+        const Scene scene = app::applyOverrides(std::as_const(*page().state).scene(), o, page().sceneName);
         page().state = std::make_unique<DemoState>(scene);
         requestDraw();
     });

@@ -53,7 +53,7 @@ nlohmann::json lessonJson(const DemoState& s) {
 nlohmann::json panelJson() {
     const Page& p = page();
     const DemoState& s = *p.state;
-    const Scene& scene = p.state->scene();
+    const Scene& scene = s.scene();
     const app::PictureRect picture = pictureRect();
     // The scene as drawn in the picture: the kept one when it was drawn at the picture's size (presenting a
     // lesson, the picture above the band is smaller), else made for it.
@@ -133,7 +133,7 @@ EMSCRIPTEN_KEEPALIVE const char* shadelab_ui() {
     const DemoState& s = *page().state;
     const app::PictureRect picture = pictureRect();
     nlohmann::json ui = panelJson();
-    ui["scene"] = nlohmann::json::parse(sceneToJson(page().state->scene()));
+    ui["scene"] = nlohmann::json::parse(sceneToJson(s.scene()));
     ui["current"] = nlohmann::json::parse(sceneToJson(s.current(picture.width, picture.height)));
     ui["atImageSize"] = nlohmann::json::parse(sceneToJson(s.current()));
     return give(ui.dump());

@@ -101,12 +101,15 @@ public:
     std::uint64_t drawnVersion() const;
     // The edited scene (before the orbit camera and the projection).
     const Scene& scene() const { return scene_; }
-    // The edited scene, to change in place; drawn() is made again at its next call. Prefer a setter
-    // (scene_setters.h), which checks the value.
-    Scene& scene() {
+    // The edited scene, to change in place, unchecked (tests that build a state by hand); drawn() is made
+    // again at its next call. The panels use the setters (scene_setters.h), which check the value.
+    Scene& editScene() {
         drawn_.stale = true;
         return scene_;
     }
+    // The same, under the name of a read: a read through a non-const DemoState makes the drawn scene again.
+    // Kept only for tests/gl/slide_layout_test.cpp until it says editScene().
+    Scene& scene() { return editScene(); }
     // The scene's own image size: the aspect the window fits the picture to (fitPicture).
     int sceneWidth() const { return scene_.width; }
     int sceneHeight() const { return scene_.height; }

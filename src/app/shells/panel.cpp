@@ -282,6 +282,8 @@ void Panel::probeSection(DemoState& state) {
 // Docked: the whole left column, beside the picture rather than over it.
 void Panel::controlsWindow(DemoState& state, const std::string& status, int columnWidth) {
     Controls controls{state, refusal_, refused_};
+    // Read, not edited (the non-const scene() is an edit, which would make the drawn scene again).
+    const Scene& scene = std::as_const(state).scene();
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowPos({0, 0}, ImGuiCond_Always);
     ImGui::SetNextWindowSize({float(columnWidth), display.y}, ImGuiCond_Always);
@@ -301,17 +303,17 @@ void Panel::controlsWindow(DemoState& state, const std::string& status, int colu
     lectureSwitches(controls);
     if (ImGui::CollapsingHeader("what you are seeing", ImGuiTreeNodeFlags_DefaultOpen))
         ImGui::TextUnformatted(whatYouAreSeeing(state.drawn()).c_str());
-    if (!state.scene().objects.empty() && ImGui::CollapsingHeader("material", ImGuiTreeNodeFlags_DefaultOpen))
+    if (!scene.objects.empty() && ImGui::CollapsingHeader("material", ImGuiTreeNodeFlags_DefaultOpen))
         materialSection(controls);
     if (ImGui::CollapsingHeader("view volume")) viewVolumeControls(controls);
     if (ImGui::CollapsingHeader("matrices")) matricesSection(state);
     if (ImGui::CollapsingHeader("lights"))
-        for (std::size_t i = 0; i < state.scene().lights.size(); ++i)
-            lightControls(controls, state.scene().lights[i], int(i));
+        for (std::size_t i = 0; i < scene.lights.size(); ++i)
+            lightControls(controls, scene.lights[i], int(i));
     if (ImGui::CollapsingHeader("probe (click an object)", ImGuiTreeNodeFlags_DefaultOpen))
         probeSection(state);
     if (ImGui::CollapsingHeader("toon")) {
-        int bands = state.scene().toonBands;
+        int bands = scene.toonBands;
         if (ImGui::SliderInt("bands", &bands, kMinToonBands, kMaxToonBands))
             controls.set("toon_bands", std::to_string(bands));
         controls.showRefusal("toon_bands");
