@@ -2,33 +2,35 @@
 # (CMakeLists.txt) and the browser build (web/CMakeLists.txt) read. Each reads them with its own root
 # prepended (shadelab_sources).
 
-# The core, no GL, a folder for each stage of the pipeline: geometry (the subdivided sphere and its
-# lines), scene (the camera and view volume, scene files, lessons), shading (the lighting equations, the
-# exact ray cast and the reference), image (pixels, PNG, the labels' font), io (atomic writes, printable
-# text), and the context names.
+# The core, no GL, a folder for each stage of the pipeline and in the order they depend on each other:
+# io (atomic writes, printable text), image (pixels, PNG, the labels' font), geometry (the subdivided
+# sphere), shading (the lighting equations and their value types), scene (the camera and view volume, the
+# scene's values, files, flags and "auto" level, lessons), then what reads a whole scene: exact (the ray
+# cast, the reference image, the probe) and diagram (the overlay's lines, the outside view's drawing, a
+# point's stages); and the context names.
 set(SHADELAB_CORE_SOURCES
-  src/geometry/sphere.cpp src/geometry/sphere_limits.cpp src/geometry/subdivision.cpp
-  src/geometry/mesh_layout.cpp src/geometry/overlay.cpp
-  src/scene/camera.cpp src/scene/view.cpp src/scene/outside_view.cpp src/scene/scene.cpp
-  src/scene/scene_check.cpp src/scene/scene_limits.cpp src/scene/scene_messages.cpp src/scene/scene_json.cpp
-  src/scene/scene_parse.cpp src/scene/scene_write.cpp
-  src/scene/lesson.cpp src/scene/slide_name.cpp src/scene/point_stages.cpp
-  src/shading/lighting.cpp src/shading/ray_cast.cpp src/shading/probe.cpp
-  src/image/image.cpp src/image/font.cpp
   src/io/atomic_file.cpp src/io/output_path.cpp src/io/numbered_files.cpp src/io/text.cpp
+  src/image/image.cpp src/image/font.cpp
+  src/geometry/sphere.cpp src/geometry/sphere_limits.cpp src/geometry/subdivision.cpp src/geometry/mesh_layout.cpp
+  src/shading/lighting.cpp
+  src/scene/camera.cpp src/scene/observer.cpp src/scene/auto_level.cpp src/scene/view.cpp src/scene/scene.cpp src/scene/scene_check.cpp
+  src/scene/scene_limits.cpp src/scene/scene_messages.cpp src/scene/scene_json.cpp src/scene/scene_parse.cpp
+  src/scene/scene_write.cpp src/scene/scene_flags.cpp src/scene/lesson.cpp src/scene/slide_name.cpp
+  src/exact/ray_cast.cpp src/exact/probe.cpp
+  src/diagram/overlay.cpp src/diagram/outside_view.cpp src/diagram/point_stages.cpp
   src/context/names.cpp)
 # What only the native program needs: PNG files (libpng; the page hands the browser its pixels) and the
 # analytic reference image (threads; the page checks against the native build instead).
-set(SHADELAB_CORE_NATIVE_SOURCES src/image/png.cpp src/shading/reference.cpp)
+set(SHADELAB_CORE_NATIVE_SOURCES src/image/png.cpp src/exact/reference.cpp)
 # GL: the loader, the objects, programs, meshes, the renderer, render targets and the teaching views.
 set(SHADELAB_GL_SOURCES
   src/gl/loader.cpp src/gl/handles.cpp src/gl/program.cpp src/gl/program_variant.cpp src/gl/mesh.cpp
   src/gl/renderer.cpp src/gl/scene_draw.cpp src/gl/scene_draw_lines.cpp src/gl/render_target.cpp src/gl/screen_pass.cpp
   src/gl/views.cpp src/gl/views_split.cpp src/gl/views_observed.cpp src/gl/views_profile.cpp)
-# The demo's state, keys and texts and the scene flags (no GL), shared by the window and the page.
+# The demo's state, keys and texts (no GL), shared by the window and the page.
 set(SHADELAB_DEMO_STATE_SOURCES
   src/app/demo/demo_state.cpp src/app/demo/demo_camera.cpp src/app/demo/demo_keys.cpp
-  src/app/demo/demo_text.cpp src/app/demo/probe_text.cpp src/app/demo/matrices_text.cpp src/app/demo/scene_flags.cpp
+  src/app/demo/demo_text.cpp src/app/demo/probe_text.cpp src/app/demo/matrices_text.cpp
   src/app/demo/demo_presets.cpp src/app/demo/demo_edits.cpp src/app/demo/view_explanations.cpp
   src/app/demo/lesson_player.cpp src/app/demo/probe_cache.cpp src/app/demo/presentation_images.cpp src/app/demo/scene_setters.cpp)
 # Drawing the demo's picture (GL), also shared by the window and the page.

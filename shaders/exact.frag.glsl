@@ -1,6 +1,6 @@
 // Fragment stage of exact shading (SHADING_EXACT): each sphere or ellipsoid ray-cast through the pixel
 // centre and lit at the hit point with the exact quadric normal by lighting.glsl's shade() — the analytic
-// reference (src/shading/ray_cast.cpp, in double) drawn in real time: the same ray per pixel, the same stable
+// reference (src/exact/ray_cast.cpp, in double) drawn in real time: the same ray per pixel, the same stable
 // quadratic, the same choice of root. lighting.glsl is prepended; its defines apply (VIEWER_AT_INFINITY or
 // the uber program's uOrthographic also make the rays parallel). Writes gl_FragDepth from the hit point in
 // the active depth convention, so exact objects hide each other as meshes do.

@@ -21,9 +21,7 @@
 #include "app/demo/demo_draw.h"
 #include "app/demo/demo_state.h"
 #include "app/demo/matrices_text.h"
-#include "app/demo/scene_flags.h"
 #include "page_state.h"
-#include "shadelab/context/window.h"
 #include "shadelab/errors.h"
 #include "shadelab/geometry/sphere.h"
 #include "shadelab/gl/loader.h"
@@ -33,6 +31,7 @@
 #include "shadelab/io/text.h"
 #include "shadelab/scene/lesson.h"
 #include "shadelab/scene/scene.h"
+#include "shadelab/scene/scene_flags.h"
 
 namespace shadelab::web {
 
@@ -166,19 +165,19 @@ EMSCRIPTEN_KEEPALIVE const char* shadelab_load_lesson(const char* json, const ch
     });
 }
 
-// The command-line flags applied to the shown scene through the same parser (app/demo/scene_flags.h):
+// The command-line flags applied to the shown scene through the same parser (scene/scene_flags.h):
 // `flags` is a JSON object such as {"shading": "flat", "size": "256x256"}.
 EMSCRIPTEN_KEEPALIVE const char* shadelab_apply_flags(const char* flags) {
     return guarded([&] {
         const nlohmann::json parsed = nlohmann::json::parse(flags);
-        app::SceneOverrides o;
+        SceneOverrides o;
         for (const auto& [name, value] : parsed.items()) {
-            std::optional<std::string>* into = app::overrideNamed(o, name);
+            std::optional<std::string>* into = overrideNamed(o, name);
             if (!into)
-                throw InputError("unknown flag --" + printable(name) + "; the flags are " + app::flagList());
+                throw InputError("unknown flag --" + printable(name) + "; the flags are " + flagList());
             *into = value.get<std::string>();
         }
-        const Scene scene = app::applyOverrides(std::as_const(*page().state).scene(), o, page().sceneName);
+        const Scene scene = applyOverrides(std::as_const(*page().state).scene(), o, page().sceneName);
         page().state = std::make_unique<DemoState>(scene);
         requestDraw();
     });

@@ -1,4 +1,4 @@
-// A lesson's scene files as the page reads them, held to the command line's rules (README "In the browser"):
+// A lesson's scene files as the page reads them, held to the command line's rules (docs/students.md "In the browser"):
 // fetches bounded in size and time, and every step's path checked before any request. Loaded before page.js,
 // which calls lessonFiles, fetchBounded and tooLargeMessage; shares the page's one global scope.
 'use strict';

@@ -7,7 +7,6 @@
 #include <nlohmann/json.hpp>
 
 #include "app/demo/matrices_text.h"
-#include "app/demo/scene_flags.h"
 #include "app/demo/scene_setters.h"
 #include "app/demo/view_explanations.h"
 #include "page_state.h"
@@ -15,6 +14,7 @@
 #include "shadelab/scene/lesson.h"
 #include "shadelab/scene/scene.h"
 #include "shadelab/scene/scene_file.h"
+#include "shadelab/scene/scene_flags.h"
 
 namespace shadelab::web {
 

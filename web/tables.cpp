@@ -7,11 +7,11 @@
 #include <nlohmann/json.hpp>
 
 #include "app/demo/demo_state.h"
-#include "app/demo/scene_flags.h"
 #include "page_state.h"
-#include "shadelab/context/window.h"
 #include "shadelab/geometry/sphere.h"
+#include "shadelab/key_codes.h"
 #include "shadelab/scene/scene.h"
+#include "shadelab/scene/scene_flags.h"
 #include "shadelab/scene/view.h"
 
 using namespace shadelab;
@@ -85,7 +85,7 @@ nlohmann::json menus() {
 
 extern "C" {
 
-// The tables the page reads rather than repeats: the flags' names (app::sceneFlags, the command line's
+// The tables the page reads rather than repeats: the flags' names (sceneFlags, the command line's
 // table), the highest subdivision level, the longest scene text (web/driver.py reads no more of its
 // input), and the browser's key names (KeyboardEvent.key, and .code for the
 // keypad) as the GLFW codes of the window's bindings (demo_keys.cpp; a printable key is its upper-case
@@ -93,7 +93,7 @@ extern "C" {
 // id of their <select> (page_menus.js fills them).
 EMSCRIPTEN_KEEPALIVE const char* shadelab_tables() {
     nlohmann::json flags = nlohmann::json::array();
-    for (const app::SceneFlag& flag : app::sceneFlags()) flags.push_back(std::string(flag.name));
+    for (const SceneFlag& flag : sceneFlags()) flags.push_back(std::string(flag.name));
     const nlohmann::json keys = {{"Escape", kKeyEscape},
                                  {"F1", kKeyF1},
                                  {"F2", kKeyF2},

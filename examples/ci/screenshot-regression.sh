@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Screenshot regression as a CI job runs it (README "Screenshot regression in your CI"): renders every
+# Screenshot regression as a CI job runs it (docs/ci-engineers.md "Screenshot regression in your CI"): renders every
 # scene in scenes/ headless, compares each with its reference for the GL driver that drew it, and on a
 # failure leaves the render, the difference image and the comparison's JSON in the artifacts folder.
 #

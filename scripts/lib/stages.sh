@@ -79,7 +79,7 @@ permission_tests() {
 }
 
 # The installed program alone (its shaders, font and scenes are compiled in) and the example's installed
-# copy, run from outside the checkout, as README "Screenshot regression in your CI" describes.
+# copy, run from outside the checkout, as docs/ci-engineers.md "Screenshot regression in your CI" describes.
 ci_example() {
   local prefix
   prefix=$(mktemp -d)

@@ -19,6 +19,7 @@
 #include "shadelab/errors.h"
 #include "shadelab/gl/loader.h"
 #include "shadelab/io/text.h"
+#include "shadelab/key_codes.h"
 
 namespace shadelab {
 

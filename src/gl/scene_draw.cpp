@@ -9,11 +9,11 @@
 
 #include <glad/gl.h>
 
+#include "shadelab/diagram/outside_view.h"
 #include "shadelab/errors.h"
-#include "shadelab/geometry/subdivision.h"
+#include "shadelab/exact/ray_cast.h"
 #include "shadelab/gl/loader.h"
-#include "shadelab/scene/outside_view.h"
-#include "shadelab/shading/ray_cast.h"
+#include "shadelab/scene/auto_level.h"
 
 namespace shadelab::gl {
 namespace {

@@ -8,11 +8,11 @@
 
 #include <glad/gl.h>
 
+#include "shadelab/diagram/outside_view.h"
+#include "shadelab/diagram/overlay.h"
 #include "shadelab/errors.h"
-#include "shadelab/geometry/overlay.h"
-#include "shadelab/geometry/subdivision.h"
 #include "shadelab/gl/loader.h"
-#include "shadelab/scene/outside_view.h"
+#include "shadelab/scene/auto_level.h"
 
 #include "gl/scene_draw.h"
 

@@ -9,16 +9,16 @@
 
 #include <glad/gl.h>
 
+#include "shadelab/diagram/outside_view.h"
 #include "shadelab/errors.h"
-#include "shadelab/geometry/subdivision.h"
+#include "shadelab/exact/reference.h"
 #include "shadelab/gl/loader.h"
 #include "shadelab/gl/program.h"
 #include "shadelab/gl/render_target.h"
 #include "shadelab/gl/screen_pass.h"
 #include "shadelab/image/image.h"
 #include "shadelab/io/text.h"
-#include "shadelab/scene/outside_view.h"
-#include "shadelab/shading/reference.h"
+#include "shadelab/scene/auto_level.h"
 
 #include "gl/views.h"
 #include "gl/views_internal.h"

@@ -11,9 +11,9 @@
 #include <string_view>
 #include <vector>
 
+#include "shadelab/diagram/outside_view.h"
 #include "shadelab/gl/handles.h"
 #include "shadelab/gl/view_figures.h"
-#include "shadelab/scene/outside_view.h"
 #include "shadelab/scene/scene.h"
 
 #include "gl/scene_draw.h"

@@ -10,10 +10,10 @@
 #include <utility>
 #include <vector>
 
+#include "shadelab/diagram/outside_view.h"
 #include "shadelab/gl/render_target.h"
 #include "shadelab/gl/screen_pass.h"
 #include "shadelab/image/image.h"
-#include "shadelab/scene/outside_view.h"
 
 #include "gl/views.h"
 

@@ -9,8 +9,8 @@
 
 #include <glad/gl.h>
 
+#include "shadelab/diagram/outside_view.h"
 #include "shadelab/io/text.h"
-#include "shadelab/scene/outside_view.h"
 
 #include "gl/views.h"
 #include "gl/views_internal.h"

@@ -6,9 +6,9 @@
 
 #include <glad/gl.h>
 
-#include "shadelab/geometry/subdivision.h"
+#include "shadelab/exact/reference.h"
 #include "shadelab/io/text.h"
-#include "shadelab/shading/reference.h"
+#include "shadelab/scene/auto_level.h"
 
 #include "gl/views.h"
 #include "gl/views_internal.h"

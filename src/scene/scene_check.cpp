@@ -12,10 +12,10 @@
 
 #include "scene/scene_internal.h"
 #include "shadelab/geometry/sphere.h"
-#include "shadelab/geometry/subdivision.h"
 #include "shadelab/io/text.h"
+#include "shadelab/scene/auto_level.h"
 #include "shadelab/scene/camera.h"
-#include "shadelab/scene/outside_view.h"
+#include "shadelab/scene/observer.h"
 
 namespace shadelab::detail {
 

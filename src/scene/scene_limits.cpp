@@ -1,4 +1,4 @@
-// The limits of a scene as a whole (DESIGN §4, README "Limits"), beside the per-value ranges of
+// The limits of a scene as a whole (DESIGN §4, docs/ci-engineers.md "Limits"), beside the per-value ranges of
 // scene_check.cpp: the work it asks for (triangles per frame, the reference's ray tests), the standard-depth
 // range, and where its objects and lights lie from the eye in 32-bit float.
 #include <algorithm>
@@ -6,7 +6,7 @@
 
 #include "scene/scene_internal.h"
 #include "shadelab/geometry/sphere.h"
-#include "shadelab/geometry/subdivision.h"
+#include "shadelab/scene/auto_level.h"
 #include "shadelab/scene/camera.h"
 
 namespace shadelab::detail {
@@ -82,9 +82,9 @@ using namespace detail;
 
 namespace {
 
-// The work a scene asks for, bounded before any of it is done (README "Limits"): the triangles drawn per
-// frame, and the ray-object tests of the analytic reference (pixels × objects), which render and reference
-// share as one notion of a valid scene.
+// The work a scene asks for, bounded before any of it is done (docs/ci-engineers.md "Limits"): the triangles
+// drawn per frame, and the ray-object tests of the analytic reference (pixels × objects), which render and
+// reference share as one notion of a valid scene.
 void checkWork(const Scene& scene) {
     // A split view draws every object once per side, each side at its own level where it sets one.
     const bool split = scene.view.kind == ViewKind::Split;

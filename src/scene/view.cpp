@@ -8,7 +8,7 @@
 #include <cstring>
 #include <vector>
 
-#include "shadelab/geometry/subdivision.h"
+#include "shadelab/scene/auto_level.h"
 #include "shadelab/scene/scene.h"
 #include "shadelab/vocabulary.h"
 

@@ -1,7 +1,7 @@
-// The demo's keys (src/app/demo/demo_state.h) against README "The demo window" and GLFW's key codes: every
-// key the README lists gives its command, no key is bound twice, every command has one binding and the help
-// text shows each; what apply() does with the shading keys, the window's own commands and the toggles (H, C,
-// N, W). Expected values come from the README and GLFW, not from demo_state.cpp.
+// The demo's keys (src/app/demo/demo_state.h) against docs/students.md "The demo window" and GLFW's key
+// codes: every key the README lists gives its command, no key is bound twice, every command has one binding
+// and the help text shows each; what apply() does with the shading keys, the window's own commands and the
+// toggles (H, C, N, W). Expected values come from the README and GLFW, not from demo_state.cpp.
 #include "app/demo/demo_state.h"
 
 #include <algorithm>
@@ -16,7 +16,7 @@
 #include <gtest/gtest.h>
 
 #include "demo_test_support.h"
-#include "shadelab/context/window.h"
+#include "shadelab/key_codes.h"
 #include "shadelab/scene/scene.h"
 
 namespace shadelab::app {

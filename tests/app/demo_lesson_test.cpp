@@ -1,6 +1,6 @@
-// A lesson in the demo (src/app/demo/demo_state.h, README "Lessons"): the step keys move through its steps,
-// each as written with the window's own settings kept; keys and the mouse work inside a step, and R gives
-// the step back as written.
+// A lesson in the demo (src/app/demo/demo_state.h, docs/lecturers.md "Lessons"): the step keys move through
+// its steps, each as written with the window's own settings kept; keys and the mouse work inside a step, and
+// R gives the step back as written.
 #include "app/demo/demo_state.h"
 
 #include <memory>

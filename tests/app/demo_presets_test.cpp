@@ -14,7 +14,7 @@
 #include "demo_test_support.h"
 #include "shadelab/errors.h"
 #include "shadelab/geometry/sphere.h"
-#include "shadelab/geometry/subdivision.h"
+#include "shadelab/scene/auto_level.h"
 #include "shadelab/scene/scene.h"
 #include "shadelab/scene/scene_values.h"
 

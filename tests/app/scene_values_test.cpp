@@ -2,7 +2,7 @@
 // a scene file (parseScene) and the flag that sets the same value (applyOverrides, which the command line,
 // the demo and the page share) — and both must refuse it with the same words after the field's name. The
 // expected texts come from DESIGN §4's ranges, not from scene_check.cpp.
-#include "app/demo/scene_flags.h"
+#include "shadelab/scene/scene_flags.h"
 
 #include <functional>
 #include <optional>

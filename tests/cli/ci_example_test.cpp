@@ -1,7 +1,7 @@
-// The worked example of README "Screenshot regression in your CI" (examples/ci/), run as a CI job runs it:
-// on a copy of the example, against the shadelab under test. It passes as committed; a reference changed
-// in a block of pixels fails with the render, the difference image and the comparison's JSON left in the
-// artifacts folder; a mask over that block passes again; a driver without references is named as missing;
+// The worked example of docs/ci-engineers.md "Screenshot regression in your CI" (examples/ci/), run as a CI
+// job runs it: on a copy of the example, against the shadelab under test. It passes as committed; a reference
+// changed in a block of pixels fails with the render, the difference image and the comparison's JSON left in
+// the artifacts folder; a mask over that block passes again; a driver without references is named as missing;
 // --bless writes the references of the driver that drew them.
 #include <cerrno>
 #include <cstdlib>

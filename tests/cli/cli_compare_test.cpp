@@ -1,8 +1,8 @@
-// `shadelab compare` end to end (README "Screenshot regression in your CI"): it judges as the tests do (the
-// figures of compareImages, a mask's black pixels not compared, the mean over the compared pixels), --json
-// for a dashboard, 16-bit files read as stored, a forged header refused before allocating, --diff never one
-// of the inputs, and different sizes named. Each test in a fresh temporary folder (cli_fixture.h). Built into
-// cli_test.
+// `shadelab compare` end to end (docs/ci-engineers.md "Screenshot regression in your CI"): it judges as the
+// tests do (the figures of compareImages, a mask's black pixels not compared, the mean over the compared
+// pixels), --json for a dashboard, 16-bit files read as stored, a forged header refused before allocating,
+// --diff never one of the inputs, and different sizes named. Each test in a fresh temporary folder
+// (cli_fixture.h). Built into cli_test.
 #include <algorithm>
 #include <chrono>
 #include <cstdint>

@@ -1,7 +1,7 @@
-// `shadelab slides --deck` end to end (README "Lessons"): one HTML file holding every slide in order, each
-// the same picture as the PNG `--out-dir` writes, the steps' notes under them as text (never markup), and
-// the deck's output refused where it would replace an input or mix with the progress lines. Built into
-// cli_test.
+// `shadelab slides --deck` end to end (docs/lecturers.md "Lessons"): one HTML file holding every slide in
+// order, each the same picture as the PNG `--out-dir` writes, the steps' notes under them as text (never
+// markup), and the deck's output refused where it would replace an input or mix with the progress lines.
+// Built into cli_test.
 #include <unistd.h>
 
 #include <atomic>

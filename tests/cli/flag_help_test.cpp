@@ -1,6 +1,6 @@
 // Every help text lists every value (STYLE 5: one spelling everywhere): for each vocabulary a flag takes,
 // every spelling of its one table (vocabulary.h, view.h kViewNames) appears, as a whole word, in the text
-// --help prints for that flag (app::sceneFlags, which the command line's --help and the page's tables read).
+// --help prints for that flag (sceneFlags, which the command line's --help and the page's tables read).
 // `--view`'s help left out outside and ndc while both were views.
 #include <cctype>
 #include <string>
@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "app/demo/scene_flags.h"
 #include "shadelab/scene/scene.h"
+#include "shadelab/scene/scene_flags.h"
 #include "shadelab/scene/view.h"
 
 namespace shadelab::app {

@@ -493,7 +493,8 @@ const HostileCase kCases[] = {
      .mentions = {"egl", "MESA_GL_VERSION_OVERRIDE=2.1", "unset it"},
      .environment = {"MESA_GL_VERSION_OVERRIDE=2.1"},
      .preciousOut = true},
-    // Work bounded before it is spent (README "Limits"): objects, triangles per frame, reference ray tests.
+    // Work bounded before it is spent (docs/ci-engineers.md "Limits"): objects, triangles per frame,
+    // reference ray tests.
     {.name = "objects_over_the_limit",
      .args = {"render", "scene.json", "--size", "8x8", "--out", "out.png"},
      .exitCode = 2,

@@ -1,7 +1,7 @@
-// `shadelab check` and `shadelab slides` end to end (README "Lessons"): each slide without its band is what
-// `shadelab render` makes of the step's scene, written with the scene's own flags rather than by the lesson
-// code; with the band, the picture above it is that render and the band holds the text; the output folder
-// follows --out's rules. Built into cli_test (one executable, one link).
+// `shadelab check` and `shadelab slides` end to end (docs/lecturers.md "Lessons"): each slide without its
+// band is what `shadelab render` makes of the step's scene, written with the scene's own flags rather than by
+// the lesson code; with the band, the picture above it is that render and the band holds the text; the output
+// folder follows --out's rules. Built into cli_test (one executable, one link).
 #include <unistd.h>
 
 #include <algorithm>

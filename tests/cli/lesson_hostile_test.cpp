@@ -1,8 +1,8 @@
-// Lessons, slides and text outputs under hostile input, end to end (README "Lessons", "Output files"): what
-// sits in --out-dir under a slide's name (a step's scene, a link, a FIFO, a folder), a step that names
-// standard input, outputs that are standard output under another name, and `check` refusing exactly what
-// the drawing commands refuse, naming the lesson, the step and its file. Every case states its exit code,
-// what the message names, and that nothing was written or replaced. Built into cli_test.
+// Lessons, slides and text outputs under hostile input, end to end (docs/lecturers.md "Lessons", "Output
+// files"): what sits in --out-dir under a slide's name (a step's scene, a link, a FIFO, a folder), a step
+// that names standard input, outputs that are standard output under another name, and `check` refusing
+// exactly what the drawing commands refuse, naming the lesson, the step and its file. Every case states its
+// exit code, what the message names, and that nothing was written or replaced. Built into cli_test.
 #include <sys/stat.h>
 #include <unistd.h>
 

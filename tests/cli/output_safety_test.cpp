@@ -1,7 +1,8 @@
-// Output files and special paths end to end (README "Output files"): `--out` never destroys a file the user
-// did not name as the output, writes through devices and FIFOs, follows symbolic links, keeps an existing
-// file's mode and owner, leaves nothing behind when interrupted; a scene is a regular file or "-".
-// Every case runs twice: as root and as the unprivileged user nobody (in a folder only nobody can write).
+// Output files and special paths end to end (docs/ci-engineers.md "Output files"): `--out` never destroys a
+// file the user did not name as the output, writes through devices and FIFOs, follows symbolic links, keeps
+// an existing file's mode and owner, leaves nothing behind when interrupted; a scene is a regular file or
+// "-". Every case runs twice: as root and as the unprivileged user nobody (in a folder only nobody can
+// write).
 #include <fcntl.h>
 #include <grp.h>
 #include <poll.h>

@@ -1,6 +1,6 @@
-// `shadelab report` end to end against hostile names and failing tools (README "Error against run time"):
-// nothing from a file name reaches gnuplot as a command or an option, a PNG gnuplot did not finish never
-// replaces a good one, a full disk leaves the earlier report set whole, and zero errors still plot.
+// `shadelab report` end to end against hostile names and failing tools (docs/students.md "Error against run
+// time"): nothing from a file name reaches gnuplot as a command or an option, a PNG gnuplot did not finish
+// never replaces a good one, a full disk leaves the earlier report set whole, and zero errors still plot.
 #include <fcntl.h>
 #include <sched.h>
 #include <sys/mount.h>

@@ -13,6 +13,7 @@
 
 #include "gl/gl_test_support.h"
 #include "shadelab/geometry/subdivision.h"
+#include "shadelab/scene/auto_level.h"
 
 namespace shadelab::test {
 namespace {

@@ -11,7 +11,7 @@
 #include "gl/extreme_support.h"
 #include "input_error.h"
 #include "shadelab/errors.h"
-#include "shadelab/geometry/subdivision.h"
+#include "shadelab/scene/auto_level.h"
 
 namespace shadelab::test {
 namespace {

@@ -8,8 +8,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "shadelab/diagram/outside_view.h"
 #include "shadelab/errors.h"
-#include "shadelab/scene/outside_view.h"
 
 namespace shadelab::test {
 

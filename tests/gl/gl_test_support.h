@@ -9,8 +9,8 @@
 #include <gtest/gtest.h>
 
 #include "shadelab/context/headless.h"
+#include "shadelab/exact/reference.h"
 #include "shadelab/gl/program.h"
-#include "shadelab/shading/reference.h"
 
 namespace shadelab::test {
 

@@ -1,5 +1,5 @@
 // The teaching instruments on the GPU: the overlay's lines (Scene::overlay) drawn by the renderer over the
-// shaded surface, and the probe's prediction of a pixel (shadelab/shading/probe.h) against the pixel drawn.
+// shaded surface, and the probe's prediction of a pixel (shadelab/exact/probe.h) against the pixel drawn.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -9,8 +9,8 @@
 
 #include "gl/gl_test_support.h"
 #include "gl/projected_mesh.h"
-#include "shadelab/geometry/subdivision.h"
-#include "shadelab/shading/probe.h"
+#include "shadelab/exact/probe.h"
+#include "shadelab/scene/auto_level.h"
 
 namespace shadelab::test {
 namespace {

@@ -18,6 +18,7 @@
 #include "shadelab/geometry/mesh_layout.h"
 #include "shadelab/geometry/subdivision.h"
 #include "shadelab/image/image_file.h"
+#include "shadelab/scene/auto_level.h"
 #include "shadelab/scene/scene_file.h"
 
 namespace shadelab::test {

@@ -13,9 +13,9 @@
 #include "app/demo/demo_draw.h"
 #include "app/demo/demo_state.h"
 #include "gl/gl_test_support.h"
-#include "shadelab/geometry/overlay.h"
+#include "shadelab/diagram/outside_view.h"
+#include "shadelab/diagram/overlay.h"
 #include "shadelab/image/image_file.h"
-#include "shadelab/scene/outside_view.h"
 #include "shadelab/scene/scene_file.h"
 #include "shadelab/scene/view.h"
 
@@ -184,7 +184,7 @@ TEST(SlideLayout, TheProbesVectorsShowInTheOutsideView) {
     const glm::dvec4 clip = cameraView.clipFromView * cameraView.viewFromWorld * glm::dvec4(aim, 1);
     ASSERT_TRUE(
         state.probeAt((clip.x / clip.w + 1) / 2 * scene.width, (1 - clip.y / clip.w) / 2 * scene.height));
-    state.scene().view = outside;
+    state.editScene().view = outside;
     const Scene drawn = state.drawn();
     const auto probe = state.probe();
     ASSERT_TRUE(probe.has_value());

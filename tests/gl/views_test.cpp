@@ -11,8 +11,8 @@
 
 #include "gl/gl_test_support.h"
 #include "gl/views.h" // private (src/gl/): splitSideScene, profileRow
+#include "shadelab/diagram/outside_view.h"
 #include "shadelab/image/image_file.h"
-#include "shadelab/scene/outside_view.h"
 
 namespace shadelab::test {
 namespace {

@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "shadelab/diagram/outside_view.h"
 #include "shadelab/errors.h"
-#include "shadelab/scene/outside_view.h"
 #include "shadelab/scene/scene.h"
 #include "shadelab/scene/view.h"
 

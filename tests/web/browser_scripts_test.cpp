@@ -39,12 +39,12 @@ TEST_F(Browser, RenderScriptFollowsTheCommandLinesRules) {
     options.program = SHADELAB_WEB_SH;
     options.timeout = std::chrono::seconds(60);
     options.stdinText = "{}";
-    // The flags are the program's one table (app::sceneFlags), read from the page: an unknown one is named,
+    // The flags are the program's one table (sceneFlags), read from the page: an unknown one is named,
     // and the message lists every flag the command line has.
     const Outcome unknown = runWith({"render", "--shade", "flat"}, dir_, options);
     EXPECT_EQ(unknown.exitCode, 2) << unknown.err;
     EXPECT_NE(unknown.err.find("unknown option \"--shade\""), std::string::npos) << unknown.err;
-    for (const app::SceneFlag& flag : app::sceneFlags())
+    for (const SceneFlag& flag : sceneFlags())
         EXPECT_NE(unknown.err.find("--" + std::string(flag.name)), std::string::npos) << flag.name;
     EXPECT_TRUE(unknown.out.empty());
     // Files are the command line's: a scene file or --out is refused before any work, and says how.

@@ -33,17 +33,18 @@
 #include <nlohmann/json.hpp>
 
 #include "app/demo/demo_state.h"
-#include "app/demo/scene_flags.h"
 #include "app/demo/view_explanations.h"
 #include "cli/run_process.h"
 #include "gl/gl_test_support.h"
 #include "gl/projected_mesh.h"
-#include "shadelab/context/window.h"
+#include "shadelab/errors.h"
+#include "shadelab/exact/probe.h"
 #include "shadelab/image/image_file.h"
 #include "shadelab/io/text.h"
+#include "shadelab/key_codes.h"
 #include "shadelab/scene/lesson.h"
 #include "shadelab/scene/scene_file.h"
-#include "shadelab/shading/probe.h"
+#include "shadelab/scene/scene_flags.h"
 #include "tolerances.h"
 
 namespace shadelab::test::web_test {

@@ -8,8 +8,8 @@
 #include <utility>
 #include <vector>
 
-#include "shadelab/geometry/subdivision.h"
 #include "shadelab/image/image_file.h"
+#include "shadelab/scene/auto_level.h"
 #include "shadelab/scene/scene.h"
 #include "shadelab/scene/scene_file.h"
 #include "window/demo_window.h"

@@ -48,9 +48,4 @@ private:
     std::string rendererString_;
 };
 
-// Every shading mode × lighting model of `scene`, tileSize² each, labelled, side by side (modes across,
-// lighting models down).
-inline constexpr int kShowcaseTile = 256, kShowcaseStripHeight = 26; // a tile's side; a title strip's height
-Image renderShowcase(HeadlessRenderer& renderer, const Scene& scene, int tileSize = kShowcaseTile);
-
 } // namespace shadelab

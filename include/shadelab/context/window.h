@@ -12,22 +12,6 @@
 
 namespace shadelab {
 
-// Key codes are GLFW's (printable keys are their upper-case ASCII code); the few others used are here.
-inline constexpr int kKeySpace = 32;
-inline constexpr int kKeyEscape = 256;
-inline constexpr int kKeyBackspace = 259;
-inline constexpr int kKeyRight = 262;
-inline constexpr int kKeyLeft = 263;
-inline constexpr int kKeyPageUp = 266;
-inline constexpr int kKeyPageDown = 267;
-inline constexpr int kKeyHome = 268;
-inline constexpr int kKeyEnd = 269;
-inline constexpr int kKeyF1 = 290;
-inline constexpr int kKeyF2 = 291;
-inline constexpr int kKeyF11 = 300;
-inline constexpr int kKeyKeypadSubtract = 333;
-inline constexpr int kKeyKeypadAdd = 334;
-
 // The display named in the environment could not be opened (a stale DISPLAY, over ssh or in a container):
 // the demo falls back to the headless showcase. A display that opens but gives no GL context is a plain
 // RuntimeError.

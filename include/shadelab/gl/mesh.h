@@ -5,7 +5,7 @@
 #include "shadelab/gl/handles.h"
 #include <span>
 
-#include "shadelab/geometry/overlay.h"
+#include "shadelab/diagram/overlay.h"
 #include "shadelab/geometry/sphere.h"
 
 namespace shadelab::gl {

@@ -14,7 +14,8 @@
 
 namespace shadelab::gl {
 
-// How far the renderer specializes its programs (README "Leaving out what a scene does not need").
+// How far the renderer specializes its programs (docs/contributors.md "Leaving out what a scene does not
+// need").
 enum class Specialization {
     None,   // the uber program of each shading mode × lighting model: the baseline and the cross-check
     Lights, // to the scene's light set-up; values stay uniforms, so the window recompiles nothing when a

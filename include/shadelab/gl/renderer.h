@@ -8,7 +8,7 @@
 #include <memory>
 #include <span>
 
-#include "shadelab/geometry/overlay.h"
+#include "shadelab/diagram/overlay.h"
 #include "shadelab/gl/program_variant.h"
 #include "shadelab/gl/screen_pass.h"
 #include "shadelab/gl/view_figures.h"

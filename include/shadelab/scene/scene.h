@@ -66,8 +66,8 @@ struct SceneObject {
 };
 
 inline constexpr int kMaxImageSize = 16384;
-// The work one scene may ask for (README "Limits"): measured on 2 cores with llvmpipe, 1,000 level-6
-// spheres (16.4 M triangles) render in 1.1 s and their reference (262 M ray tests) takes 2.2 s.
+// The work one scene may ask for (docs/ci-engineers.md "Limits"): measured on 2 cores with llvmpipe, 1,000
+// level-6 spheres (16.4 M triangles) render in 1.1 s and their reference (262 M ray tests) takes 2.2 s.
 inline constexpr std::size_t kMaxObjects = 10000;
 inline constexpr std::size_t kMaxTrianglesPerFrame = std::size_t(1) << 26;
 inline constexpr std::uint64_t kMaxReferenceRayTests = std::uint64_t(1) << 32; // 64-bit also in wasm32
@@ -137,9 +137,9 @@ std::vector<std::string> sceneWarnings(const Scene& scene);
 // Checks the ranges of DESIGN §4 on a scene built in code or changed by flags (parseScene already does).
 void validateScene(const Scene& scene);
 // validateScene in two parts. The values: every range parseScene checks as it reads, and the camera. The
-// limits: what depends on the whole composed scene (the work it asks for, README "Limits", and the depth
-// range standard depth resolves); parseScene leaves them to validateScene, because flags applied after
-// parsing (--subdivisions, --depth) may bring a scene within them.
+// limits: what depends on the whole composed scene (the work it asks for, docs/ci-engineers.md "Limits", and
+// the depth range standard depth resolves); parseScene leaves them to validateScene, because flags applied
+// after parsing (--subdivisions, --depth) may bring a scene within them.
 void validateSceneValues(const Scene& scene);
 void checkSceneLimits(const Scene& scene);
 

@@ -1,6 +1,6 @@
 // One way in for every value: each scene value that a command-line flag can also set has one
 // range and one function that checks it, and every door calls that function — the scene's JSON
-// (parseScene), a scene built or changed in code (validateScene) and the flags (src/app/demo/scene_flags.cpp,
+// (parseScene), a scene built or changed in code (validateScene) and the flags (src/scene/scene_flags.cpp,
 // and through them the demo and the page). A door parses only its own syntax (a JSON number, "WxH", a
 // decimal) and names the field: a JSON path ("image.width") or a flag ("--size width"). A refusal is an
 // InputError "<field>: must be ..., got <value>", in the same words whichever door the value came through.

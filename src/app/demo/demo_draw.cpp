@@ -5,8 +5,8 @@
 
 #include <vector>
 
-#include "shadelab/geometry/overlay.h"
-#include "shadelab/scene/outside_view.h"
+#include "shadelab/diagram/outside_view.h"
+#include "shadelab/diagram/overlay.h"
 
 namespace shadelab::app {
 

@@ -7,7 +7,7 @@
 #include "app/demo/demo_format.h"
 #include "app/demo/demo_state.h"
 #include "shadelab/errors.h"
-#include "shadelab/geometry/subdivision.h"
+#include "shadelab/scene/auto_level.h"
 
 namespace shadelab::app {
 

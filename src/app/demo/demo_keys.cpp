@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "shadelab/context/window.h"
+#include "shadelab/key_codes.h"
 
 namespace shadelab::app {
 namespace {

@@ -9,7 +9,7 @@
 #include <cstdio>
 
 #include "shadelab/errors.h"
-#include "shadelab/geometry/subdivision.h"
+#include "shadelab/scene/auto_level.h"
 
 namespace shadelab::app {
 namespace {
@@ -353,8 +353,8 @@ bool DemoState::probeAt(double x, double y) {
 }
 
 // Each object one level up or down from the level it is drawn at ("auto" resolved first).
-// A change that would draw more than the scene limits allow (README "Limits and memory": the triangles of
-// every object, of both sides of a split) is refused, and levelRefusal says why.
+// A change that would draw more than the scene limits allow (docs/ci-engineers.md "Limits and memory": the
+// triangles of every object, of both sides of a split) is refused, and levelRefusal says why.
 void DemoState::changeLevels(int delta) {
     const Scene& scene = drawn();
     Scene changed = scene_;

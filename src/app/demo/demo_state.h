@@ -21,11 +21,11 @@
 #include "app/demo/picture_layout.h"
 #include "app/demo/presentation_images.h"
 #include "app/demo/probe_cache.h"
+#include "shadelab/exact/probe.h"
 #include "shadelab/geometry/sphere.h"
 #include "shadelab/image/image.h"
 #include "shadelab/scene/lesson.h"
 #include "shadelab/scene/scene.h"
-#include "shadelab/shading/probe.h"
 
 namespace shadelab::app {
 
@@ -146,10 +146,10 @@ public:
     // The title's last change as the key `command` words it: a panel's setter says what it did so too.
     void describe(Command command) { lastChange_ = describeChange(command); }
 
-    // A lesson being stepped through (README "Lessons"): the state becomes `index`'s step as written (its
-    // scene, the camera it names, no material or light preset, no probe), keeping what belongs to the
-    // window rather than the step (panel, help, presentation, B's rule, the viewport). The step keys move
-    // through it; R returns to the step as written; every other key works inside the step.
+    // A lesson being stepped through (docs/lecturers.md "Lessons"): the state becomes `index`'s step as
+    // written (its scene, the camera it names, no material or light preset, no probe), keeping what belongs
+    // to the window rather than the step (panel, help, presentation, B's rule, the viewport). The step keys
+    // move through it; R returns to the step as written; every other key works inside the step.
     void openLesson(std::shared_ptr<const Lesson> lesson, std::size_t index = 0);
     const Lesson* lesson() const { return player_.lesson(); }
     const std::shared_ptr<const Lesson>& sharedLesson() const { return player_.shared(); }

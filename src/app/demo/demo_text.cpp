@@ -7,9 +7,9 @@
 #include <cstdio>
 
 #include "app/demo/demo_format.h"
-#include "shadelab/geometry/overlay.h"
-#include "shadelab/geometry/subdivision.h"
+#include "shadelab/diagram/overlay.h"
 #include "shadelab/io/text.h"
+#include "shadelab/scene/auto_level.h"
 
 namespace shadelab::app {
 

@@ -1,5 +1,5 @@
-// A lesson being stepped through (README "Lessons"): which lesson, which step, and where the step keys
-// (PgDn, PgUp, Home, End) go from there. DemoState holds one and makes the step's scene its own.
+// A lesson being stepped through (docs/lecturers.md "Lessons"): which lesson, which step, and where the step
+// keys (PgDn, PgUp, Home, End) go from there. DemoState holds one and makes the step's scene its own.
 #pragma once
 
 #include <cstddef>

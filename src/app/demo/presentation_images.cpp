@@ -6,8 +6,8 @@
 #include <cstdio>
 #include <vector>
 
-#include "shadelab/geometry/subdivision.h"
 #include "shadelab/io/text.h"
+#include "shadelab/scene/auto_level.h"
 
 namespace shadelab::app {
 

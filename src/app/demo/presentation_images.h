@@ -1,6 +1,6 @@
-// What a picture shows over it for a class (README "Presenting"): presentation mode's label and a lesson
-// step's band, as images. The window, the page and `shadelab slides` draw the same images, so the three
-// look alike; nothing here knows the demo's state (the label's facts come from the drawn scene).
+// What a picture shows over it for a class (docs/lecturers.md "Presenting"): presentation mode's label and a
+// lesson step's band, as images. The window, the page and `shadelab slides` draw the same images, so the
+// three look alike; nothing here knows the demo's state (the label's facts come from the drawn scene).
 #pragma once
 
 #include <optional>

@@ -1,6 +1,6 @@
 #include "app/demo/probe_cache.h"
 
-#include "shadelab/geometry/subdivision.h"
+#include "shadelab/scene/auto_level.h"
 
 namespace shadelab::app {
 

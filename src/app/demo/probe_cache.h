@@ -1,15 +1,15 @@
-// The probe (README "The probe"): the surface point a click pinned, and its report for the drawn scene,
-// kept until the drawn scene or the point changes. A level-10 mesh takes ~0.1 s to build and search, and a
-// frame asks for the probe several times (its vectors, the panel's table, the title), so it is a cache
+// The probe (docs/students.md "The probe"): the surface point a click pinned, and its report for the drawn
+// scene, kept until the drawn scene or the point changes. A level-10 mesh takes ~0.1 s to build and search,
+// and a frame asks for the probe several times (its vectors, the panel's table, the title), so it is a cache
 // keyed by the drawn scene's version (DemoState::drawnVersion) rather than recomputed or compared whole.
 #pragma once
 
 #include <cstdint>
 #include <optional>
 
+#include "shadelab/exact/probe.h"
 #include "shadelab/geometry/sphere.h"
 #include "shadelab/scene/scene.h"
-#include "shadelab/shading/probe.h"
 
 namespace shadelab::app {
 

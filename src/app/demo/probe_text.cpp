@@ -7,7 +7,7 @@
 
 #include "app/demo/demo_format.h"
 #include "app/demo/demo_state.h"
-#include "shadelab/scene/point_stages.h"
+#include "shadelab/diagram/point_stages.h"
 
 namespace shadelab::app {
 

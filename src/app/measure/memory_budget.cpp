@@ -6,9 +6,9 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include "shadelab/diagram/overlay.h"
 #include "shadelab/errors.h"
 #include "shadelab/geometry/mesh_layout.h"
-#include "shadelab/geometry/overlay.h"
 #include "shadelab/geometry/sphere.h"
 
 namespace shadelab::app {

@@ -1,5 +1,6 @@
 // What a run will need in memory, estimated before any of it is spent, against what the process may have:
-// the address-space limit (ulimit -v, RLIMIT_AS) and the machine's physical memory. README "Memory".
+// the address-space limit (ulimit -v, RLIMIT_AS) and the machine's physical memory. docs/ci-engineers.md
+// "Memory".
 #pragma once
 
 #include <cstddef>

@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "shadelab/context/context.h"
+#include "shadelab/exact/reference.h"
 #include "shadelab/scene/scene.h"
-#include "shadelab/shading/reference.h"
 
 namespace shadelab::app {
 
@@ -36,7 +36,7 @@ void parseLevels(std::string_view text, ReportOptions& options);
 // InputError naming the option (--levels, --frames, --warmup) for values out of range.
 void validateReportOptions(const ReportOptions& options);
 
-// One configuration: a shading mode × lighting model × level. The README section "Error against run time"
+// One configuration: a shading mode × lighting model × level. The docs/students.md "Error against run time"
 // documents each field under its column name (reportColumns()).
 struct ReportRow {
     ShadingMode shading = ShadingMode::Phong;

@@ -20,6 +20,7 @@
 #include "shadelab/gl/program.h"
 #include "shadelab/gl/render_target.h"
 #include "shadelab/gl/renderer.h"
+#include "shadelab/scene/auto_level.h"
 
 namespace shadelab::app {
 

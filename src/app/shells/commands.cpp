@@ -8,14 +8,15 @@
 #include <nlohmann/json.hpp>
 
 #include "app/measure/memory_budget.h"
+#include "app/report/showcase.h"
 #include "app/shells/commands.h"
 #include "shadelab/context/headless.h"
 #include "shadelab/errors.h"
+#include "shadelab/exact/reference.h"
 #include "shadelab/gl/program.h"
 #include "shadelab/image/image_file.h"
 #include "shadelab/io/atomic_file.h"
 #include "shadelab/io/text.h"
-#include "shadelab/shading/reference.h"
 #include "shadelab/vocabulary.h"
 
 namespace shadelab::app {

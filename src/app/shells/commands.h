@@ -7,10 +7,10 @@
 #include <optional>
 #include <string>
 
-#include "app/demo/scene_flags.h"
 #include "shadelab/context/context.h"
 #include "shadelab/scene/lesson.h"
 #include "shadelab/scene/scene.h"
+#include "shadelab/scene/scene_flags.h"
 
 namespace shadelab::app {
 

@@ -1,5 +1,6 @@
 // `shadelab slides LESSON --deck FILE.html`: every slide of a lesson in one self-contained HTML file, in
-// order, each step's "notes" beside its slide as the speaker's notes (commands.h, README "Lessons").
+// order, each step's "notes" beside its slide as the speaker's notes (commands.h, docs/lecturers.md
+// "Lessons").
 #pragma once
 
 #include <filesystem>
@@ -13,8 +14,9 @@ namespace shadelab::app {
 
 class Deck {
 public:
-    // Checks the output before anything is drawn: `path` by --out's rules (README "Output files"), named
-    // .html or .htm unless it is "-", a device or a FIFO, and none of `inputs` (the lesson, its scenes).
+    // Checks the output before anything is drawn: `path` by --out's rules (docs/ci-engineers.md "Output
+    // files"), named .html or .htm unless it is "-", a device or a FIFO, and none of `inputs` (the lesson,
+    // its scenes).
     Deck(const std::filesystem::path& path, const std::vector<std::filesystem::path>& inputs);
 
     // The next step's slide, as PNG bytes.

@@ -76,7 +76,7 @@ int run(const app::RenderArgs& render) {
         if (render.printMatrices)
             refuseStandardOutputAlias(render.out, "--out", "the matrices of --print-matrices");
     }
-    const Scene scene = app::composeScene(render.scene, render.overrides);
+    const Scene scene = composeScene(render.scene, render.overrides);
     warnAbout(scene, render.scene);
     if (render.printMatrices) {
         printMatrices(scene);
@@ -89,7 +89,7 @@ int run(const app::ReferenceArgs& reference) {
     (void)app::contextFromArguments(reference.context.backend, reference.context.api, ""); // as render would
     app::checkOutputPath(reference.out);
     refuseOverwritingInput(reference.out, "--out", reference.scene);
-    const Scene scene = app::composeScene(reference.scene, reference.overrides);
+    const Scene scene = composeScene(reference.scene, reference.overrides);
     warnAbout(scene, reference.scene);
     return app::runReference(scene, reference.out);
 }
@@ -97,7 +97,7 @@ int run(const app::ReferenceArgs& reference) {
 int run(const app::BenchArgs& args) {
     app::BenchOptions bench = args.bench;
     Scene sized;
-    app::composeSize(sized, args.size);
+    composeSize(sized, args.size);
     bench.width = sized.width;
     bench.height = sized.height;
     bench.context = contextOf(args.context);
@@ -168,13 +168,13 @@ int run(const app::DemoArgs& args) {
         Lesson lesson = std::move(*readLesson);
         for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
             LessonStep& step = lesson.steps[i];
-            step.scene = app::applyOverrides(std::move(step.scene), args.overrides, args.scene);
+            step.scene = applyOverrides(std::move(step.scene), args.overrides, args.scene);
             warnAbout(step.scene, args.scene + ": steps[" + std::to_string(i) + "]");
         }
         scene = lesson.steps.front().scene;
         demo.lesson = std::make_shared<const Lesson>(std::move(lesson));
     } else {
-        scene = app::applyOverrides(std::get<Scene>(std::move(read)), args.overrides, args.scene);
+        scene = applyOverrides(std::get<Scene>(std::move(read)), args.overrides, args.scene);
         warnAbout(scene, args.scene);
     }
     demo.api = app::apiFromArgument(args.api);

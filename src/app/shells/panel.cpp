@@ -158,8 +158,8 @@ std::string reflowed(std::string text) {
 
 } // namespace
 
-// A lesson (README "Lessons"): where it is, the step's title and caption, and the buttons that do what the
-// step keys do.
+// A lesson (docs/lecturers.md "Lessons"): where it is, the step's title and caption, and the buttons that do
+// what the step keys do.
 void lessonControls(DemoState& state) {
     const Lesson& lesson = *state.lesson();
     ImGui::TextUnformatted(lesson.title.c_str());

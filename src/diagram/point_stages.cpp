@@ -1,4 +1,4 @@
-#include "shadelab/scene/point_stages.h"
+#include "shadelab/diagram/point_stages.h"
 
 #include <string>
 

@@ -10,7 +10,7 @@
 
 #include "shadelab/scene/scene.h"
 
-namespace shadelab::app {
+namespace shadelab {
 
 // Flags that override the scene file. Unset flags leave the scene's values.
 struct SceneOverrides {
@@ -50,4 +50,4 @@ Scene applyOverrides(Scene scene, const SceneOverrides& overrides, const std::st
 // Applies "--size WxH" to the scene; InputError naming --size for anything else.
 void composeSize(Scene& scene, const std::string& text);
 
-} // namespace shadelab::app
+} // namespace shadelab

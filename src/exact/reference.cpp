@@ -1,4 +1,4 @@
-#include "shadelab/shading/reference.h"
+#include "shadelab/exact/reference.h"
 
 #include <algorithm>
 #include <array>
@@ -8,8 +8,8 @@
 #include <thread>
 
 #include "shadelab/errors.h"
+#include "shadelab/exact/ray_cast.h"
 #include "shadelab/shading/lighting.h"
-#include "shadelab/shading/ray_cast.h"
 
 namespace shadelab {
 namespace {

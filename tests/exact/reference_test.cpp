@@ -8,8 +8,8 @@
 #include <gtest/gtest.h>
 
 #include "shadelab/errors.h"
+#include "shadelab/exact/reference.h"
 #include "shadelab/image/image.h"
-#include "shadelab/shading/reference.h"
 
 namespace shadelab {
 namespace {

@@ -1,4 +1,4 @@
-#include "shadelab/shading/ray_cast.h"
+#include "shadelab/exact/ray_cast.h"
 
 #include <cmath>
 #include <utility>

@@ -1,5 +1,5 @@
 // The scene flags shared by every command and the page (DESIGN §5: flags override the scene file).
-#include "app/demo/scene_flags.h"
+#include "shadelab/scene/scene_flags.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -12,7 +12,7 @@
 #include "shadelab/scene/scene_values.h"
 #include "shadelab/vocabulary.h"
 
-namespace shadelab::app {
+namespace shadelab {
 namespace {
 
 // "scene (the scene as the camera sees it), error (E: error view: ...), ...": every view named alone with
@@ -193,4 +193,4 @@ Scene applyOverrides(Scene scene, const SceneOverrides& o, const std::string& pa
     return scene;
 }
 
-} // namespace shadelab::app
+} // namespace shadelab

@@ -1,4 +1,4 @@
-// The normals overlay's lines (shadelab/geometry/overlay.h) on the CPU: taken through the object's matrix M
+// The normals overlay's lines (shadelab/diagram/overlay.h) on the CPU: taken through the object's matrix M
 // as the renderer draws them, each normal runs along the normal the shading uses, (M⁻¹)ᵀ·n or, wrong on
 // purpose, M·n, computed here independently of the code under test (a diagonal M's inverse transpose is
 // 1/s per axis).
@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "shadelab/geometry/overlay.h"
+#include "shadelab/diagram/overlay.h"
 
 namespace shadelab {
 namespace {

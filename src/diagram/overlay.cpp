@@ -1,4 +1,4 @@
-#include "shadelab/geometry/overlay.h"
+#include "shadelab/diagram/overlay.h"
 
 #include <algorithm>
 #include <cmath>

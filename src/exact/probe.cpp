@@ -1,4 +1,4 @@
-#include "shadelab/shading/probe.h"
+#include "shadelab/exact/probe.h"
 
 #include <algorithm>
 #include <array>
@@ -6,7 +6,7 @@
 #include <string>
 
 #include "shadelab/errors.h"
-#include "shadelab/shading/ray_cast.h"
+#include "shadelab/exact/ray_cast.h"
 
 namespace shadelab {
 namespace {

@@ -1,4 +1,4 @@
-// The demo's probe (shadelab/shading/probe.h) and the overlay's lines (shadelab/geometry/overlay.h) on the
+// The demo's probe (shadelab/exact/probe.h) and the overlay's lines (shadelab/diagram/overlay.h) on the
 // CPU, against DESIGN §1 and §3 and the analytic reference: the exact sample is the reference's pixel, flat
 // shading is the centroid's lighting, Gouraud the interpolation of the vertices', Phong converges to the
 // exact value, and the vectors are the equation's l, n, v, r and h.
@@ -11,11 +11,11 @@
 
 #include <gtest/gtest.h>
 
+#include "shadelab/diagram/overlay.h"
 #include "shadelab/errors.h"
-#include "shadelab/geometry/overlay.h"
-#include "shadelab/geometry/subdivision.h"
-#include "shadelab/shading/probe.h"
-#include "shadelab/shading/reference.h"
+#include "shadelab/exact/probe.h"
+#include "shadelab/exact/reference.h"
+#include "shadelab/scene/auto_level.h"
 
 namespace shadelab {
 namespace {

@@ -1,3 +1,5 @@
+#include "app/report/showcase.h"
+
 #include <string>
 
 #include "shadelab/context/headless.h"

@@ -1,4 +1,4 @@
-// The point tracer (shadelab/scene/point_stages.h) against the lecture's stages computed independently: a
+// The point tracer (shadelab/diagram/point_stages.h) against the lecture's stages computed independently: a
 // pixel picked by the probe's ray cast traces back to that pixel; a point at the near plane lands on NDC
 // z = +1 and one at the far plane on −1; w = −z_camera under WebGL's matrix, z_camera under the unnegated
 // one, which clips the point.
@@ -6,9 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include "shadelab/diagram/point_stages.h"
 #include "shadelab/errors.h"
-#include "shadelab/scene/point_stages.h"
-#include "shadelab/shading/probe.h"
+#include "shadelab/exact/probe.h"
 
 namespace shadelab {
 namespace {

@@ -7,10 +7,10 @@
 
 #include <glm/glm.hpp>
 
+#include "shadelab/exact/probe.h"
 #include "shadelab/geometry/sphere.h"
 #include "shadelab/scene/camera.h"
 #include "shadelab/scene/scene.h"
-#include "shadelab/shading/probe.h"
 
 namespace shadelab {
 
