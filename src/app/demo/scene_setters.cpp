@@ -1,7 +1,6 @@
 // The value setters' table (scene_setters.h): how each value is read and set, and through which check.
 #include "app/demo/scene_setters.h"
 
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -28,10 +27,10 @@ std::string trimmed(std::string_view text) {
 // A decimal number as the scene file writes one; its range is the check's to refuse, not the door's.
 double number(std::string_view text, std::string_view field) {
     const std::string s = trimmed(text);
+    if (s.empty()) expected("a number", field, text);
     char* end = nullptr;
-    errno = 0;
-    const double value = s.empty() ? 0 : std::strtod(s.c_str(), &end);
-    if (s.empty() || *end != '\0' || std::isnan(value)) expected("a number", field, text);
+    const double value = std::strtod(s.c_str(), &end);
+    if (*end != '\0' || std::isnan(value)) expected("a number", field, text);
     if (!std::isfinite(value)) failNotFinite(field, s); // "1e400", as the scene file refuses it
     return value;
 }
