@@ -5,21 +5,21 @@
 
 namespace shadelab {
 
-std::vector<SmoothVertex> smoothVertices(const SphereMesh& mesh) {
+std::vector<SmoothVertex> smoothVertices(const TriangleMesh& mesh) {
     std::vector<SmoothVertex> out(mesh.positions.size());
     for (std::size_t i = 0; i < out.size(); ++i)
         out[i] = {glm::vec3(mesh.positions[i]), glm::vec3(mesh.vertexNormals[i])};
     return out;
 }
 
-std::vector<std::uint32_t> smoothIndices(const SphereMesh& mesh) {
+std::vector<std::uint32_t> smoothIndices(const TriangleMesh& mesh) {
     std::vector<std::uint32_t> out;
     out.reserve(mesh.triangles.size() * 3);
     for (const glm::uvec3& t : mesh.triangles) out.insert(out.end(), {t.x, t.y, t.z});
     return out;
 }
 
-std::vector<FlatVertex> flatVertices(const SphereMesh& mesh) {
+std::vector<FlatVertex> flatVertices(const TriangleMesh& mesh) {
     std::vector<FlatVertex> out;
     out.reserve(mesh.triangles.size() * 3);
     for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {

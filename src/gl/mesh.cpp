@@ -21,7 +21,7 @@ void attribute(GLuint location, GLsizei stride, std::size_t offset) {
 
 } // namespace
 
-GpuMesh::GpuMesh(const SphereMesh& mesh, MeshLayout layout)
+GpuMesh::GpuMesh(const TriangleMesh& mesh, MeshLayout layout)
     : layout_(layout), triangles_(int(mesh.triangles.size())) {
     glBindVertexArray(vao_.get());
     if (layout == MeshLayout::Smooth) {

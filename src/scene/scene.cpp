@@ -42,6 +42,22 @@ std::string_view toString(Overlay overlay) {
     return "unknown";
 }
 
+std::string_view toString(Shape shape) {
+    switch (shape) {
+    case Shape::Sphere:
+        return "sphere";
+    case Shape::Teapot:
+        return "teapot";
+    case Shape::Mesh:
+        return "mesh";
+    }
+    return "unknown";
+}
+
+bool isClosed(const SceneObject& object) {
+    return object.shape == Shape::Sphere || (object.shape == Shape::Mesh && object.closed);
+}
+
 std::string_view toString(ProjectionType type) {
     switch (type) {
     case ProjectionType::Perspective:

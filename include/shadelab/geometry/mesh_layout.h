@@ -24,9 +24,9 @@ struct FlatVertex {
     glm::vec3 faceNormal;
 };
 
-std::vector<SmoothVertex> smoothVertices(const SphereMesh& mesh);
-std::vector<std::uint32_t> smoothIndices(const SphereMesh& mesh);
-std::vector<FlatVertex> flatVertices(const SphereMesh& mesh);
+std::vector<SmoothVertex> smoothVertices(const TriangleMesh& mesh);
+std::vector<std::uint32_t> smoothIndices(const TriangleMesh& mesh);
+std::vector<FlatVertex> flatVertices(const TriangleMesh& mesh);
 
 enum class MeshLayout { Smooth, Flat };
 // The bytes of a level's arrays in `layout`: smoothVertices and smoothIndices, or flatVertices. In double,

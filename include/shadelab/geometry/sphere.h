@@ -10,6 +10,8 @@
 
 #include <glm/glm.hpp>
 
+#include "shadelab/geometry/triangle_mesh.h"
+
 namespace shadelab {
 
 inline constexpr int kMaxSubdivisions = 10;
@@ -19,12 +21,9 @@ inline constexpr const char* toString(VertexNormals normals) {
     return normals == VertexNormals::Averaged ? "averaged" : "exact";
 }
 
-struct SphereMesh {
+// Shared vertices on the unit sphere; vertex normals of the requested kind.
+struct SphereMesh : TriangleMesh {
     int level = 0;
-    std::vector<glm::dvec3> positions;     // shared vertices on the unit sphere, object space
-    std::vector<glm::uvec3> triangles;     // indices into positions, counter-clockwise seen from outside
-    std::vector<glm::dvec3> faceNormals;   // one unit normal per triangle
-    std::vector<glm::dvec3> vertexNormals; // one unit normal per vertex, of the requested kind
 };
 
 // Counts for level n: V = 2·4ⁿ + 2 shared vertices, F = 4ⁿ⁺¹ triangles.

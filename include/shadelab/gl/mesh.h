@@ -19,7 +19,7 @@ inline constexpr unsigned kCentroidAttribute = 2; // flat only
 
 class GpuMesh {
 public:
-    GpuMesh(const SphereMesh& mesh, MeshLayout layout);
+    GpuMesh(const TriangleMesh& mesh, MeshLayout layout);
     void draw() const;
     MeshLayout layout() const { return layout_; }
     int triangleCount() const { return triangles_; }

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -56,14 +57,33 @@ struct Projection {
 // the object's projected size (subdivision.h).
 inline constexpr int kAutoSubdivisions = -1;
 
+// "shape": what an object is (docs/DESIGN.md §1). A "mesh" object names a model file instead
+// (scene/model.h), and has no shape or subdivisions of its own.
+enum class Shape { Sphere, Teapot, Mesh };
+std::string_view toString(Shape shape); // "sphere" | "teapot" | "mesh"
+inline constexpr std::array kShapes = {Shape::Sphere, Shape::Teapot};
+
+struct Model; // scene/model.h: a mesh read from a file, shared by every object that names the file
+
 struct SceneObject {
+    Shape shape = Shape::Sphere;
     glm::dvec3 center{0, 0, 0};
     double radius = 1;
     glm::dvec3 scale{1, 1, 1}; // non-uniform scale: an ellipsoid; negative components mirror
-    int subdivisions = 5;      // 0..kMaxSubdivisions, or kAutoSubdivisions
+    int subdivisions = 5;      // 0..kMaxSubdivisions (the teapot's 0..kMaxTeapotLevel), or kAutoSubdivisions
     Material material;
+    // Shape::Mesh: "mesh", the file as the scene spells it (relative to the scene file's folder), and the
+    // model read from it (loadSceneModels, scene/model.h; null until then). "closed": the model encloses a
+    // volume, so its back faces may be culled; an open one (the default, and the teapot) is drawn two-sided.
+    std::string mesh;
+    std::shared_ptr<const Model> model;
+    bool closed = false;
+    // False for a mesh object whose scene gave no "material": loadSceneModels then takes the file's.
+    bool materialGiven = true;
     bool operator==(const SceneObject&) const = default;
 };
+// Whether back faces of `object` are hidden by its own front faces (the sphere; a model marked closed).
+bool isClosed(const SceneObject& object);
 
 inline constexpr int kMaxImageSize = 16384;
 // The work one scene may ask for (docs/ci-engineers.md "Limits"): measured on 2 cores with llvmpipe, 1,000
