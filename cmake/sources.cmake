@@ -12,6 +12,7 @@ set(SHADELAB_CORE_SOURCES
   src/io/atomic_file.cpp src/io/output_path.cpp src/io/numbered_files.cpp src/io/text.cpp
   src/image/image.cpp src/image/font.cpp
   src/geometry/sphere.cpp src/geometry/sphere_limits.cpp src/geometry/subdivision.cpp src/geometry/mesh_layout.cpp
+  src/geometry/teapot.cpp src/geometry/teapot_data.cpp
   src/shading/lighting.cpp
   src/scene/camera.cpp src/scene/observer.cpp src/scene/auto_level.cpp src/scene/view.cpp src/scene/scene.cpp src/scene/scene_check.cpp
   src/scene/scene_limits.cpp src/scene/scene_messages.cpp src/scene/scene_json.cpp src/scene/scene_parse.cpp
