@@ -125,12 +125,6 @@ void checkAttenuation(const glm::dvec3& a, const std::string& path) {
 
 } // namespace
 
-// The level's one check is the mesh builder's (sphere.h): above the maximum it names the memory the level
-// would take, which is the useful part.
-void checkSubdivisions(int level, std::string_view path) {
-    if (level != kAutoSubdivisions) checkSubdivisionLevel(level, path);
-}
-
 void checkViewAt(double at) {
     checkFinite(at, "view_at");
     if (!(at >= 0 && at <= 1))
@@ -250,7 +244,10 @@ void checkObject(const SceneObject& object, const std::string& path) {
                                     "; the model matrix is 32-bit float on the GPU, so it must be " +
                                     floatRange() + ": change the scene's units");
     }
-    checkSubdivisions(object.subdivisions, keyPath(path, "subdivisions"));
+    if (object.shape == Shape::Mesh)
+        checkMeshPath(object.mesh, keyPath(path, "mesh")); // a mesh object's level is unused
+    else
+        checkSubdivisions(object.shape, object.subdivisions, keyPath(path, "subdivisions"));
     checkMaterial(object.material, keyPath(path, "material"));
 }
 
@@ -340,6 +337,7 @@ void validateSceneValues(const Scene& scene) {
     checkLightCount(scene.lights.size());
     for (std::size_t i = 0; i < scene.lights.size(); ++i) checkLight(scene.lights[i], indexPath("lights", i));
     checkPlacement(scene);
+    checkSplitLevels(scene);
     if (scene.view.at) checkViewAt(*scene.view.at);
     checkObserver(scene.view.observer);
     // The NDC view transforms the mesh; exact shading has none (also as a split's side).

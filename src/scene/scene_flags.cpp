@@ -7,6 +7,7 @@
 
 #include "shadelab/errors.h"
 #include "shadelab/geometry/sphere.h"
+#include "shadelab/geometry/teapot.h"
 #include "shadelab/io/text.h"
 #include "shadelab/scene/scene_file.h"
 #include "shadelab/scene/scene_values.h"
@@ -49,7 +50,8 @@ const std::vector<SceneFlag>& sceneFlags() {
              " (inverse-transpose: (M^-1)^T, which keeps them perpendicular to the surface; model: M itself, "
              "wrong wherever M scales unevenly, the lecture's wrong picture on purpose)"},
         {"subdivisions", &SceneOverrides::subdivisions,
-         "Subdivision level of every object, 0.." + std::to_string(kMaxSubdivisions) +
+         "Subdivision level of every sphere, 0.." + std::to_string(kMaxSubdivisions) + ", and teapot, 0.." +
+             std::to_string(kMaxTeapotLevel) +
              ", or auto: the smallest level whose silhouette error stays below --tolerance-px"},
         {"tolerance-px", &SceneOverrides::tolerancePx,
          "Silhouette error auto subdivision allows (default 0.5)"},
@@ -115,6 +117,23 @@ int parseLevel(const std::string& text) {
     return level;
 }
 
+// Every sphere's and teapot's level; a mesh has none (its triangles are the file's, DESIGN §4). A level
+// beyond the teapot's range is the flag's error where the scene holds a teapot.
+void setLevels(Scene& scene, int level) {
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        SceneObject& object = scene.objects[i];
+        if (object.shape == Shape::Mesh) continue;
+        if (object.shape == Shape::Teapot && level != kAutoSubdivisions) try {
+                checkTeapotLevel(level, "--subdivisions");
+            } catch (const InputError& e) {
+                throw InputError(std::string(e.what()) + " (objects[" + std::to_string(i) +
+                                 "] is a teapot, whose levels stop at " + std::to_string(kMaxTeapotLevel) +
+                                 ")");
+            }
+        object.subdivisions = level;
+    }
+}
+
 // A decimal number: an optional sign, digits, an optional fraction and exponent. Not hex (0x10), not inf or
 // nan, not empty, nothing after the number. Scanned by hand: std::regex matches `[0-9]+` by recursion, one
 // frame a character, and a 50,000-digit argument overflowed the stack.
@@ -171,10 +190,7 @@ Scene applyOverrides(Scene scene, const SceneOverrides& o, const std::string& pa
             parseNameOrThrow(*o.perspectiveMatrix, "--perspective-matrix", kPerspectiveMatrices);
     if (o.normalMatrix)
         scene.normalMatrix = parseNameOrThrow(*o.normalMatrix, "--normal-matrix", kNormalMatrixRules);
-    if (o.subdivisions) {
-        const int level = parseLevel(*o.subdivisions);
-        for (SceneObject& object : scene.objects) object.subdivisions = level;
-    }
+    if (o.subdivisions) setLevels(scene, parseLevel(*o.subdivisions));
     if (o.depth) scene.depth = parseNameOrThrow(*o.depth, "--depth", kDepthModes);
     if (o.overlay) scene.overlay = parseNameOrThrow(*o.overlay, "--overlay", kOverlays);
     if (o.view) {

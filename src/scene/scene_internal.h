@@ -1,7 +1,8 @@
 // What the scene's source files share; not a public header. The scene is read in two steps, each with its
 // file — scene_json.cpp (the file's bytes → a JSON tree, refusing hostile text) and scene_parse.cpp (the
-// tree → a Scene: structure and types) — while scene_check.cpp holds every range and the pieces of the
-// messages, scene_write.cpp the way back to JSON, and scene.cpp the vocabularies, defaults and matrices.
+// tree → a Scene: structure and types; an object's shape is scene_shapes.cpp's) — while scene_check.cpp
+// holds every range, scene_messages.cpp the pieces of the messages, scene_write.cpp the way back to JSON,
+// and scene.cpp the vocabularies, defaults and matrices.
 #pragma once
 
 #include <array>
@@ -23,7 +24,7 @@ namespace shadelab::detail {
 
 using Json = nlohmann::json;
 
-// ---- message pieces (scene_check.cpp) ----
+// ---- message pieces (scene_messages.cpp) ----
 
 // What std::to_chars(value) gives: the shortest form that reads back as `value`.
 std::string formatNumber(double value);
@@ -38,6 +39,9 @@ std::string indexPath(std::string_view parent, std::size_t index); // "objects[2
 [[noreturn]] void failWithin(std::string_view path, const InputError& error);
 // "<path>: must be between lo and hi, got <shown>".
 [[noreturn]] void failOutOfRange(IntRange range, std::string_view shown, std::string_view path);
+// A value as a message names it: "null", "string \"x\"", "number 2", "array of 3 elements", "object".
+std::string describe(const Json& value);
+std::string joinKeys(std::span<const std::string_view> keys); // "a, b, c"
 
 // ---- range checks (scene_check.cpp), called by parseScene as it reads and again by validateScene ----
 
@@ -45,7 +49,6 @@ inline constexpr IntRange kToonBandRange{kMinToonBands, kMaxToonBands};
 
 void checkFinite(double value, std::string_view path);
 void checkIntRange(int value, IntRange range, std::string_view path);
-void checkSubdivisions(int level, std::string_view path); // a level, or kAutoSubdivisions
 void checkViewAt(double at);
 void checkObserver(const Observer& observer); // "view_observer"
 void checkSceneSize(const Scene& scene);      // image.width, image.height
@@ -62,6 +65,22 @@ void checkPlacement(const Scene& scene);
 bool hasPosition(LightType type);
 bool hasDirection(LightType type);
 
+// ---- an object's shape (scene_shapes.cpp) ----
+
+// A shape's levels: the sphere's 0..kMaxSubdivisions, the teapot's 0..kMaxTeapotLevel (a mesh has none:
+// an empty range).
+IntRange levelRange(Shape shape);
+// A level of `shape` (not "auto"): the sphere's check names the memory a level above the maximum needs.
+void checkLevel(Shape shape, int level, std::string_view path);
+void checkSubdivisions(Shape shape, int level, std::string_view path); // a level, or kAutoSubdivisions
+// "mesh": a non-empty relative path without NUL (DESIGN §4).
+void checkMeshPath(std::string_view file, std::string_view path);
+// The split's @level on every object (view.h): within the teapot's range where the scene holds a teapot.
+void checkSplitLevels(const Scene& scene);
+// An object's "shape", or "mesh" and "closed", with the refusals of keys that do not apply; its level is
+// read after (scene_parse.cpp), in the shape's range.
+void readShapeKeys(const Json& json, const std::string& path, SceneObject& object);
+
 // ---- reading a JSON tree (scene_parse.cpp; lesson.cpp reads lessons with them too) ----
 
 // The scene's top-level keys, in the order DESIGN §4 lists them.
@@ -71,9 +90,6 @@ inline constexpr std::array<std::string_view, 18> kSceneKeys = {
     "tolerance_px", "depth",    "vertex_normals", "normal_matrix",
     "overlay",      "view",     "view_at",        "view_observer",
     "objects",      "lights"};
-// A value as a message names it: "null", "string \"x\"", "number 2", "array of 3 elements", "object".
-std::string describe(const Json& value);
-std::string joinKeys(std::span<const std::string_view> keys); // "a, b, c"
 void requireObject(const Json& value, std::string_view path);
 // "<path>.<key>: unknown key; expected one of ..." for the first key not in `allowed`.
 void checkKeys(const Json& object, std::string_view path, std::span<const std::string_view> allowed);

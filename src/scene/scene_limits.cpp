@@ -2,10 +2,13 @@
 // scene_check.cpp: the work it asks for (triangles per frame, the reference's ray tests), the standard-depth
 // range, and where its objects and lights lie from the eye in 32-bit float.
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 #include "scene/scene_internal.h"
-#include "shadelab/geometry/sphere.h"
+#include "shadelab/geometry/teapot.h"
+#include "shadelab/io/text.h"
 #include "shadelab/scene/auto_level.h"
 #include "shadelab/scene/camera.h"
 
@@ -39,8 +42,9 @@ void checkObjectPlacement(const Scene& scene, const SceneObject& object, const s
                                           formatVec(object.center) + "; move it or the eye");
     const int axis = thinnestAxis(object);
     const double semiAxis = object.radius * std::abs(object.scale[axis]);
-    const double extent = object.radius * std::max({std::abs(object.scale.x), std::abs(object.scale.y),
-                                                    std::abs(object.scale.z)});
+    const double extent =
+        object.radius * boundingRadius(object) *
+        std::max({std::abs(object.scale.x), std::abs(object.scale.y), std::abs(object.scale.z)});
     // An orthographic ray's direction is the unit vector, 1/semiAxis long in the object's units.
     const bool orthographic = scene.projection.type == ProjectionType::Orthographic;
     const double reach = orthographic ? std::max(distance + extent, 1.0) : distance + extent;
@@ -82,33 +86,62 @@ using namespace detail;
 
 namespace {
 
+// The triangles one object draws at `level`. A mesh object's model, which its count needs, is read by
+// loadSceneModels (scene/model.h) after parsing; a split's @level beyond the teapot's is checkSplitLevels'.
+double trianglesDrawn(const SceneObject& object, std::size_t index, int level) {
+    if (object.shape == Shape::Mesh && !object.model)
+        fail(keyPath(indexPath("objects", index), "mesh"),
+             quotedValue(object.mesh) +
+                 " is not loaded, so the triangles it draws cannot be counted; read the scene's models "
+                 "(loadSceneModels) before drawing it");
+    if (object.shape == Shape::Teapot) level = std::clamp(level, 0, kMaxTeapotLevel);
+    return double(triangleCount(object, level));
+}
+
+// The reference's cost of one ray against one object, in ray-sphere tests: 1 for the sphere (a quadratic);
+// for a teapot or a mesh, the ray descends a bounding hierarchy over its T triangles (the teapot's at its
+// level stand for its patches, which the exact ray cast starts from), about ⌈log₂ T⌉ box tests of a
+// sphere test's cost each, before the few triangles or patch iterations at the leaf.
+double rayTestsPerPixel(const SceneObject& object, std::size_t index, int level) {
+    if (object.shape == Shape::Sphere) return 1;
+    const auto triangles = static_cast<std::uint64_t>(trianglesDrawn(object, index, level));
+    return 1 + double(std::bit_width(triangles > 0 ? triangles - 1 : 0));
+}
+
 // The work a scene asks for, bounded before any of it is done (docs/ci-engineers.md "Limits"): the triangles
-// drawn per frame, and the ray-object tests of the analytic reference (pixels × objects), which render and
-// reference share as one notion of a valid scene.
+// drawn per frame, and the ray-object tests of the analytic reference (pixels × objects, a teapot or mesh
+// weighted by its hierarchy), which render and reference share as one notion of a valid scene.
 void checkWork(const Scene& scene) {
     // A split view draws every object once per side, each side at its own level where it sets one.
     const bool split = scene.view.kind == ViewKind::Split;
-    double triangles = 0;
-    for (const SceneObject& object : scene.objects) {
+    double triangles = 0, testsPerPixel = 0;
+    bool onlySpheres = true;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const SceneObject& object = scene.objects[i];
+        onlySpheres = onlySpheres && object.shape == Shape::Sphere;
         const int level = subdivisionLevel(scene, object);
+        testsPerPixel += rayTestsPerPixel(object, i, level);
         if (!split) {
-            triangles += double(sphereTriangleCount(level));
+            triangles += trianglesDrawn(object, i, level);
             continue;
         }
         for (const SplitSide* side : {&scene.view.left, &scene.view.right})
-            triangles += double(sphereTriangleCount(side->level.value_or(level)));
+            triangles += trianglesDrawn(object, i, side->level.value_or(level));
     }
     if (triangles > double(kMaxTrianglesPerFrame))
         fail(split ? "view" : "objects",
-             "the scene draws " + formatNumber(triangles) + " triangles per frame (each object 4^(level+1)" +
+             "the scene draws " + formatNumber(triangles) + " triangles per frame (each " +
+                 (onlySpheres ? "object 4^(level+1)"
+                              : "sphere 4^(level+1), teapot 64 x 4^level, mesh its file's") +
                  (split ? ", once per side of the split" : "") + "); at most " +
                  std::to_string(kMaxTrianglesPerFrame) + " are allowed: lower the subdivisions" +
                  (split ? " (the sides' @levels included)" : "") + " or draw fewer objects");
-    const double rayTests = double(scene.width) * scene.height * double(scene.objects.size());
+    const double rayTests = double(scene.width) * scene.height * testsPerPixel;
     if (rayTests > double(kMaxReferenceRayTests))
         fail("objects", "the analytic reference would test " + formatNumber(rayTests) +
-                            " rays against objects (width x height x objects); at most " +
-                            std::to_string(kMaxReferenceRayTests) +
+                            " rays against objects (width x height x objects" +
+                            (onlySpheres ? "" : ", a teapot or mesh 1 + log2(its triangles) times") +
+                            "); at most " + std::to_string(kMaxReferenceRayTests) +
                             " are allowed: use a smaller image or fewer objects");
 }
 
@@ -122,8 +155,8 @@ void checkStandardDepthRange(const Scene& scene) {
     const double near = scene.projection.near;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& o = scene.objects[i];
-        const double extent =
-            std::abs(o.radius) * std::max({std::abs(o.scale.x), std::abs(o.scale.y), std::abs(o.scale.z)});
+        const double extent = std::abs(o.radius) * boundingRadius(o) *
+                              std::max({std::abs(o.scale.x), std::abs(o.scale.y), std::abs(o.scale.z)});
         const double farthest = std::min(glm::length(o.center - scene.eye) + extent, scene.projection.far);
         if (farthest / near > kMaxStandardDepthRatio)
             fail("projection.near",

@@ -1,5 +1,6 @@
 // The pieces of every scene message (scene_internal.h): numbers as the command line and the page both word
-// them, JSON paths, and the fail helpers that prefix a message with its path.
+// them, JSON paths, the fail helpers that prefix a message with its path, and JSON values and key lists as
+// messages name them.
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -7,6 +8,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+
+#include <nlohmann/json.hpp>
 
 #include "scene/scene_internal.h"
 #include "shadelab/errors.h"
@@ -75,6 +78,35 @@ std::string indexPath(std::string_view parent, std::size_t index) {
 [[noreturn]] void failOutOfRange(IntRange range, std::string_view shown, std::string_view path) {
     fail(path, "must be between " + std::to_string(range.lo) + " and " + std::to_string(range.hi) + ", got " +
                    std::string(shown));
+}
+
+// ---- values as messages name them ----
+
+std::string describe(const Json& value) {
+    switch (value.type()) {
+    case Json::value_t::null:
+        return "null";
+    case Json::value_t::boolean:
+        return value.get<bool>() ? "true" : "false";
+    case Json::value_t::string:
+        return "string " + quotedValue(value.get_ref<const std::string&>());
+    case Json::value_t::number_integer:
+    case Json::value_t::number_unsigned:
+    case Json::value_t::number_float:
+        return "number " + formatNumber(value.get<double>());
+    case Json::value_t::array:
+        return "array of " + std::to_string(value.size()) + (value.size() == 1 ? " element" : " elements");
+    case Json::value_t::object:
+        return "object";
+    default:
+        return "unsupported value";
+    }
+}
+
+std::string joinKeys(std::span<const std::string_view> keys) {
+    std::string out;
+    for (std::string_view key : keys) out += (out.empty() ? "" : ", ") + std::string(key);
+    return out;
 }
 
 } // namespace shadelab::detail

@@ -22,33 +22,6 @@ using namespace detail;
 
 namespace detail {
 
-std::string describe(const Json& value) {
-    switch (value.type()) {
-    case Json::value_t::null:
-        return "null";
-    case Json::value_t::boolean:
-        return value.get<bool>() ? "true" : "false";
-    case Json::value_t::string:
-        return "string " + quotedValue(value.get_ref<const std::string&>());
-    case Json::value_t::number_integer:
-    case Json::value_t::number_unsigned:
-    case Json::value_t::number_float:
-        return "number " + formatNumber(value.get<double>());
-    case Json::value_t::array:
-        return "array of " + std::to_string(value.size()) + (value.size() == 1 ? " element" : " elements");
-    case Json::value_t::object:
-        return "object";
-    default:
-        return "unsupported value";
-    }
-}
-
-std::string joinKeys(std::span<const std::string_view> keys) {
-    std::string out;
-    for (std::string_view key : keys) out += (out.empty() ? "" : ", ") + std::string(key);
-    return out;
-}
-
 void requireObject(const Json& value, std::string_view path) {
     if (!value.is_object())
         fail(path.empty() ? "the top level" : path, "must be an object, got " + describe(value));
@@ -206,28 +179,40 @@ Material readMaterial(const Json& json, const std::string& path) {
     return m;
 }
 
+// "subdivisions": a level in the shape's range (the sphere's 0..10, the teapot's 0..8) or "auto".
+void readLevel(const Json& json, const std::string& path, SceneObject& object) {
+    const Json* level = member(json, "subdivisions");
+    if (!level) return;
+    const std::string levelPath = keyPath(path, "subdivisions");
+    const IntRange range = levelRange(object.shape);
+    if (level->is_string()) {
+        if (level->get<std::string>() != "auto")
+            fail(levelPath, "must be a level " + toString(range) + " or \"auto\", got " + describe(*level));
+        object.subdivisions = kAutoSubdivisions;
+        return;
+    }
+    object.subdivisions = readInt(*level, levelPath, range);
+    // In a file "auto" is spelled out; kAutoSubdivisions is only the in-memory sentinel.
+    if (object.subdivisions < 0) checkLevel(object.shape, object.subdivisions, levelPath);
+}
+
 SceneObject readObject(const Json& json, const std::string& path) {
-    static constexpr std::array<std::string_view, 5> kKeys = {"center", "radius", "scale", "subdivisions",
-                                                              "material"};
+    // The sphere's keys first, in DESIGN §4's order, then the shape's.
+    static constexpr std::array<std::string_view, 8> kKeys = {"center",   "radius", "scale", "subdivisions",
+                                                              "material", "shape",  "mesh",  "closed"};
     requireObject(json, path);
     checkKeys(json, path, kKeys);
     SceneObject object;
+    readShapeKeys(json, path, object);
     readField(json, path, "center", object.center);
     readField(json, path, "radius", object.radius);
     readField(json, path, "scale", object.scale);
-    if (const Json* level = member(json, "subdivisions"); level && level->is_string()) {
-        if (level->get<std::string>() != "auto")
-            fail(keyPath(path, "subdivisions"),
-                 "must be a level " + toString(kSubdivisionRange) + " or \"auto\", got " + describe(*level));
-        object.subdivisions = kAutoSubdivisions;
-    } else {
-        readIntField(json, path, "subdivisions", kSubdivisionRange, object.subdivisions);
-        // In a file "auto" is spelled out; kAutoSubdivisions is only the in-memory sentinel.
-        if (object.subdivisions < 0)
-            checkSubdivisionLevel(object.subdivisions, keyPath(path, "subdivisions"));
-    }
-    if (const Json* material = member(json, "material"))
-        object.material = readMaterial(*material, keyPath(path, "material"));
+    if (object.shape != Shape::Mesh) readLevel(json, path, object);
+    const Json* material = member(json, "material");
+    if (material) object.material = readMaterial(*material, keyPath(path, "material"));
+    // Only a mesh object takes its file's material in the absence of its own (loadSceneModels); the others
+    // have the default material, which sceneToJson writes out.
+    object.materialGiven = material != nullptr || object.shape != Shape::Mesh;
     checkObject(object, path);
     return object;
 }
@@ -342,6 +327,7 @@ Scene detail::sceneFromJson(const Json& root) {
     if (const Json* objects = member(root, "objects")) scene.objects = readObjects(*objects);
     if (const Json* lights = member(root, "lights")) scene.lights = readLights(*lights);
     checkPlacement(scene);
+    checkSplitLevels(scene);
     return scene;
 }
 

@@ -34,17 +34,28 @@ Json toJson(const Projection& p) {
     return json;
 }
 
+Json toJson(const Material& m) {
+    return {{"ambient", toJson(m.ambient)},
+            {"diffuse", toJson(m.diffuse)},
+            {"specular", toJson(m.specular)},
+            {"shininess", m.shininess}};
+}
+
+// A sphere is written without "shape", as scenes were before there were other shapes, so their saved text
+// stays the same. A mesh object writes its file and "closed" (no shape, no level: the file's), and its
+// material only when the scene gave one: otherwise it is the file's, read again with it.
 Json toJson(const SceneObject& o) {
-    const Material& m = o.material;
-    return {{"center", toJson(o.center)},
-            {"radius", o.radius},
-            {"scale", toJson(o.scale)},
-            {"subdivisions", o.subdivisions == kAutoSubdivisions ? Json("auto") : Json(o.subdivisions)},
-            {"material",
-             {{"ambient", toJson(m.ambient)},
-              {"diffuse", toJson(m.diffuse)},
-              {"specular", toJson(m.specular)},
-              {"shininess", m.shininess}}}};
+    Json json = {{"center", toJson(o.center)}, {"radius", o.radius}, {"scale", toJson(o.scale)}};
+    if (o.shape == Shape::Mesh) {
+        json["mesh"] = o.mesh;
+        json["closed"] = o.closed;
+        if (o.materialGiven) json["material"] = toJson(o.material);
+        return json;
+    }
+    if (o.shape != Shape::Sphere) json["shape"] = toString(o.shape);
+    json["subdivisions"] = o.subdivisions == kAutoSubdivisions ? Json("auto") : Json(o.subdivisions);
+    json["material"] = toJson(o.material);
+    return json;
 }
 
 // Only the keys the light's type reads: the others are errors in a scene file.
