@@ -123,13 +123,13 @@ void setLevels(Scene& scene, int level) {
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         SceneObject& object = scene.objects[i];
         if (object.shape == Shape::Mesh) continue;
-        if (object.shape == Shape::Teapot && level != kAutoSubdivisions) try {
+        if (object.shape == Shape::Teapot && level != kAutoSubdivisions) {
+            try {
                 checkTeapotLevel(level, "--subdivisions");
             } catch (const InputError& e) {
-                throw InputError(std::string(e.what()) + " (objects[" + std::to_string(i) +
-                                 "] is a teapot, whose levels stop at " + std::to_string(kMaxTeapotLevel) +
-                                 ")");
+                throw InputError(std::string(e.what()) + " (objects[" + std::to_string(i) + "] is a teapot)");
             }
+        }
         object.subdivisions = level;
     }
 }

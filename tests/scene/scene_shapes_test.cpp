@@ -175,6 +175,7 @@ TEST(SceneShapes, RoundTripsEveryShape) {
         {"mesh": "models/thing.obj"},
         {"mesh": "models/thing.obj", "closed": true, "material": {"diffuse": [0, 1, 0]}},
         {"subdivisions": 2})"));
+    EXPECT_NO_THROW(validateSceneValues(scene)) << "what parseScene accepts, the values' check does";
     const std::string text = sceneToJson(scene);
     EXPECT_EQ(parseScene(text, "round-trip"), scene) << text;
     // A mesh object's material is the file's unless the scene gave one: written only then.
