@@ -21,6 +21,9 @@ constexpr double kSamePointInData = 1e-12;
 // where it is, the data's x = y = 0, and a collapsed row evaluates there exactly (B₀(0) = 1, the rest 0).
 constexpr double kOnAxis = 1e-12;
 
+// A triangle whose edges' cross product is this small against their lengths has no direction of its own.
+constexpr double kFlat = 1e-12;
+
 glm::dvec3 toObject(const glm::dvec3& data) {
     return glm::dvec3(data.x, data.z - kDataHalfHeight, -data.y) / kDataHalfHeight;
 }
@@ -145,7 +148,13 @@ TeapotMesh buildTeapot(int level) {
             const glm::dvec3 &pa = mesh.positions[a], &pb = mesh.positions[b], &pc = mesh.positions[c];
             if (samePoint(pa, pb) || samePoint(pb, pc) || samePoint(pa, pc)) return;
             mesh.triangles.emplace_back(a, b, c);
-            mesh.faceNormals.push_back(glm::normalize(glm::cross(pb - pa, pc - pa)));
+            const glm::dvec3 ab = pb - pa, ac = pc - pa, across = glm::cross(ab, ac);
+            if (glm::length(across) > kFlat * glm::length(ab) * glm::length(ac)) {
+                mesh.faceNormals.push_back(glm::normalize(across));
+            } else { // three corners in a line (the spout's tip at level 0): the normal at its centre
+                const glm::dvec3 uv = (mesh.patchUv[a] + mesh.patchUv[b] + mesh.patchUv[c]) / 3.0;
+                mesh.faceNormals.push_back(patchNormal(patch, uv.y, uv.z));
+            }
         };
         for (int i = 0; i < n; ++i)
             for (int j = 0; j < n; ++j) {
