@@ -79,8 +79,10 @@ glm::dvec3 normalAt(const PatchPoint& p) {
     return glm::normalize(glm::cross(p.dv, p.du));
 }
 
+// Compared squared: a build tests three pairs per triangle.
 bool samePoint(const glm::dvec3& a, const glm::dvec3& b) {
-    return glm::length(a - b) * kDataHalfHeight <= kSamePointInData;
+    constexpr double kSameInObject = kSamePointInData / kDataHalfHeight;
+    return glm::dot(a - b, a - b) <= kSameInObject * kSameInObject;
 }
 
 } // namespace
@@ -149,8 +151,9 @@ TeapotMesh buildTeapot(int level) {
             if (samePoint(pa, pb) || samePoint(pb, pc) || samePoint(pa, pc)) return;
             mesh.triangles.emplace_back(a, b, c);
             const glm::dvec3 ab = pb - pa, ac = pc - pa, across = glm::cross(ab, ac);
-            if (glm::length(across) > kFlat * glm::length(ab) * glm::length(ac)) {
-                mesh.faceNormals.push_back(glm::normalize(across));
+            const double across2 = glm::dot(across, across);
+            if (across2 > kFlat * kFlat * glm::dot(ab, ab) * glm::dot(ac, ac)) {
+                mesh.faceNormals.push_back(across / std::sqrt(across2));
             } else { // three corners in a line (the spout's tip at level 0): the normal at its centre
                 const glm::dvec3 uv = (mesh.patchUv[a] + mesh.patchUv[b] + mesh.patchUv[c]) / 3.0;
                 mesh.faceNormals.push_back(patchNormal(patch, uv.y, uv.z));
