@@ -69,9 +69,12 @@ std::optional<ProbePoint> pickSurfacePoint(const Scene& scene, double x, double 
     rays.ray(x, y, originView, directionView);
     RayHit hit;
     for (std::size_t k = 0; k < scene.objects.size(); ++k)
-        intersectObject(prepareObject(scene.objects[k], view.viewFromWorld, scene.normalMatrix), int(k),
-                        originView, directionView, view.volume.near, far, hit);
+        intersectObject(prepareObjectForCasting(scene.objects[k], view.viewFromWorld, scene.normalMatrix),
+                        int(k), originView, directionView, view.volume.near, far, hit);
     if (hit.object < 0 || !view.passesW(originView + hit.s * directionView)) return std::nullopt; // as drawn
+    // A probe point is a direction from a sphere's centre (ProbePoint): the teapot and meshes, which it
+    // cannot pin, hide what lies behind them but give no probe.
+    if (scene.objects[std::size_t(hit.object)].shape != Shape::Sphere) return std::nullopt;
     return ProbePoint{std::size_t(hit.object), unitDirection(hit.pointObject)};
 }
 
@@ -109,8 +112,11 @@ ProbeReport probeSurface(const Scene& scene, const ProbePoint& point, const Sphe
     if (point.object >= scene.objects.size())
         throw InputError("probe: object " + std::to_string(point.object) + " of a scene with " +
                          std::to_string(scene.objects.size()) + " objects");
-    const SceneView view = sceneView(scene);
     const SceneObject& object = scene.objects[point.object];
+    if (object.shape != Shape::Sphere)
+        throw InputError("probe: object " + std::to_string(point.object) + " is a " +
+                         std::string(toString(object.shape)) + ": no probe for this shape (spheres only)");
+    const SceneView view = sceneView(scene);
     const ObjectFrame frame{view.viewFromWorld * worldFromObject(object),
                             prepareObject(object, view.viewFromWorld, scene.normalMatrix)};
     std::vector<Light> lightsView;

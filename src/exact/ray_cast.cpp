@@ -1,8 +1,11 @@
 #include "shadelab/exact/ray_cast.h"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
+#include "shadelab/errors.h"
+#include "shadelab/exact/patch_cast.h"
 #include "shadelab/scene/camera.h"
 
 namespace shadelab {
@@ -17,12 +20,50 @@ ObjectInView prepareObject(const SceneObject& object, const glm::dmat4& viewFrom
     const glm::dmat3 linear(viewFromObject);
     const double k = largestAbsEntry(linear); // > 0: validated radius > 0 and non-zero scale
     const glm::dmat3 unit = linear / k;
-    return ObjectInView{glm::inverse(unit) / k, glm::dvec3(viewFromObject[3]),
-                        normalViewFromObject(viewFromObject, rule)};
+    return ObjectInView{glm::inverse(unit) / k,
+                        glm::dvec3(viewFromObject[3]),
+                        normalViewFromObject(viewFromObject, rule),
+                        object.shape,
+                        !isClosed(object),
+                        nullptr};
 }
 
-// Intersects the view-space ray origin + s·direction with `object` and keeps the hit in `best` when it lies
-// inside the clip volume (view z in [−far, −near]) and is nearer than the hit already there.
+ObjectInView prepareObjectForCasting(const SceneObject& object, const glm::dmat4& viewFromWorld,
+                                     NormalMatrixRule rule) {
+    ObjectInView prepared = prepareObject(object, viewFromWorld, rule);
+    if (object.shape == Shape::Mesh) {
+        if (!object.model)
+            throw InputError("mesh \"" + object.mesh + "\": the model is not loaded (loadSceneModels)");
+        prepared.meshBvh = meshBvhFor(object.model);
+    }
+    return prepared;
+}
+
+namespace {
+
+// The teapot and meshes: the ray re-centred on its point nearest the object's origin, so that for any ray
+// that can hit |origin| is O(1) whatever the distance of the eye (the cancellation happens once, here), and
+// the clip volume's z range turned into a range of t.
+void intersectSurface(const ObjectInView& object, int index, const glm::dvec3& originView,
+                      const glm::dvec3& directionView, const glm::dvec3& o, const glm::dvec3& dUnit,
+                      double dLength, double near, double far, RayHit& best) {
+    if (!(directionView.z < 0)) return; // both projections cast rays towards −z
+    const double tShift = -glm::dot(o, dUnit);
+    const double sNear = (near + originView.z) / -directionView.z,
+                 sFar = (far + originView.z) / -directionView.z;
+    const double sMax = std::min(sFar, best.s);
+    const ObjectRay ray{o + tShift * dUnit, dUnit, sNear * dLength - tShift, sMax * dLength - tShift};
+    ObjectRayHit hit;
+    const bool found = object.shape == Shape::Teapot ? intersectTeapot(ray, hit)
+                       : object.meshBvh              ? object.meshBvh->intersect(ray, hit)
+                                                     : false;
+    if (!found) return;
+    const double s = (hit.t + tShift) / dLength;
+    if (s < best.s) best = RayHit{s, index, hit.pointObject, hit.normalObject, hit.backFace};
+}
+
+} // namespace
+
 void intersectObject(const ObjectInView& object, int index, const glm::dvec3& originView,
                      const glm::dvec3& directionView, double near, double far, RayHit& best) {
     const glm::dvec3 o = object.objectFromView3 * (originView - object.originView);
@@ -30,6 +71,10 @@ void intersectObject(const ObjectInView& object, int index, const glm::dvec3& or
     const double dLength = glm::length(d);
     if (!(dLength > 0) || !std::isfinite(dLength) || !std::isfinite(glm::dot(o, o))) return;
     const glm::dvec3 dUnit = d / dLength;
+    if (object.shape != Shape::Sphere) {
+        intersectSurface(object, index, originView, directionView, o, dUnit, dLength, near, far, best);
+        return;
+    }
 
     // |o + t·dUnit|² = 1 with a = 1: t² + 2b·t + c = 0. The discriminant b² − c loses everything to
     // cancellation when |o| ≫ 1 (a tiny sphere seen from afar), so it is taken as 1 − |o⊥|², the distance of
@@ -52,7 +97,8 @@ void intersectObject(const ObjectInView& object, int index, const glm::dvec3& or
         const double zView = originView.z + s * directionView.z;
         // Both projections cast rays towards −z, so the first root inside the volume is the nearer one.
         if (zView <= -near && zView >= -far) {
-            if (s < best.s) best = RayHit{s, index, perpendicular + side * root * dUnit};
+            const glm::dvec3 pointObject = perpendicular + side * root * dUnit;
+            if (s < best.s) best = RayHit{s, index, pointObject, pointObject, false};
             return;
         }
     }
@@ -61,10 +107,11 @@ void intersectObject(const ObjectInView& object, int index, const glm::dvec3& or
 SurfacePoint exactSurfacePoint(const ObjectInView& object, const RayHit& hit, const glm::dvec3& originView,
                                const glm::dvec3& directionView, bool orthographic) {
     const glm::dvec3 positionView = originView + hit.s * directionView;
-    // The mesh is seen from outside, so the outward normal is used as is, even where the near plane cuts a
-    // sphere open and its inside shows.
-    const glm::dvec3 normalView =
-        safeNormalize(object.normalViewFromObject * hit.pointObject, glm::dvec3(0, 0, 1));
+    // A closed object's mesh is seen from outside, so the outward normal is used as is, even where the near
+    // plane cuts a sphere open and its inside shows. An open one is lit two-sided: its inside is seen.
+    glm::dvec3 normalView =
+        safeNormalize(object.normalViewFromObject * hit.normalObject, glm::dvec3(0, 0, 1));
+    if (object.twoSided && hit.backFace) normalView = -normalView;
     return SurfacePoint{positionView, normalView, toViewer(positionView, normalView, orthographic)};
 }
 

@@ -33,7 +33,7 @@ ReferenceImage renderReference(const Scene& scene) {
     std::vector<ObjectInView> objects;
     objects.reserve(scene.objects.size());
     for (const SceneObject& object : scene.objects)
-        objects.push_back(prepareObject(object, view.viewFromWorld, scene.normalMatrix));
+        objects.push_back(prepareObjectForCasting(object, view.viewFromWorld, scene.normalMatrix));
     std::vector<Light> lightsView;
     lightsView.reserve(scene.lights.size());
     for (const Light& light : scene.lights) lightsView.push_back(transformLight(light, view.viewFromWorld));

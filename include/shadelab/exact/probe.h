@@ -25,7 +25,8 @@ struct ProbePoint {
 
 // The surface point that pixel position (x, y) of the scene's image sees (pixel (i, j)'s centre is
 // (i + 0.5, j + 0.5), top row first): the nearest exact object on the ray, as the analytic reference casts
-// it. nullopt on the background.
+// it. nullopt on the background, and where the nearest object is a teapot or a mesh (no probe for those
+// shapes: a ProbePoint is a direction from a sphere's centre).
 std::optional<ProbePoint> pickSurfacePoint(const Scene& scene, double x, double y);
 
 // One way of shading the probed point, all vectors in view space.
@@ -66,7 +67,7 @@ struct ProbeReport {
 };
 
 // `mesh` is the object's mesh at its drawn level (subdivisionLevel) with the scene's vertex normals.
-// Throws InputError when `point.object` is not an object of the scene.
+// Throws InputError when `point.object` is not an object of the scene or not a sphere.
 ProbeReport probeSurface(const Scene& scene, const ProbePoint& point, const SphereMesh& mesh);
 
 } // namespace shadelab

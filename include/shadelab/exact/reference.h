@@ -1,6 +1,8 @@
-// The analytic reference: an exact ray-cast of the scene's spheres and ellipsoids in double precision,
-// through pixel centres, with the same camera, projection and lighting code (lighting.h) as the renderer.
-// It is the ground truth for the image tests and the error report.
+// The analytic reference: an exact ray-cast of the scene's spheres and ellipsoids and of the teapot's Bézier
+// patches in double precision, through pixel centres, with the same camera, projection and lighting code
+// (lighting.h) as the renderer. It is the ground truth for the image tests and the error report. A mesh read
+// from a file has no exact surface: its reference is its own triangles lit per pixel with their
+// interpolated normals (mesh_cast.h), which measures shading error only.
 #pragma once
 
 #include <vector>
