@@ -50,8 +50,9 @@ bool same(const Material& a, const Material& b) {
 }
 
 bool same(const SceneObject& a, const SceneObject& b) {
-    return same(a.center, b.center) && a.radius == b.radius && same(a.scale, b.scale) &&
-           a.subdivisions == b.subdivisions && same(a.material, b.material);
+    return a.shape == b.shape && a.mesh == b.mesh && a.closed == b.closed &&
+           a.materialGiven == b.materialGiven && same(a.center, b.center) && a.radius == b.radius &&
+           same(a.scale, b.scale) && a.subdivisions == b.subdivisions && same(a.material, b.material);
 }
 
 bool same(const Light& a, const Light& b) {

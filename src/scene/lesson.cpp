@@ -206,8 +206,8 @@ void applyChanges(const Json& step, const std::string& path, Json& scene, Lesson
                  "must be a level (a number) or \"auto\", got " + describe(*level));
         Json& objects = objectsOf(scene);
         if (!objects.is_array()) return; // the scene parser names it
-        for (Json& object : objects)
-            if (object.is_object()) object["subdivisions"] = *level;
+        for (Json& object : objects)     // a mesh object's triangles are its file's: it has no level
+            if (object.is_object() && !object.contains("mesh")) object["subdivisions"] = *level;
     }
 }
 
