@@ -56,6 +56,7 @@ const std::vector<std::pair<int, Command>>& issueKeys() {
         {GLFW_KEY_C, Command::TogglePanel},
         {GLFW_KEY_F2, Command::TogglePresentation}, // Presentation mode
         {GLFW_KEY_W, Command::ToggleOverlay},       // wireframe and normals overlay
+        {GLFW_KEY_D, Command::ToggleShape},         // the edited object: sphere or teapot (DESIGN §1)
         {GLFW_KEY_F11, Command::ToggleFullScreen},
         // A lesson's steps.
         {GLFW_KEY_PAGE_DOWN, Command::NextStep},
@@ -120,7 +121,7 @@ TEST(DemoKeys, EveryCommandHasExactlyOneBinding) {
 }
 
 TEST(DemoKeys, UnboundKeysGiveNoCommand) {
-    for (int key : {GLFW_KEY_Z, GLFW_KEY_D, GLFW_KEY_6, GLFW_KEY_F3, GLFW_KEY_ENTER, GLFW_KEY_UNKNOWN, 0})
+    for (int key : {GLFW_KEY_Z, GLFW_KEY_6, GLFW_KEY_F3, GLFW_KEY_ENTER, GLFW_KEY_UNKNOWN, 0})
         EXPECT_FALSE(commandForKey(key).has_value()) << "key " << key;
 }
 

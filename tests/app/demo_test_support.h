@@ -26,6 +26,7 @@ inline constexpr Command kAllCommands[] = {
     Command::ToggleProjection,
     Command::ToggleNormals,
     Command::ToggleOverlay,
+    Command::ToggleShape,
     Command::AutoLevel,
     Command::NextMaterial,
     Command::NextLights,

@@ -48,6 +48,7 @@ const std::vector<KeyBinding>& bindings() {
          "W",
          "overlay: wireframe, then face and vertex normals, then the lights' markers, then none",
          Command::ToggleOverlay},
+        {{'D'}, "D", "shape of the edited object: sphere <-> Newell's teapot", Command::ToggleShape},
         {{'M'}, "M", "next material preset", Command::NextMaterial},
         {{'L'}, "L", "next light set-up", Command::NextLights},
         {{'R'}, "R", "reset the view (in a lesson: the step as written)", Command::ResetView},

@@ -290,6 +290,14 @@ bool DemoState::apply(Command command) {
                          : scene_.overlay == Overlay::Normals   ? Overlay::Lights
                                                                 : Overlay::None;
         break;
+    case Command::ToggleShape:
+        try {
+            setShape(shape() == Shape::Sphere ? Shape::Teapot : Shape::Sphere);
+            levelRefusal_.clear();
+        } catch (const InputError& e) {
+            levelRefusal_ = std::string("shape refused: ") + e.what();
+        }
+        break;
     case Command::NextMaterial:
         nextMaterial();
         break;
@@ -359,7 +367,7 @@ void DemoState::changeLevels(int delta) {
     const Scene& scene = drawn();
     Scene changed = scene_;
     for (SceneObject& o : changed.objects)
-        o.subdivisions = std::clamp(subdivisionLevel(scene, o) + delta, 0, kMaxSubdivisions);
+        o.subdivisions = std::clamp(subdivisionLevel(scene, o) + delta, 0, finestLevel(o.shape));
     if (const std::string why = overLimits(changed); !why.empty()) {
         levelRefusal_ = "level " + std::to_string(level() + delta) + " refused: " + why;
         return;

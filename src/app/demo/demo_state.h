@@ -21,6 +21,7 @@
 #include "app/demo/picture_layout.h"
 #include "app/demo/presentation_images.h"
 #include "app/demo/probe_cache.h"
+#include "app/measure/shape_levels.h"
 #include "shadelab/exact/probe.h"
 #include "shadelab/geometry/sphere.h"
 #include "shadelab/image/image.h"
@@ -49,6 +50,7 @@ enum class Command {
     ToggleProjection,
     ToggleNormals,
     ToggleOverlay,
+    ToggleShape,
     AutoLevel,
     NextMaterial,
     NextLights,
@@ -219,6 +221,12 @@ public:
     void setAutoLevel(bool on);
     // The drawn projection orthographic or perspective (O).
     void setOrthographic(bool on);
+    // The shown object's shape (DESIGN §1: the sphere or Newell's teapot), or every object's when all are
+    // edited (D toggles it); a level beyond the teapot's 0..kMaxTeapotLevel becomes its finest. A mesh
+    // object keeps its model. Throws InputError (nothing changed) when the scene limits refuse the result.
+    void setShape(Shape shape);
+    // The shown object's shape; Shape::Sphere for a scene without objects.
+    Shape shape() const;
     std::string materialName() const;
     // What the last key changed, in words ("orthographic projection", "material: metal"); "" at first.
     const std::string& lastChange() const { return lastChange_; }

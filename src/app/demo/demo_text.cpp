@@ -37,10 +37,13 @@ std::string modes(const Scene& scene) {
            (scene.normalMatrix == NormalMatrixRule::Model ? ", normals by M" : "") + unnegated(scene);
 }
 
-// What is drawn: the mesh's level (and "(auto)"), or for exact shading, which draws no mesh, the ray cast.
-std::string geometry(const DemoState& state, const Scene& drawn) {
-    if (drawn.shading == ShadingMode::Exact) return "ray-cast per pixel, no mesh";
-    return "level " + std::to_string(state.level()) + (state.autoLevel() ? " (auto)" : "");
+// What is drawn: the mesh's level (and "(auto)"), or for exact shading, which draws no mesh, the ray cast;
+// after the shape when it is not the sphere (the title) or always (the status line).
+std::string geometry(const DemoState& state, const Scene& drawn, bool sphereNamed = false) {
+    const std::string shape =
+        sphereNamed || state.shape() != Shape::Sphere ? std::string(toString(state.shape())) + ", " : "";
+    if (drawn.shading == ShadingMode::Exact) return shape + "ray-cast per pixel, no mesh";
+    return shape + "level " + std::to_string(state.level()) + (state.autoLevel() ? " (auto)" : "");
 }
 
 // The normals overlay past kNormalsOverlayLevel draws a thinned set (overlay.h): said, so that nobody reads
@@ -75,7 +78,7 @@ std::string windowTitle(const DemoState& state, double frameMs) {
 
 std::string statusText(const DemoState& state) {
     const Scene& scene = state.drawn();
-    return modes(scene) + "\n" + geometry(state, scene) + ", " +
+    return modes(scene) + "\n" + geometry(state, scene, true) + ", " +
            (state.orthographic() ? "orthographic" : "perspective") + ", " +
            (scene.vertexNormals == VertexNormals::Averaged ? "averaged" : "exact") +
            " normals\nmaterial: " + state.materialName() + ", lights: " + state.lightsName() +
@@ -149,6 +152,8 @@ std::string DemoState::describeChange(Command command) const {
                : scene.overlay == Overlay::Normals
                    ? "overlay: wireframe, face normals (amber), vertex normals (cyan)"
                    : "overlay: the lights (point: sphere, directional: arrows, spot: cone)";
+    case Command::ToggleShape:
+        return "shape: " + std::string(toString(shape())) + " for " + editedObjectName();
     case Command::NextMaterial:
         return "material: " + materialName();
     case Command::NextLights:

@@ -230,6 +230,11 @@ const ValueSetter kSetters[] = {
     materialRow<&Material::diffuse, vec3>("material.diffuse"),
     materialRow<&Material::specular, vec3>("material.specular"),
     materialRow<&Material::shininess, number>("material.shininess"),
+    {"shape", [](const DemoState& s, std::size_t) { return word(toString(s.shape())); },
+     [](DemoState& s, std::size_t, std::string_view field, std::string_view t) {
+         s.setShape(parseNameOrThrow(trimmed(t), field, kShapes)); // a mesh comes from a file, not a word
+         s.describe(Command::ToggleShape);
+     }},
     {"scale", [](const DemoState& s, std::size_t) { return valueText(s.scene().objects[shown(s)].scale); },
      [](DemoState& s, std::size_t, std::string_view field, std::string_view t) {
          s.editScale(vec3(t, field));
