@@ -28,6 +28,7 @@ set(SHADELAB_CORE_NATIVE_SOURCES src/image/png.cpp src/exact/reference.cpp)
 set(SHADELAB_GL_SOURCES
   src/gl/loader.cpp src/gl/handles.cpp src/gl/program.cpp src/gl/program_variant.cpp src/gl/mesh.cpp
   src/gl/renderer.cpp src/gl/scene_draw.cpp src/gl/scene_draw_lines.cpp src/gl/render_target.cpp src/gl/screen_pass.cpp
+  src/gl/scene_draw_exact.cpp
   src/gl/views.cpp src/gl/views_split.cpp src/gl/views_observed.cpp src/gl/views_profile.cpp)
 # The demo's state, keys and texts (no GL), shared by the window and the page.
 set(SHADELAB_DEMO_STATE_SOURCES

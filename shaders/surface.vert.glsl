@@ -8,6 +8,8 @@
 //                    centroid and face normal and lights it once (no centroid or normal attribute)
 //   NDC_VIEW         uClipFromObject is the observer's view of the camera's NDC space; the camera's own clip
 //                    coordinates go to the fragment stage, which discards what the clipper would remove
+//   TWO_SIDED        an open surface (DESIGN §3 "Open surfaces"): flat and Gouraud also light each vertex
+//                    with the normal turned over (vColorBack), which the fragment stage takes for a back face
 #if defined(FLAT_GEOMETRY_SHADER) && NEEDS_NORMAL
 #undef NEEDS_NORMAL
 #define NEEDS_NORMAL 0
@@ -35,16 +37,22 @@ out vec4 vCameraClip;
 out vec3 vPositionView;
 #elif defined(SHADING_FLAT)
 flat out vec3 vColor;
+#ifdef TWO_SIDED
+flat out vec3 vColorBack;
+#endif
 #elif defined(SHADING_GOURAUD)
 out vec3 vColor;
+#ifdef TWO_SIDED
+out vec3 vColorBack;
+#endif
 #else
 out vec3 vPositionView;
 out vec3 vNormalView;
 #endif
 
-vec3 lightAt(vec3 pointObject) {
+vec3 lightAt(vec3 pointObject, vec3 normalObject) {
     vec3 positionView = (uViewFromObject * vec4(pointObject, 1.0)).xyz;
-    vec3 normalView = safeNormalize(uNormalViewFromObject * aNormalObject, vec3(0.0, 0.0, 1.0));
+    vec3 normalView = safeNormalize(uNormalViewFromObject * normalObject, vec3(0.0, 0.0, 1.0));
     return clamp(shade(positionView, normalView, toViewer(positionView, normalView)), 0.0, 1.0);
 }
 
@@ -56,9 +64,15 @@ void main() {
 #if defined(FLAT_GEOMETRY_SHADER)
     vPositionView = (uViewFromObject * vec4(aPositionObject, 1.0)).xyz;
 #elif defined(SHADING_FLAT)
-    vColor = lightAt(aCentroidObject);
+    vColor = lightAt(aCentroidObject, aNormalObject);
+#ifdef TWO_SIDED
+    vColorBack = lightAt(aCentroidObject, -aNormalObject);
+#endif
 #elif defined(SHADING_GOURAUD)
-    vColor = lightAt(aPositionObject);
+    vColor = lightAt(aPositionObject, aNormalObject);
+#ifdef TWO_SIDED
+    vColorBack = lightAt(aPositionObject, -aNormalObject); // OpenGL's two-sided lighting did the same
+#endif
 #else
     vec3 positionView = (uViewFromObject * vec4(aPositionObject, 1.0)).xyz;
     vPositionView = positionView;

@@ -39,9 +39,28 @@ GpuMesh::GpuMesh(const TriangleMesh& mesh, MeshLayout layout)
     glBindVertexArray(0);
 }
 
+GpuMesh::GpuMesh(const TeapotMesh& proxy)
+    : layout_(MeshLayout::PatchUv), triangles_(int(proxy.triangles.size())) {
+    struct PatchVertex {
+        glm::vec3 position, normal, patchUv;
+    };
+    std::vector<PatchVertex> vertices(proxy.positions.size());
+    for (std::size_t i = 0; i < vertices.size(); ++i)
+        vertices[i] = {glm::vec3(proxy.positions[i]), glm::vec3(proxy.vertexNormals[i]),
+                       glm::vec3(proxy.patchUv[i])};
+    glBindVertexArray(vao_.get());
+    upload(GL_ARRAY_BUFFER, vertices_, vertices);
+    indices_ = Buffer();
+    upload(GL_ELEMENT_ARRAY_BUFFER, indices_, smoothIndices(proxy));
+    attribute(kPositionAttribute, sizeof(PatchVertex), offsetof(PatchVertex, position));
+    attribute(kNormalAttribute, sizeof(PatchVertex), offsetof(PatchVertex, normal));
+    attribute(kPatchUvAttribute, sizeof(PatchVertex), offsetof(PatchVertex, patchUv));
+    glBindVertexArray(0);
+}
+
 void GpuMesh::draw() const {
     glBindVertexArray(vao_.get());
-    if (layout_ == MeshLayout::Smooth)
+    if (layout_ != MeshLayout::Flat)
         glDrawElements(GL_TRIANGLES, triangles_ * 3, GL_UNSIGNED_INT, nullptr);
     else
         glDrawArrays(GL_TRIANGLES, 0, triangles_ * 3);

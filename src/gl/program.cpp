@@ -78,10 +78,14 @@ Program buildProgram(const ProgramVariant& variant) {
                            ") needs desktop OpenGL: " + std::string(displayName(capabilities().api)) +
                            " has no geometry stage; use the default flat layout");
     const bool exact = variant.shading == ShadingMode::Exact;
-    const Shader vertex =
-        compileStage(GL_VERTEX_SHADER, exact ? "exact.vert.glsl" : "surface.vert.glsl", variant);
-    const Shader fragment =
-        compileStage(GL_FRAGMENT_SHADER, exact ? "exact.frag.glsl" : "surface.frag.glsl", variant);
+    const char* vertexFile = variant.exactPatches ? "exact_patch.vert.glsl"
+                             : exact              ? "exact.vert.glsl"
+                                                  : "surface.vert.glsl";
+    const char* fragmentFile = variant.exactPatches ? "exact_patch.frag.glsl"
+                               : exact              ? "exact.frag.glsl"
+                                                    : "surface.frag.glsl";
+    const Shader vertex = compileStage(GL_VERTEX_SHADER, vertexFile, variant);
+    const Shader fragment = compileStage(GL_FRAGMENT_SHADER, fragmentFile, variant);
     Shader geometry{NoCreate};
     Program program;
     glAttachShader(program.get(), vertex.get());
@@ -94,6 +98,13 @@ Program buildProgram(const ProgramVariant& variant) {
     glDetachShader(program.get(), vertex.get());
     glDetachShader(program.get(), fragment.get());
     if (geometry) glDetachShader(program.get(), geometry.get());
+    if (variant.exactPatches) {
+        // GLSL 3.30 and ES 3.00 have no layout(binding): the block's binding point is set here.
+        const GLuint block = glGetUniformBlockIndex(program.get(), "TeapotPatches");
+        if (block == GL_INVALID_INDEX)
+            throw RuntimeError("program " + variant.name() + " has no uniform block TeapotPatches");
+        glUniformBlockBinding(program.get(), block, kTeapotPatchesBinding);
+    }
     return program;
 }
 
@@ -101,7 +112,7 @@ SurfaceProgram::SurfaceProgram(Program linked, const ProgramVariant& variant) : 
     const GLuint id = program.get();
     auto find = [id](const std::string& name) { return glGetUniformLocation(id, name.c_str()); };
     // Every variant uses its transform into clip space: a mesh's uClipFromObject, exact shading's uNdcRect.
-    const bool exact = variant.shading == ShadingMode::Exact;
+    const bool exact = variant.shading == ShadingMode::Exact && !variant.exactPatches;
     const char* required = exact ? "uNdcRect" : "uClipFromObject";
     if (find(required) < 0)
         throw RuntimeError("program " + variant.name() + " has no uniform " + required +

@@ -99,15 +99,16 @@ bool ProgramVariant::operator<(const ProgramVariant& other) const {
     auto key = [](const ProgramVariant& v) {
         return std::tie(v.shading, v.lighting, v.specialized, v.flatGeometryShader, v.directional, v.point,
                         v.spot, v.ambient, v.attenuation, v.specular, v.viewerAtInfinity, v.exactToon,
-                        v.ndcView, v.values);
+                        v.ndcView, v.twoSided, v.exactPatches, v.objectIdAlpha, v.values);
     };
     return key(*this) < key(other);
 }
 
 std::string ProgramVariant::name() const {
     std::string text = std::string(toString(shading)) + (flatGeometryShader ? "(gs)" : "") +
-                       (exactToon ? "(toon)" : "") + (ndcView ? "(ndc)" : "") + "/" +
-                       std::string(toString(lighting));
+                       (exactToon ? "(toon)" : "") + (ndcView ? "(ndc)" : "") +
+                       (twoSided ? "(two-sided)" : "") + (exactPatches ? "(patches)" : "") +
+                       (objectIdAlpha ? "(ids)" : "") + "/" + std::string(toString(lighting));
     if (!specialized) return text;
     text += "+d" + std::to_string(directional) + "p" + std::to_string(point) + "s" + std::to_string(spot);
     if (!ambient) text += "-ambient";
@@ -136,6 +137,9 @@ std::string ProgramVariant::defines() const {
     if (lighting == LightingModel::BlinnPhong) text += "#define LIGHTING_BLINN_PHONG\n";
     if (flatGeometryShader) text += "#define FLAT_GEOMETRY_SHADER\n";
     if (ndcView) text += "#define NDC_VIEW\n";
+    if (twoSided) text += "#define TWO_SIDED\n";
+    if (exactPatches) text += "#define EXACT_PATCHES\n";
+    if (objectIdAlpha) text += "#define OBJECT_ID_ALPHA\n";
     if (!specialized) return text;
     text += "#define SPECIALIZED\n";
     text += "#define NUM_DIRECTIONAL " + std::to_string(directional) + "\n";

@@ -88,43 +88,39 @@ void setTransforms(const SurfaceLocations& at, const glm::dmat4& clipFromView,
     glUniformMatrix3fv(at.normalViewFromObject, 1, GL_FALSE, glm::value_ptr(normalViewFromObjectF));
 }
 
+// Which winding is front: counter-clockwise from outside in object space, which a mirroring transform
+// turns clockwise. The NDC view's observer looks at the camera's NDC space, which the projection mirrors
+// (view space is right-handed, NDC left-handed), so there it turns once more.
+void setFrontFace(const glm::dmat4& viewFromObject, bool ndcView) {
+    const bool mirrored = (glm::determinant(glm::dmat3(viewFromObject)) < 0) != ndcView;
+    glFrontFace(mirrored ? GL_CW : GL_CCW);
+}
+
 // Back faces of a closed mesh lie behind its front faces: culling them halves the fragments shaded
-// (measured: ~1.9 fragments per covered pixel without). Where the near plane cuts the object open its
-// inside shows, as in the analytic reference, so there nothing is culled.
-void cullBackFaces(const SceneObject& object, const glm::dmat4& viewFromObject, double near) {
+// (measured: ~1.9 fragments per covered pixel without). Where the near plane cuts the object open (its
+// bounding sphere, of `boundRadiusObject` in object units, reaches it) its inside shows, as in the analytic
+// reference, so there nothing is culled. An open surface is never culled: its back faces show through its
+// openings and are lit two-sided (DESIGN §3 "Open surfaces"), which needs front to mean the outside.
+void cullBackFaces(const SceneObject& object, const glm::dmat4& viewFromObject, double near, bool closed,
+                   double boundRadiusObject) {
+    setFrontFace(viewFromObject, false);
     const double centerZ = viewFromObject[3].z;
-    const double radius = object.radius * std::max({std::abs(object.scale.x), std::abs(object.scale.y),
-                                                    std::abs(object.scale.z)});
-    if (centerZ + radius > -near) {
+    const double radius =
+        boundRadiusObject * object.radius *
+        std::max({std::abs(object.scale.x), std::abs(object.scale.y), std::abs(object.scale.z)});
+    if (!closed || centerZ + radius > -near) {
         glDisable(GL_CULL_FACE);
         return;
     }
     glEnable(GL_CULL_FACE);
     glCullFace(GL_BACK);
-    // Counter-clockwise from outside in object space; a mirroring transform turns that clockwise.
-    glFrontFace(glm::determinant(glm::dmat3(viewFromObject)) < 0 ? GL_CW : GL_CCW);
 }
 
-// The screen-space rectangle, in NDC, that holds the object's projection: the projected corners of its
-// bounding box, widened by two pixels, clipped to the viewport. Where the box reaches the near plane (the
-// object may be cut open) or behind the eye, the whole viewport. Empty (x0 > x1) when nothing is visible.
-glm::vec4 proxyRectangle(const glm::dmat4& clipFromView, const glm::dmat4& viewFromObject, double near,
-                         bool orthographic, int width, int height) {
-    glm::dvec2 lo(1e300), hi(-1e300);
-    for (int corner = 0; corner < 8; ++corner) {
-        const glm::dvec4 view =
-            viewFromObject * glm::dvec4(corner & 1 ? 1 : -1, corner & 2 ? 1 : -1, corner & 4 ? 1 : -1, 1);
-        if (!orthographic && !(view.z < -near)) return {-1, -1, 1, 1};
-        const glm::dvec4 clip = clipFromView * view;
-        const glm::dvec2 ndc = glm::dvec2(clip) / clip.w;
-        lo = glm::min(lo, ndc);
-        hi = glm::max(hi, ndc);
-    }
-    const glm::dvec2 pad(4.0 / width, 4.0 / height); // two pixels
-    lo = glm::max(lo - pad, glm::dvec2(-1));
-    hi = glm::min(hi + pad, glm::dvec2(1));
-    if (!(lo.x < hi.x && lo.y < hi.y)) return {1, 1, -1, -1};
-    return {float(lo.x), float(lo.y), float(hi.x), float(hi.y)};
+// The largest |p| of a mesh's vertices, in object units: the radius of a bounding sphere about the origin.
+double boundRadius(const TriangleMesh& mesh) {
+    double largest = 0;
+    for (const glm::dvec3& p : mesh.positions) largest = std::max(largest, glm::length(p));
+    return largest;
 }
 
 } // namespace
@@ -132,12 +128,35 @@ glm::vec4 proxyRectangle(const glm::dmat4& clipFromView, const glm::dmat4& viewF
 SceneDraw::SceneDraw() = default;
 SceneDraw::~SceneDraw() = default;
 
-const GpuMesh& SceneDraw::mesh(int level, VertexNormals normals, MeshLayout layout) {
-    // Flat shading reads face normals only, so both vertex-normal kinds share one flat mesh.
-    if (layout == MeshLayout::Flat) normals = VertexNormals::Averaged;
-    auto& slot = meshes_[{level, normals, layout}];
-    if (!slot) slot = std::make_unique<GpuMesh>(buildSphere(level, normals), layout);
-    return *slot;
+const SceneDraw::CachedMesh& SceneDraw::mesh(const Scene& sized, const SceneObject& object,
+                                             MeshLayout layout) {
+    const Model* model = object.shape == Shape::Mesh ? object.model.get() : nullptr;
+    if (object.shape == Shape::Mesh && !model)
+        throw RuntimeError("internal error: a mesh object (" + object.mesh +
+                           ") was drawn before its model was loaded");
+    const int level = object.shape == Shape::Mesh     ? 0
+                      : layout == MeshLayout::PatchUv ? kExactProxyLevel
+                                                      : subdivisionLevel(sized, object);
+    // Flat shading reads face normals only, so both vertex-normal kinds share one flat mesh; the teapot's
+    // and a model's normals are their own.
+    const VertexNormals normals = object.shape != Shape::Sphere || layout == MeshLayout::Flat
+                                      ? VertexNormals::Averaged
+                                      : sized.vertexNormals;
+    CachedMesh& slot = meshes_[{object.shape, model, level, normals, layout}];
+    if (slot.mesh) return slot;
+    if (object.shape == Shape::Sphere) {
+        slot.mesh = std::make_unique<GpuMesh>(buildSphere(level, normals), layout);
+        slot.boundRadiusObject = 1;
+    } else if (object.shape == Shape::Teapot) {
+        slot.mesh = layout == MeshLayout::PatchUv ? std::make_unique<GpuMesh>(exactTeapotProxy(level))
+                                                  : std::make_unique<GpuMesh>(buildTeapot(level), layout);
+        slot.boundRadiusObject = teapotBoundRadius();
+    } else {
+        slot.model = object.model;
+        slot.mesh = std::make_unique<GpuMesh>(model->mesh, layout);
+        slot.boundRadiusObject = boundRadius(model->mesh);
+    }
+    return slot;
 }
 
 const SceneDraw::DrawPlan& SceneDraw::drawPlan(const Scene& sized, const ProgramVariant& variant,
@@ -154,31 +173,47 @@ const SceneDraw::DrawPlan& SceneDraw::drawPlan(const Scene& sized, const Program
             return plans_.front();
         }
     }
-    DrawPlan plan{sized, variant, specialization, {}, {}};
-    plan.programs.reserve(sized.objects.size());
-    // One program for all, or (values compiled in) one per material, found again for the next object of
-    // the same material in a row.
-    const SurfaceProgram* shared = specialization == Specialization::Values ? nullptr : &program(variant);
-    for (std::size_t i = 0; i < sized.objects.size(); ++i) {
-        const Material& material = sized.objects[i].material;
-        if (shared)
-            plan.programs.push_back(shared);
-        else if (i > 0 && material == sized.objects[i - 1].material)
-            plan.programs.push_back(plan.programs.back());
-        else
-            plan.programs.push_back(&program(variant.withValues(sized, material)));
-    }
-    if (sized.shading != ShadingMode::Exact) {
-        const MeshLayout layout = sized.shading == ShadingMode::Flat && !variant.flatGeometryShader
-                                      ? MeshLayout::Flat
-                                      : MeshLayout::Smooth;
-        plan.meshes.reserve(sized.objects.size());
-        for (const SceneObject& object : sized.objects)
-            plan.meshes.push_back(&mesh(subdivisionLevel(sized, object), sized.vertexNormals, layout));
-    }
+    DrawPlan plan{sized, variant, specialization, {}};
+    plan.objects.reserve(sized.objects.size());
+    for (const SceneObject& object : sized.objects)
+        plan.objects.push_back(objectPlan(sized, object, variant, specialization));
     if (plans_.size() == kPlansKept) plans_.pop_back();
     plans_.insert(plans_.begin(), std::move(plan));
     return plans_.front();
+}
+
+SceneDraw::ObjectPlan SceneDraw::objectPlan(const Scene& sized, const SceneObject& object,
+                                            const ProgramVariant& frameVariant,
+                                            Specialization specialization) {
+    ObjectPlan plan;
+    plan.closed = isClosed(object);
+    ProgramVariant variant = frameVariant;
+    variant.twoSided = !plan.closed;
+    MeshLayout layout = sized.shading == ShadingMode::Flat && !variant.flatGeometryShader
+                            ? MeshLayout::Flat
+                            : MeshLayout::Smooth;
+    if (sized.shading == ShadingMode::Exact) {
+        if (object.shape == Shape::Sphere) {
+            plan.kind = ObjectKind::ExactSphere;
+        } else if (object.shape == Shape::Teapot) {
+            plan.kind = ObjectKind::ExactPatches;
+            variant.exactPatches = true;
+            variant.twoSided = false; // the ray decides which side it sees (exact_patch.frag.glsl)
+            layout = MeshLayout::PatchUv;
+        } else {
+            // A model has no analytic surface: its reference is per-fragment lighting of its own normals,
+            // quantized as toon's when the exact answer is toon's (DESIGN §1 "Meshes from files").
+            variant.shading = variant.exactToon ? ShadingMode::Toon : ShadingMode::Phong;
+            variant.exactToon = false;
+            variant.objectIdAlpha = true;
+        }
+    }
+    // One program for all objects alike, or (values compiled in) one per material.
+    plan.program = specialization == Specialization::Values
+                       ? &program(variant.withValues(sized, object.material))
+                       : &program(variant);
+    if (plan.kind != ObjectKind::ExactSphere) plan.mesh = &mesh(sized, object, layout);
+    return plan;
 }
 
 const SurfaceProgram& SceneDraw::program(const ProgramVariant& variant) {
@@ -201,7 +236,7 @@ public:
     // Binds the program that draws the object of that index, with the frame's and the object's uniforms
     // set; returns where the program keeps the rest.
     const SurfaceLocations& operator()(std::size_t index) {
-        const SurfaceProgram& surface = *plan_.programs[index];
+        const SurfaceProgram& surface = *plan_.objects[index].program;
         const Material& material = sized_.objects[index].material;
         if (&surface != bound_) {
             glUseProgram(surface.program.get());
@@ -273,11 +308,21 @@ void SceneDraw::draw(const Scene& scene, const Viewport& viewport, const DrawOpt
     for (const Light& light : scene.lights) lightsView_.push_back(transformLight(light, view.viewFromWorld));
     const DrawPlan& plan = drawPlan(sized, variant, options.specialization);
     ObjectBinder bind(plan, sized, variant, view, lightsView_);
-    if (scene.shading == ShadingMode::Exact) {
-        drawExact(sized, view, bind, x, options);
-    } else {
-        drawMeshes(sized, view, variant, plan, bind, options);
+    for (std::size_t index = 0; index < sized.objects.size(); ++index) {
+        const ObjectPlan& object = plan.objects[index];
+        switch (object.kind) {
+        case ObjectKind::Mesh:
+            drawMesh(sized, view, variant, object, index, bind, options);
+            break;
+        case ObjectKind::ExactSphere:
+            drawExactSphere(sized, view, index, bind(index), x, options);
+            break;
+        case ObjectKind::ExactPatches:
+            drawExactPatches(sized, view, object, index, bind(index), x, options);
+            break;
+        }
     }
+    glBindVertexArray(0);
     glUseProgram(0);
     glDisable(GL_CULL_FACE);
     if (scene.overlay == Overlay::Wireframe || scene.overlay == Overlay::Normals)
@@ -286,64 +331,28 @@ void SceneDraw::draw(const Scene& scene, const Viewport& viewport, const DrawOpt
     checkGlError("rendering the scene");
 }
 
-void SceneDraw::drawMeshes(const Scene& sized, const SceneView& view, const ProgramVariant& variant,
-                           const DrawPlan& plan, ObjectBinder& bind, const DrawOptions& options) {
-    for (std::size_t index = 0; index < sized.objects.size(); ++index) {
-        const SceneObject& object = sized.objects[index];
-        const SurfaceLocations& at = bind(index);
-        const glm::dmat4 viewFromObject = view.viewFromWorld * worldFromObject(object);
-        if (options.observerClipFromNdc) {
-            // Both faces: the observer may look at the inside of an object the near plane cuts open.
-            setTransforms(at, *options.observerClipFromNdc * view.clipFromView, viewFromObject,
-                          sized.normalMatrix);
-            const glm::mat4 cameraClipFromObject(view.clipFromView * viewFromObject);
-            glUniformMatrix4fv(at.cameraClipFromObject, 1, GL_FALSE, glm::value_ptr(cameraClipFromObject));
-            glDisable(GL_CULL_FACE);
-        } else {
-            setTransforms(at, view.clipFromView, viewFromObject, sized.normalMatrix);
-            cullBackFaces(object, viewFromObject, view.volume.near);
-        }
-        if (variant.flatGeometryShader)
-            glUniform1f(at.handedness, glm::determinant(glm::dmat3(viewFromObject)) < 0 ? -1.0f : 1.0f);
-        plan.meshes[index]->draw();
+void SceneDraw::drawMesh(const Scene& sized, const SceneView& view, const ProgramVariant& variant,
+                         const ObjectPlan& plan, std::size_t index, ObjectBinder& bind,
+                         const DrawOptions& options) {
+    const SceneObject& object = sized.objects[index];
+    const SurfaceLocations& at = bind(index);
+    const glm::dmat4 viewFromObject = view.viewFromWorld * worldFromObject(object);
+    if (options.observerClipFromNdc) {
+        // Both faces: the observer may look at the inside of an object the near plane cuts open.
+        setTransforms(at, *options.observerClipFromNdc * view.clipFromView, viewFromObject,
+                      sized.normalMatrix);
+        const glm::mat4 cameraClipFromObject(view.clipFromView * viewFromObject);
+        glUniformMatrix4fv(at.cameraClipFromObject, 1, GL_FALSE, glm::value_ptr(cameraClipFromObject));
+        glDisable(GL_CULL_FACE);
+        setFrontFace(viewFromObject, true);
+    } else {
+        setTransforms(at, view.clipFromView, viewFromObject, sized.normalMatrix);
+        cullBackFaces(object, viewFromObject, view.volume.near, plan.closed, plan.mesh->boundRadiusObject);
     }
-}
-
-// Exact shading: one proxy rectangle per object, its rays cast in shaders/exact.frag.glsl with what
-// ray_cast.cpp's prepareObject and PixelRays give the analytic reference.
-void SceneDraw::drawExact(const Scene& sized, const SceneView& view, ObjectBinder& bind, int x,
-                          const DrawOptions& options) {
-    // The core profile draws only with a vertex array bound, even an empty one.
-    if (!emptyVertexArray_) emptyVertexArray_ = VertexArray();
-    glDisable(GL_CULL_FACE);
-    const ViewVolume& v = view.volume;
-    glBindVertexArray(emptyVertexArray_.get());
-    for (std::size_t index = 0; index < sized.objects.size(); ++index) {
-        const SceneObject& object = sized.objects[index];
-        const glm::dmat4 viewFromObject = view.viewFromWorld * worldFromObject(object);
-        const glm::vec4 rect = proxyRectangle(view.clipFromView, viewFromObject, v.near, view.orthographic,
-                                              sized.width, sized.height);
-        if (!(rect.x < rect.z)) continue;
-        const SurfaceLocations& at = bind(index);
-        glUniform4f(at.viewport, float(x), 0.0f, float(sized.width), float(sized.height));
-        glUniform4f(at.nearRect, float(v.left), float(v.right), float(v.bottom), float(v.top));
-        // An infinite far plane clips nothing behind (as the reference): the largest float's order stands
-        // for it.
-        glUniform2f(at.nearFar, float(v.near),
-                    sized.depth == DepthMode::ReversedInfinite ? 3e38f : float(v.far));
-        glUniformMatrix4fv(at.clipFromView, 1, GL_FALSE, glm::value_ptr(glm::mat4(view.clipFromView)));
-        glUniform1f(at.depthZeroToOne, view.depth != DepthMode::Standard ? 1.0f : 0.0f);
-        glUniform1f(at.alpha, options.exactObjectIds ? float(index + 1) : 1.0f);
-        const ObjectInView prepared = prepareObject(object, view.viewFromWorld, sized.normalMatrix);
-        glUniform4fv(at.ndcRect, 1, glm::value_ptr(rect));
-        glUniformMatrix3fv(at.objectFromView, 1, GL_FALSE,
-                           glm::value_ptr(glm::mat3(prepared.objectFromView3)));
-        glUniform3fv(at.centerView, 1, glm::value_ptr(glm::vec3(prepared.originView)));
-        glUniformMatrix3fv(at.normalViewFromObject, 1, GL_FALSE,
-                           glm::value_ptr(glm::mat3(prepared.normalViewFromObject)));
-        glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
-    }
-    glBindVertexArray(0);
+    if (variant.flatGeometryShader)
+        glUniform1f(at.handedness, glm::determinant(glm::dmat3(viewFromObject)) < 0 ? -1.0f : 1.0f);
+    glUniform1f(at.alpha, options.exactObjectIds ? float(index + 1) : 1.0f); // OBJECT_ID_ALPHA only
+    plan.mesh->mesh->draw();
 }
 
 } // namespace shadelab::gl

@@ -15,6 +15,7 @@
 
 #include "shadelab/gl/mesh.h"
 #include "shadelab/gl/program.h"
+#include "shadelab/scene/model.h"
 #include "shadelab/scene/scene.h"
 
 namespace shadelab::gl {
@@ -41,6 +42,14 @@ struct DrawOptions {
     std::optional<glm::dmat4> observerClipFromNdc;
 };
 
+// The level of the teapot's mesh that exact shading refines its rays from (DESIGN §3 "Open surfaces"):
+// finer costs vertices, coarser costs Newton steps and a wider push along the normals.
+inline constexpr int kExactProxyLevel = 5;
+
+// The teapot's exact-shading proxy at `level` (scene_draw_exact.cpp) and its bounding radius in object units.
+TeapotMesh exactTeapotProxy(int level);
+double teapotBoundRadius();
+
 class SceneDraw {
 public:
     SceneDraw();
@@ -63,7 +72,15 @@ public:
     int programsBuilt() const { return programsBuilt_; }
 
 private:
-    const GpuMesh& mesh(int level, VertexNormals normals, MeshLayout layout);
+    // A mesh on the GPU and what the draw needs to know of it, kept by what it was built from.
+    struct CachedMesh {
+        std::shared_ptr<const Model> model; // a model's: held, so its address is not reused under the key
+        std::unique_ptr<GpuMesh> mesh;
+        double boundRadiusObject = 1; // the largest |p| of the surface, in object units (cullBackFaces)
+    };
+    // The object's mesh in `layout`: the sphere's and the teapot's at the object's level (the teapot's
+    // exact proxy at kExactProxyLevel), a model's own.
+    const CachedMesh& mesh(const Scene& sized, const SceneObject& object, MeshLayout layout);
     const SurfaceProgram& program(const ProgramVariant& variant);
     struct LineProgram {
         Program program;
@@ -77,28 +94,44 @@ private:
     // The matrices of `scene` at the viewport's size, with the viewport and the clip range of its depth mode
     // set, for lines drawn over what draw() drew there.
     SceneView viewportOver(const Scene& scene, const Viewport& viewport);
+    // How an object is drawn: as a mesh (every shading mode but exact; in exact shading a model, whose
+    // reference is Phong of its own normals), or ray cast — the sphere through a rectangle, the teapot's
+    // patches refined from a proxy mesh.
+    enum class ObjectKind { Mesh, ExactSphere, ExactPatches };
+    struct ObjectPlan {
+        ObjectKind kind = ObjectKind::Mesh;
+        const SurfaceProgram* program = nullptr;
+        const CachedMesh* mesh = nullptr; // none for the exact sphere
+        bool closed = true;               // isClosed: back faces culled, else lit two-sided
+    };
     // What each object of a scene is drawn with, resolved once for the scene and kept while neither it nor
     // an option changes: a frame then builds no variant's #define text and finds no program or mesh in a
     // map (programs_ and meshes_ never drop an entry, so the pointers stay valid).
     struct DrawPlan {
-        Scene scene;                                 // the scene as draw() draws it (atSize, the term)
-        ProgramVariant variant;                      // the frame's variant, before an object's values
-        Specialization specialization{};             // the options' when it was made
-        std::vector<const SurfaceProgram*> programs; // one per object
-        std::vector<const GpuMesh*> meshes;          // one per object (none in exact shading)
+        Scene scene;                     // the scene as draw() draws it (atSize, the term)
+        ProgramVariant variant;          // the frame's variant, before an object's values
+        Specialization specialization{}; // the options' when it was made
+        std::vector<ObjectPlan> objects; // one per object
     };
     const DrawPlan& drawPlan(const Scene& sized, const ProgramVariant& variant,
                              Specialization specialization);
+    ObjectPlan objectPlan(const Scene& sized, const SceneObject& object, const ProgramVariant& variant,
+                          Specialization specialization);
     // Binds, for a frame, the program that draws each object (scene_draw.cpp).
     class ObjectBinder;
-    void drawMeshes(const Scene& sized, const SceneView& view, const ProgramVariant& variant,
-                    const DrawPlan& plan, ObjectBinder& bind, const DrawOptions& options);
-    void drawExact(const Scene& sized, const SceneView& view, ObjectBinder& bind, int x,
-                   const DrawOptions& options);
+    void drawMesh(const Scene& sized, const SceneView& view, const ProgramVariant& variant,
+                  const ObjectPlan& plan, std::size_t index, ObjectBinder& bind, const DrawOptions& options);
+    // Exact shading (scene_draw_exact.cpp), with the object's program bound.
+    void drawExactSphere(const Scene& sized, const SceneView& view, std::size_t index,
+                         const SurfaceLocations& at, int x, const DrawOptions& options);
+    void drawExactPatches(const Scene& sized, const SceneView& view, const ObjectPlan& plan,
+                          std::size_t index, const SurfaceLocations& at, int x, const DrawOptions& options);
 
     int programsBuilt_ = 0;
     std::map<ProgramVariant, std::unique_ptr<SurfaceProgram>> programs_;
-    std::map<std::tuple<int, VertexNormals, MeshLayout>, std::unique_ptr<GpuMesh>> meshes_;
+    // By shape, model (null but for a model), level (0 for a model), the sphere's normals and the layout.
+    std::map<std::tuple<Shape, const Model*, int, VertexNormals, MeshLayout>, CachedMesh> meshes_;
+    Buffer teapotPatches_{NoCreate}; // the control points' uniform block (made at first use)
     std::unique_ptr<LineProgram> lineProgram_;
     // By level, normals, overlay and, for the normals, the object's scale and the normal-matrix rule.
     using OverlayKey = std::tuple<int, VertexNormals, Overlay, std::array<double, 3>, NormalMatrixRule>;

@@ -41,6 +41,9 @@ void SceneDraw::drawOverlay(const Scene& sized, const SceneView& view, const Dra
     const LineProgram& lines = lineProgram();
     glUseProgram(lines.program.get());
     for (const SceneObject& object : sized.objects) {
+        // The overlay's lines follow the sphere's subdivision (diagram/overlay.h); the teapot and models have
+        // none yet.
+        if (object.shape != Shape::Sphere) continue;
         const int level = subdivisionLevel(sized, object);
         const glm::dmat4 world = worldFromObject(object);
         // The edges alone are the same lines for every object; the normals follow its M and the rule.

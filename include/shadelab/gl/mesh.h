@@ -1,5 +1,6 @@
-// A sphere mesh uploaded to the GPU: indexed shared vertices for smooth modes, or three vertices per
-// triangle with centroid and face normal for flat shading.
+// A triangle mesh (the sphere, the teapot, a model) uploaded to the GPU: indexed shared vertices for smooth
+// modes, or three vertices per triangle with centroid and face normal for flat shading; the teapot's exact
+// shading's proxy adds each vertex's (patch, u, v).
 #pragma once
 
 #include "shadelab/gl/handles.h"
@@ -7,19 +8,22 @@
 
 #include "shadelab/diagram/overlay.h"
 #include "shadelab/geometry/sphere.h"
+#include "shadelab/geometry/teapot.h"
 
 namespace shadelab::gl {
 
-enum class MeshLayout { Smooth, Flat };
+enum class MeshLayout { Smooth, Flat, PatchUv };
 
 // Attribute locations shared with shaders/surface.vert.glsl.
 inline constexpr unsigned kPositionAttribute = 0;
 inline constexpr unsigned kNormalAttribute = 1;   // smooth: vertex normal; flat: face normal
 inline constexpr unsigned kCentroidAttribute = 2; // flat only
+inline constexpr unsigned kPatchUvAttribute = 2;  // PatchUv only (shaders/exact_patch.vert.glsl)
 
 class GpuMesh {
 public:
-    GpuMesh(const TriangleMesh& mesh, MeshLayout layout);
+    GpuMesh(const TriangleMesh& mesh, MeshLayout layout); // Smooth or Flat
+    explicit GpuMesh(const TeapotMesh& proxy);            // PatchUv: smooth with the (patch, u, v)
     void draw() const;
     MeshLayout layout() const { return layout_; }
     int triangleCount() const { return triangles_; }

@@ -43,6 +43,9 @@ struct SurfaceProgram {
     SurfaceLocations at;
 };
 
+// The uniform buffer binding point of the teapot's control points (shaders/exact_patch.frag.glsl).
+inline constexpr unsigned kTeapotPatchesBinding = 0;
+
 // Compiles and links the variant. A failed compile or link throws RuntimeError with the stage, the
 // variant name and the driver log; a non-empty log of a successful compile is printed to stderr.
 Program buildProgram(const ProgramVariant& variant);

@@ -42,6 +42,17 @@ struct ProgramVariant {
     // The NDC view (mesh shading modes): gl_Position is the observer's, and each fragment outside the
     // camera's clip volume (|x|, |y|, |z| > w, or w <= 0) is discarded, as the clipper would remove it.
     bool ndcView = false;
+    // An open surface (the teapot, a mesh not marked closed; DESIGN §3 "Open surfaces"): a back face is lit
+    // with its normal turned towards the viewer (TWO_SIDED). A define, not a uniform, as the modes above
+    // are: a closed object's program is the same source as before, and only a scene that mixes closed and
+    // open objects builds a second program.
+    bool twoSided = false;
+    // Exact shading of the teapot (EXACT_PATCHES): a proxy mesh whose fragments refine the ray's hit on
+    // their Bézier patch (shaders/exact_patch.*.glsl) instead of the sphere's proxy rectangle.
+    bool exactPatches = false;
+    // Mesh shading modes: alpha is uAlpha instead of 1 (OBJECT_ID_ALPHA), for a mesh object drawn as the
+    // exact answer of the error view's compare pass (its exact shading is Phong of the mesh).
+    bool objectIdAlpha = false;
     // Specialization::Values only: the #define lines that compile one object's values in (withValues);
     // empty otherwise. Every float is written so that it reads back as the same float.
     std::string values;
