@@ -237,14 +237,15 @@ TEST(TeapotReference, TinyRadiusGivesTheSamePicture) {
     EXPECT_LT(error.max, 1e-3); // measured: identical
 }
 
-// Seen edge-on (the eye level with the teapot, so the lid's and the bottom's flat discs are lines) from a
-// million units away through a 2.8e-4° field of view, the picture is the orthographic one: the rays are
-// parallel to 1e-6, and their origins' rounding (1e6·2⁻⁵² ≈ 2e-10) stays far below a pixel (1e-2 units).
+// Seen edge-on (the eye level with the teapot, so the lid's and the bottom's flat discs are lines) from ten
+// million units away through a 1.4e-5° field of view, the picture is the orthographic one: the rays are
+// parallel to 1e-7, and their origins' rounding (1e7·2⁻⁵² ≈ 2e-9) stays far below a pixel (2e-2 units) —
+// provided the cast solves near the teapot, not 1e7 units from it, where |F| could not fall below 1e-9.
 TEST(TeapotReference, EdgeOnFromAfarIsTheOrthographicPicture) {
     Scene far = teapotScene(128);
-    far.eye = {0, 0, 1e6};
-    far.projection.fovyDeg = 2 * std::atan(1.25 / 1e6) * 180 / std::numbers::pi;
-    far.projection.near = 1e6 - 10, far.projection.far = 1e6 + 10;
+    far.eye = {0, 0, 1e7};
+    far.projection.fovyDeg = 2 * std::atan(1.25 / 1e7) * 180 / std::numbers::pi;
+    far.projection.near = 1e7 - 10, far.projection.far = 1e7 + 10;
     Scene ortho = far;
     ortho.projection.type = ProjectionType::Orthographic;
     ortho.projection.left = ortho.projection.bottom = -1.25;
@@ -254,7 +255,7 @@ TEST(TeapotReference, EdgeOnFromAfarIsTheOrthographicPicture) {
     EXPECT_GT(coveredPixels(b), 128 * 128 / 5);
     EXPECT_EQ(coverageDifferencesOffTheEdge(a, b, 1), 0);
     const InteriorError error = interiorError(b.color, a);
-    EXPECT_LT(error.max, 0.05); // v differs from +z by ≤ 1.3e-6 rad (measured max 0.008/255)
+    EXPECT_LT(error.max, 0.05); // v differs from +z by ≤ 1.3e-7 rad
 }
 
 // An OBJ-like sphere (level 6, exact normals, no analytic surface known to the cast) against the analytic
