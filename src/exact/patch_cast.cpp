@@ -273,8 +273,8 @@ bool intersectTeapot(const ObjectRay& ray, ObjectRayHit& hit, CastCounters* coun
 
     const auto& trees = patchTrees();
     Search search{ray, hit, counters};
-    std::vector<Node> stack;
-    stack.reserve(64);
+    thread_local std::vector<Node> stack; // the reference's threads each reuse theirs, ray after ray
+    stack.clear();
     for (int p = 0; p < kTeapotPatchCount; ++p) {
         double entry;
         if (meets(trees[std::size_t(p)].boxes[0], ray, std::min(ray.tMax, hit.t), entry, counters))
