@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "shadelab/errors.h"
+#include "shadelab/exact/mesh_cast.h"
 #include "shadelab/exact/patch_cast.h"
 #include "shadelab/exact/probe.h"
 #include "shadelab/exact/reference.h"
@@ -274,6 +275,24 @@ TEST(MeshReference, SphereMeshWithExactNormalsAgreesWithTheAnalyticSphere) {
     EXPECT_LE(error.mean, 0.1) << "max " << error.max;
     EXPECT_LE(error.max, 1.0);
     EXPECT_EQ(coverageDifferencesOffTheEdge(exact, mesh, 1), 0);
+}
+
+// Rays through points of an edge two triangles share (a tilted quad, its diagonal at awkward coordinates)
+// hit one of them: no pinhole where rounding puts the point a hair outside both.
+TEST(MeshReference, RaysThroughASharedEdgeAlwaysHit) {
+    TriangleMesh quad;
+    quad.positions = {{-0.7, -0.31, 0.13}, {0.9, -0.57, -0.21}, {0.83, 0.77, 0.37}, {-0.61, 0.59, 0.11}};
+    quad.triangles = {{0, 1, 2}, {0, 2, 3}};
+    quad.vertexNormals.assign(4, glm::dvec3(0, 0, 1));
+    const MeshBvh bvh(quad);
+    int misses = 0;
+    for (int k = 1; k < 10000; ++k) {
+        const glm::dvec3 onEdge = glm::mix(quad.positions[0], quad.positions[2], k / 10000.0);
+        const glm::dvec3 direction = glm::normalize(glm::dvec3(0.1 * std::sin(k), 0.2, -1));
+        ObjectRayHit hit;
+        misses += !bvh.intersect(ObjectRay{onEdge - 3.0 * direction, direction, 0, 10}, hit);
+    }
+    EXPECT_EQ(misses, 0);
 }
 
 // The probe pins points on spheres only: a teapot hides the sphere behind it and gives no probe point, and
