@@ -241,23 +241,21 @@ TEST(SceneShapes, TrianglesPerFrameCountTheMeshsFileAndBothSidesOfASplit) {
     expectPieces(test::inputErrorOf([&] { validateScene(scene); }), {"view: the scene draws", "split"});
 }
 
-// The reference's rays: a sphere one test per pixel, a teapot or mesh 1 + ⌈log₂ T⌉ (its hierarchy).
-TEST(SceneShapes, ReferenceRayTestsWeighATeapotAndAMeshByTheirHierarchy) {
+// The reference's rays: a sphere one test per pixel, a teapot 256, a mesh 6·⌈log₂ T⌉ (its tree's walk).
+TEST(SceneShapes, ReferenceRayTestsWeighATeapotAndAMeshByTheirCost) {
     Scene scene;
-    scene.width = scene.height = kMaxImageSize; // 2^28 pixels: 16 spheres reach the 2^32 budget
-    scene.objects.assign(16, SceneObject{});
-    for (SceneObject& o : scene.objects) o.subdivisions = 0;
-    EXPECT_NO_THROW(checkSceneLimits(scene));
-    scene.objects.assign(3, teapot(0)); // 3 · (1 + ⌈log₂ T₀⌉) > 16
-    const std::size_t t0 = teapotTriangleCount(0);
-    ASSERT_GT(t0, 32u);
-    expectPieces(test::inputErrorOf([&] { checkSceneLimits(scene); }),
-                 {"objects: the analytic reference would test", "a teapot or mesh 1 + log2(its triangles)"});
-    scene.objects = {meshObject(modelOf(std::size_t(1) << 15)), SceneObject{}}; // 1 + 15, + 1: 17 > 16
+    scene.width = scene.height = 4096; // 2^24 pixels: 256 tests per pixel reach the 2^32 budget
+    scene.objects = {teapot(0)};
+    EXPECT_NO_THROW(checkSceneLimits(scene)); // 256: exactly the budget
+    scene.objects.push_back(SceneObject{});
     scene.objects[1].subdivisions = 0;
-    EXPECT_THROW(checkSceneLimits(scene), InputError);
-    scene.objects = {meshObject(modelOf(std::size_t(1) << 15))}; // 16: exactly the budget
+    expectPieces(test::inputErrorOf([&] { checkSceneLimits(scene); }),
+                 {"objects: the analytic reference would test", "a teapot 256 times, a mesh 6 x log2"});
+    const SceneObject mesh = meshObject(modelOf(std::size_t(1) << 15)); // 6 · 15 = 90 per pixel
+    scene.objects = {mesh, mesh};                                       // 180
     EXPECT_NO_THROW(checkSceneLimits(scene));
+    scene.objects.push_back(mesh); // 270 > 256
+    EXPECT_THROW(checkSceneLimits(scene), InputError);
 }
 
 // ---- the teapot's "auto" level ----
