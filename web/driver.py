@@ -208,6 +208,30 @@ class Page:
             send('touchEnd', [])
         time.sleep(0.2)
 
+    def model_files(self, paths, drop):
+        """The files at `paths` dropped on the canvas (a drop event carrying them, as a user's drag does) or
+        picked with the model input (WebDriver types their paths into it, as a user picks them); returns the
+        page's message once the page has loaded them (its count of model loads went up)."""
+        before = self.js('return window.shadelab.modelLoads')
+        if drop:
+            files = []
+            for path in paths:
+                with open(path, 'rb') as f:
+                    files.append([os.path.basename(path), base64.b64encode(f.read()).decode()])
+            self.js('const transfer = new DataTransfer();'
+                    'for (const [name, data] of arguments[0]) transfer.items.add(new File('
+                    ' [Uint8Array.from(atob(data), (c) => c.charCodeAt(0))], name));'
+                    'document.getElementById("canvas").dispatchEvent(new DragEvent("drop",'
+                    ' {dataTransfer: transfer, bubbles: true, cancelable: true}));', files)
+        else:
+            self.browser.find_element('id', 'model-file').send_keys('\n'.join(os.path.abspath(p) for p in paths))
+        deadline = time.time() + REQUEST_TIMEOUT
+        while self.js('return window.shadelab.modelLoads') == before:
+            if time.time() > deadline:
+                raise RuntimeError('the page did not load the model files within %d s' % REQUEST_TIMEOUT)
+            time.sleep(0.05)
+        return self.js('return window.shadelab.message()')
+
     def quoted(self, text):
         """shadelab's quotedValue(), as the page has it (page_lesson.js)."""
         return self.js('return quotedValue(arguments[0])', text)
@@ -355,6 +379,8 @@ def session():
             elif op == 'touch':  # a tap, a one-finger drag or a pinch (Page.touch)
                 answer = {}
                 page.touch(request)
+            elif op in ('drop-files', 'pick-files'):  # model files dropped on the canvas or picked
+                answer = {'message': page.model_files(request['paths'], op == 'drop-files')}
             elif op == 'click-element':  # a real click on a control of the page (it takes the focus)
                 from selenium.webdriver.common.action_chains import ActionChains
                 ActionChains(page.browser).click(page.browser.find_element('css selector', request['selector'])) \

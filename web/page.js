@@ -58,6 +58,7 @@ function bind() {
   const lesson = c('shadelab_load_lesson', 'string', ['number', 'string', 'number']);
   const flags = c('shadelab_apply_flags', 'string', ['number']);
   const setValue = c('shadelab_set', 'string', ['string', 'string']);
+  const model = c('shadelab_load_model', 'string', ['string']);
   return {
     loadScene: (text, name) => viaHeap(text, (pointer) => load(pointer, name)),
     loadLesson: (text, name, files) =>
@@ -66,6 +67,8 @@ function bind() {
     // Every control's value through the setter the window's panel uses (src/app/demo/scene_setters.h):
     // set('lighting', 'phong'), set('lights[0].cutoff_deg', '20'); '' or the refusal.
     set: (name, value) => setValue(name, String(value)),
+    // The files' places in the heap as JSON, the model's main file first (page_model.js); '' or the message.
+    loadModel: (files) => model(files),
     key: c('shadelab_key', 'number', ['number']),
     drag: c('shadelab_drag', null, ['number', 'number']),
     zoom: c('shadelab_zoom', null, ['number']),

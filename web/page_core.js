@@ -1,6 +1,6 @@
-// The page around shadelab.wasm, in seven classic scripts that share one global scope, loaded in this order
+// The page around shadelab.wasm, in eight classic scripts that share one global scope, loaded in this order
 // by index.html: page_core.js (the shared state and the message line), page_input.js (keys and mouse),
-// page_menus.js (the panel's menus from the program's tables),
+// page_menus.js (the panel's menus from the program's tables), page_model.js (model files and the shape),
 // page_panel.js (the control panel), page_capture.js (pixels, S, and the calls the tests and web/driver.py
 // make), page_lesson.js (a lesson's files: bounded fetches, step paths checked first), and page.js (the
 // module's start and scene loading), which loads shadelab.js last.

@@ -52,6 +52,10 @@ function refresh(ifChanged = false) {
   // Every warning the command line prints for this scene (a colour given as 0..255, say).
   $('warnings').textContent = ui.warnings.map((w) => 'warning: ' + w).join('\n');
   $('warnings').hidden = !ui.warnings.length;
+  // The shape of the object the panel edits (a model file's name for a mesh object, which no shape names).
+  $('object-box').hidden = !ui.objectCount;
+  setIfIdle('shape', ui.shownShape === 'mesh' ? '' : ui.shownShape);
+  $('shape-out').textContent = ui.shownShape === 'mesh' ? 'mesh: ' + ui.shownMesh : '';
   // The material of the object the panel edits (the first when all are edited), as the window's panel.
   const material = ui.shownMaterial;
   $('material').hidden = !material;
@@ -182,6 +186,12 @@ function wireControls() {
   for (const [id, name] of Object.entries(selects))
     $(id).addEventListener('change', (e) => set(name, e.target.value));
   $('match').addEventListener('change', (e) => set('match_highlight', e.target.checked));
+  // The chosen object's shape (the shape menu and its key set the same value), or a model from files.
+  $('shape').addEventListener('change', (e) => set('shape', e.target.value));
+  $('model-file').addEventListener('change', async (e) => {
+    await loadModelFiles(e.target.files);
+    e.target.value = ''; // the same files picked again load again
+  });
   $('level').addEventListener('input', (e) => set('level', e.target.value));
   $('auto').addEventListener('change', (e) => set('auto_level', e.target.checked));
   // The material controls edit the chosen object (0: all objects; a probe click chooses the object it hits).
@@ -232,11 +242,14 @@ function wireControls() {
     const source = {base: new URL('lessons/', location.href).href, given};
     if (!(await loadText(texts[index], all[index].name, source))) $('bundled').value = '';
   };
-  $('file').addEventListener('change', (e) => loadOther(e.target.files));
+  $('file').addEventListener('change', (e) => (holdsModel(e.target.files) ? loadModelFiles : loadOther)(e.target.files));
   document.addEventListener('dragover', (e) => e.preventDefault());
+  // A drop holding a model file (.obj, .gltf, .glb) is a model with its files; any other, a scene or lesson.
   document.addEventListener('drop', (e) => {
     e.preventDefault();
-    loadOther(e.dataTransfer.files);
+    const files = e.dataTransfer.files;
+    if (holdsModel(files)) loadModelFiles(files);
+    else loadOther(files);
   });
   $('step-previous').addEventListener('click', () => press(tables.keys.PageUp));
   $('step-next').addEventListener('click', () => press(tables.keys.PageDown));

@@ -32,6 +32,7 @@ nlohmann::json settingsJson(const Scene& given) {
 nlohmann::json materialJson(const Scene& scene, std::size_t index) {
     Scene one; // the defaults, but for that object: its material is written the same in any scene
     one.objects = {scene.objects[index]};
+    one.objects[0].materialGiven = true; // a mesh object's material from its file is written only when asked
     return nlohmann::json::parse(sceneToJson(one)).at("objects").at(0).at("material");
 }
 
@@ -102,6 +103,10 @@ nlohmann::json panelJson() {
         {"editedObject", s.editedObjectNumber()}, // 0: all objects
         {"editedObjectName", s.editedObjectName()},
         {"shownObject", shown ? nlohmann::json(*shown) : nlohmann::json(nullptr)}, // whose material shows
+        // Its shape, and for a mesh object the model file as the scene names it (the shape menu's row).
+        {"shownShape",
+         shown ? nlohmann::json(std::string(toString(scene.objects[*shown].shape))) : nlohmann::json(nullptr)},
+        {"shownMesh", shown ? nlohmann::json(scene.objects[*shown].mesh) : nlohmann::json(nullptr)},
         {"lesson", lessonJson(s)},
     };
 }

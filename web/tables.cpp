@@ -78,6 +78,8 @@ nlohmann::json menus() {
         {"normals", menu(kVertexNormals, {}, keyOf(Command::ToggleNormals))},
         {"overlay", menu(kOverlays, {{Overlay::Normals, "edges + normals"}}, keyOf(Command::ToggleOverlay))},
         {"view-kind", {{"key", ""}, {"options", views}}},
+        // The chosen object's shape (a model file's mesh comes from dropping the file: page_model.js).
+        {"shape", menu(kShapes, {}, keyOf(Command::ToggleShape))},
     };
 }
 
