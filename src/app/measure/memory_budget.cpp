@@ -1,7 +1,12 @@
 #include "app/measure/memory_budget.h"
+#include "app/measure/shape_levels.h"
 
+#include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <set>
+#include <utility>
+#include <vector>
 
 #include <sys/resource.h>
 #include <unistd.h>
@@ -10,6 +15,8 @@
 #include "shadelab/errors.h"
 #include "shadelab/geometry/mesh_layout.h"
 #include "shadelab/geometry/sphere.h"
+#include "shadelab/geometry/teapot.h"
+#include "shadelab/scene/model.h"
 
 namespace shadelab::app {
 
@@ -35,14 +42,47 @@ double renderBytes(const Scene& scene) {
     if (scene.view.kind == ViewKind::Error)
         bytes += pixels * (kFloatTarget + kFloatTarget + kFloatColour) * 16.0 / 15.0;
     if (scene.view.kind == ViewKind::Profile) bytes += pixels * 3 * kFloatTarget;
-    std::set<int> levels;
-    for (const SceneObject& object : scene.objects)
-        levels.insert(object.subdivisions == kAutoSubdivisions ? kMaxSubdivisions : object.subdivisions);
-    for (int level : levels) {
-        const double vertices = double(sphereVertexCount(level)),
-                     triangles = double(sphereTriangleCount(level));
-        // The vertex arrays of the mesh's layout (mesh_layout.h), as their buffers hold them.
-        bytes += meshBytes(level, scene.shading == ShadingMode::Flat ? MeshLayout::Flat : MeshLayout::Smooth);
+    const MeshLayout layout = scene.shading == ShadingMode::Flat ? MeshLayout::Flat : MeshLayout::Smooth;
+    // Each distinct mesh once: a shape at a level ("auto" counted at the shape's finest), or a model.
+    std::set<std::pair<Shape, int>> levels;
+    std::set<const Model*> models;
+    for (const SceneObject& object : scene.objects) {
+        if (object.shape == Shape::Mesh) {
+            if (object.model) models.insert(object.model.get());
+            continue;
+        }
+        const int finest = finestLevel(object.shape);
+        // A sphere's absurd level (asked for by mistake) gives a huge figure; the teapot has no finer mesh.
+        const int level = object.subdivisions == kAutoSubdivisions ? finest
+                          : object.shape == Shape::Teapot          ? std::min(object.subdivisions, finest)
+                                                                   : object.subdivisions;
+        levels.emplace(object.shape, level);
+    }
+    // The vertex arrays of each mesh's layout (mesh_layout.h), as their buffers hold them.
+    const auto arrayBytes = [layout](double vertices, double triangles) {
+        return layout == MeshLayout::Flat
+                   ? triangles * 3 * double(sizeof(FlatVertex))
+                   : vertices * double(sizeof(SmoothVertex)) + triangles * 3 * double(sizeof(std::uint32_t));
+    };
+    struct Counted {
+        double vertices, triangles, arrays;
+    };
+    std::vector<Counted> meshes;
+    for (const auto& [shape, level] : levels) {
+        if (shape == Shape::Teapot) {
+            const double v = double(teapotVertexCount(level)), t = double(teapotTriangleCount(level));
+            meshes.push_back({v, t, arrayBytes(v, t)});
+        } else {
+            meshes.push_back({double(sphereVertexCount(level)), double(sphereTriangleCount(level)),
+                              meshBytes(level, layout)});
+        }
+    }
+    for (const Model* model : models) {
+        const double v = double(model->mesh.positions.size()), t = double(model->mesh.triangles.size());
+        meshes.push_back({v, t, arrayBytes(v, t)});
+    }
+    for (const auto& [vertices, triangles, arrays] : meshes) {
+        bytes += arrays;
         // The overlay's lines (overlay.h: two LineVertex a segment), on the CPU and in their buffer:
         // every edge (1.5 per triangle), and with normals one segment per face and per vertex.
         double segments = 0;

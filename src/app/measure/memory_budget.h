@@ -19,7 +19,8 @@ inline constexpr double kGlBaselineBytes = 640.0 * 1024 * 1024;
 inline constexpr double kProcessBaselineBytes = 64.0 * 1024 * 1024;
 
 // Bytes one render of `scene` adds on top of the baseline: the offscreen colour and depth buffers, the
-// read-back and PNG rows, and the GPU copies of every distinct sphere (vertex and index buffers).
+// read-back and PNG rows, and the GPU copies of every distinct mesh (a sphere or a teapot at a level, a
+// model; vertex and index buffers).
 double renderBytes(const Scene& scene);
 // Bytes `shadelab reference` of `scene` takes in all (no GL: the CPU ray cast and its images).
 double referenceBytes(const Scene& scene);

@@ -16,6 +16,7 @@
 
 #include "shadelab/context/context.h"
 #include "shadelab/exact/reference.h"
+#include "shadelab/geometry/teapot.h"
 #include "shadelab/scene/scene.h"
 
 namespace shadelab::app {
@@ -87,9 +88,16 @@ ReportError measureError(const ImageF& rendered, const ReferenceImage& reference
 // Max over faces of the angle, in degrees, between the face normal and the exact sphere normal in the
 // direction of the face's centroid.
 double maxFaceNormalErrorDeg(const SphereMesh& mesh);
+// The same for the teapot: against the patch's analytic normal at the centroid's (patch, u, v).
+double maxFaceNormalErrorDeg(const TeapotMesh& mesh);
 
 // Called before each configuration is measured (done = rows finished so far) and once at the end.
 using ReportProgress = std::function<void(int done, int total, std::string_view configuration)>;
+
+// The levels measureReport measures `scene` at, in order: options.minLevel..maxLevel within the finest
+// level of the scene's shapes (the teapot's kMaxTeapotLevel when no object is a sphere; none beyond a
+// model's own mesh, level 0), then kAutoSubdivisions if options.includeAuto and a shape has levels.
+std::vector<int> reportLevels(const Scene& scene, const ReportOptions& options);
 
 // Every shading mode × lighting model × level (options.minLevel..maxLevel, then "auto" if
 // options.includeAuto) of `scene`, rows ordered by lighting model, shading mode, level (auto last).

@@ -117,4 +117,18 @@ double maxFaceNormalErrorDeg(const SphereMesh& mesh) {
     return worst * 180 / std::numbers::pi;
 }
 
+double maxFaceNormalErrorDeg(const TeapotMesh& mesh) {
+    double worst = 0;
+    const auto& patches = teapotPatches();
+    for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+        const glm::uvec3& t = mesh.triangles[i];
+        // The corners of a triangle share their patch; their (u, v) average is the centroid's parameters.
+        const glm::dvec3 uv = (mesh.patchUv[t.x] + mesh.patchUv[t.y] + mesh.patchUv[t.z]) / 3.0;
+        const glm::dvec3 exact = patchNormal(patches[std::size_t(mesh.patchUv[t.x].x)], uv.y, uv.z);
+        const glm::dvec3& n = mesh.faceNormals[i];
+        worst = std::max(worst, std::atan2(glm::length(glm::cross(n, exact)), glm::dot(n, exact)));
+    }
+    return worst * 180 / std::numbers::pi;
+}
+
 } // namespace shadelab::app

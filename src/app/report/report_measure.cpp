@@ -12,26 +12,42 @@
 #include <utility>
 
 #include "app/measure/frame_timing.h"
+#include "app/measure/shape_levels.h"
 #include "shadelab/errors.h"
 #include "shadelab/geometry/mesh_layout.h"
 #include "shadelab/geometry/subdivision.h"
+#include "shadelab/geometry/teapot.h"
 #include "shadelab/gl/loader.h"
 #include "shadelab/gl/mesh.h"
 #include "shadelab/gl/program.h"
 #include "shadelab/gl/render_target.h"
 #include "shadelab/gl/renderer.h"
 #include "shadelab/scene/auto_level.h"
+#include "shadelab/scene/model.h"
 
 namespace shadelab::app {
 
 namespace {
 
-// One level's mesh, built and timed once per configuration of levels.
+// One distinct mesh of a configuration: a shape at a level, built and timed once per configuration of
+// levels, or a model (read with the scene, so nothing to build).
 struct BuiltLevel {
-    SphereMesh mesh;
+    TriangleMesh mesh;
     double buildMs = 0;
     double radialDeviation = 0, normalErrorDeg = 0;
 };
+struct MeshKey {
+    Shape shape = Shape::Sphere;
+    int level = 0;
+    const Model* model = nullptr;
+    auto operator<=>(const MeshKey&) const = default;
+};
+using BuiltMeshes = std::map<MeshKey, BuiltLevel>;
+
+MeshKey meshKey(const Scene& scene, const SceneObject& object) {
+    if (object.shape == Shape::Mesh) return {Shape::Mesh, 0, object.model.get()};
+    return {object.shape, subdivisionLevel(scene, object), nullptr};
+}
 
 // The GL objects of one run; destroyed (while the context is current) when measureReport returns.
 struct GlRun {
@@ -68,16 +84,16 @@ double compileMs(GlRun& gl, const gl::ProgramVariant& variant, gl::MeshLayout la
 }
 
 // The upload and frame times of `scene` as configured.
-void measureTime(GlRun& gl, const Scene& scene, const std::map<int, BuiltLevel>& built,
-                 const ReportOptions& o, ReportRow& row) {
+void measureTime(GlRun& gl, const Scene& scene, const BuiltMeshes& built, const ReportOptions& o,
+                 ReportRow& row) {
     const gl::MeshLayout layout = layoutOf(scene.shading);
     for (const auto& entry : built) {
-        const SphereMesh& sphere = entry.second.mesh; // a structured binding cannot be captured (C++20)
+        const TriangleMesh& built = entry.second.mesh; // a structured binding cannot be captured (C++20)
         std::optional<gl::GpuMesh> mesh;
         row.uploadMs += medianOneOffMs(
             kOneOffRepeats, [&] { mesh.reset(); },
             [&] {
-                mesh.emplace(sphere, layout);
+                mesh.emplace(built, layout);
                 gl::finish();
             });
     }
@@ -90,32 +106,50 @@ void measureTime(GlRun& gl, const Scene& scene, const std::map<int, BuiltLevel>&
     row.frameP90Ms = percentile(ms, 0.9);
 }
 
-void setGeometry(const Scene& scene, const std::map<int, BuiltLevel>& built, ReportRow& row) {
+void setGeometry(const Scene& scene, const BuiltMeshes& built, ReportRow& row) {
     for (const SceneObject& object : scene.objects) {
         const int level = subdivisionLevel(scene, object);
-        row.triangles += sphereTriangleCount(level);
+        row.triangles += triangleCount(object, level);
         row.level = std::max(row.level, level);
     }
-    for (const auto& [level, b] : built) {
-        row.vertexBytes += std::size_t(
-            meshBytes(level, scene.shading == ShadingMode::Flat ? MeshLayout::Flat : MeshLayout::Smooth));
+    for (const auto& [key, b] : built) {
+        const double vertices = double(b.mesh.positions.size()), triangles = double(b.mesh.triangles.size());
+        row.vertexBytes += std::size_t(scene.shading == ShadingMode::Flat
+                                           ? triangles * 3 * double(sizeof(FlatVertex))
+                                           : vertices * double(sizeof(SmoothVertex)) +
+                                                 triangles * 3 * double(sizeof(std::uint32_t)));
         row.maxRadialDeviation = std::max(row.maxRadialDeviation, b.radialDeviation);
         row.maxNormalErrorDeg = std::max(row.maxNormalErrorDeg, b.normalErrorDeg);
     }
 }
 
-// The distinct levels the objects of `base` use (what gets uploaded), each built and measured.
-std::map<int, BuiltLevel> buildLevels(const Scene& base) {
-    std::map<int, BuiltLevel> built;
+// The distinct meshes the objects of `base` use (what gets uploaded), each built and measured. The
+// teapot's distance from its patches is teapotMeshError's bound (DESIGN §1), relative to its bounding
+// radius as the sphere's δₙ is to its radius; a model's is none (its mesh is its surface).
+BuiltMeshes buildLevels(const Scene& base) {
+    BuiltMeshes built;
     for (const SceneObject& object : base.objects) {
-        const int level = subdivisionLevel(base, object);
-        if (built.count(level)) continue;
-        BuiltLevel& b = built[level];
-        b.buildMs = medianOneOffMs(
-            kOneOffRepeats, [&] { b.mesh = SphereMesh{}; },
-            [&] { b.mesh = buildSphere(level, base.vertexNormals); });
-        b.radialDeviation = maxRadialDeviation(b.mesh);
-        b.normalErrorDeg = maxFaceNormalErrorDeg(b.mesh);
+        const MeshKey key = meshKey(base, object);
+        if (built.count(key)) continue;
+        BuiltLevel& b = built[key];
+        if (key.shape == Shape::Sphere) {
+            SphereMesh sphere;
+            b.buildMs = medianOneOffMs(
+                kOneOffRepeats, [&] { sphere = SphereMesh{}; },
+                [&] { sphere = buildSphere(key.level, base.vertexNormals); });
+            b.radialDeviation = maxRadialDeviation(sphere);
+            b.normalErrorDeg = maxFaceNormalErrorDeg(sphere);
+            b.mesh = std::move(sphere);
+        } else if (key.shape == Shape::Teapot) {
+            TeapotMesh teapot;
+            b.buildMs = medianOneOffMs(
+                kOneOffRepeats, [&] { teapot = TeapotMesh{}; }, [&] { teapot = buildTeapot(key.level); });
+            b.radialDeviation = teapotMeshError(key.level) / teapotBoundingRadius();
+            b.normalErrorDeg = maxFaceNormalErrorDeg(teapot);
+            b.mesh = std::move(teapot);
+        } else if (key.model) {
+            b.mesh = key.model->mesh;
+        }
     }
     return built;
 }
@@ -128,9 +162,9 @@ struct ReportCaches {
 };
 
 // One configuration's row: its geometry, compile and frame times, and its error against the reference.
-void measureRow(GlRun& gl, const Scene& configured, const std::map<int, BuiltLevel>& built,
-                const ReportOptions& options, ReportCaches& caches, ReportRow& row) {
-    for (const auto& [level, b] : built) row.meshBuildMs += b.buildMs;
+void measureRow(GlRun& gl, const Scene& configured, const BuiltMeshes& built, const ReportOptions& options,
+                ReportCaches& caches, ReportRow& row) {
+    for (const auto& [key, b] : built) row.meshBuildMs += b.buildMs;
     setGeometry(configured, built, row);
     // The first object's program (with values compiled in: one per distinct material).
     gl::ProgramVariant variant =
@@ -162,6 +196,18 @@ void measureRow(GlRun& gl, const Scene& configured, const std::map<int, BuiltLev
 
 } // namespace
 
+std::vector<int> reportLevels(const Scene& scene, const ReportOptions& options) {
+    // A level above the finest of every object's shape would measure the finest again; a scene of models
+    // only has one configuration, their own meshes, and no "auto".
+    int finest = 0;
+    for (const SceneObject& object : scene.objects) finest = std::max(finest, finestLevel(object.shape));
+    std::vector<int> levels;
+    for (int level = std::min(options.minLevel, finest); level <= std::min(options.maxLevel, finest); ++level)
+        levels.push_back(level);
+    if (options.includeAuto && finest > 0) levels.push_back(kAutoSubdivisions);
+    return levels;
+}
+
 std::vector<ReportRow> measureReport(HeadlessContext& context, const Scene& scene,
                                      const ReportOptions& options, const ReportProgress& progress) {
     validateReportOptions(options);
@@ -169,9 +215,7 @@ std::vector<ReportRow> measureReport(HeadlessContext& context, const Scene& scen
     if (scene.objects.empty())
         throw InputError("report: the scene has no objects, so there is nothing to measure");
 
-    std::vector<int> levelConfigs;
-    for (int level = options.minLevel; level <= options.maxLevel; ++level) levelConfigs.push_back(level);
-    if (options.includeAuto) levelConfigs.push_back(kAutoSubdivisions);
+    const std::vector<int> levelConfigs = reportLevels(scene, options);
     const std::size_t perMode = levelConfigs.size();
     const int total = int(kLightingModels.size() * kShadingModes.size() * perMode);
     std::vector<ReportRow> rows(static_cast<std::size_t>(total));
@@ -183,8 +227,11 @@ std::vector<ReportRow> measureReport(HeadlessContext& context, const Scene& scen
     for (std::size_t c = 0; c < perMode; ++c) {
         Scene base = scene;
         base.view = View{}; // the report times and measures the shading itself, not a teaching view of it
-        for (SceneObject& object : base.objects) object.subdivisions = levelConfigs[c];
-        const std::map<int, BuiltLevel> built = buildLevels(base);
+        for (SceneObject& object : base.objects)
+            object.subdivisions = levelConfigs[c] == kAutoSubdivisions
+                                      ? kAutoSubdivisions
+                                      : std::min(levelConfigs[c], finestLevel(object.shape));
+        const BuiltMeshes built = buildLevels(base);
         for (std::size_t l = 0; l < kLightingModels.size(); ++l) {
             for (std::size_t s = 0; s < kShadingModes.size(); ++s) {
                 Scene configured = base;
