@@ -14,7 +14,9 @@
 #include "shadelab/geometry/sphere.h"
 #include "shadelab/gl/loader.h"
 #include "shadelab/gl/render_target.h"
+#include "shadelab/gl/view_figures.h"
 #include "shadelab/scene/model.h"
+#include "shadelab/scene/view.h"
 
 namespace shadelab::test {
 namespace {
@@ -187,6 +189,31 @@ TEST(TeapotDraw, ModelExactShadingWritesObjectIds) {
             if (image.rgba[i] > 0) alphas.insert(image.rgba[i]);
     });
     EXPECT_EQ(alphas, (std::set<float>{1.0f, 2.0f}));
+}
+
+// The error view measures a mode against exact shading: for the teapot, Phong at level 3 against the ray
+// cast patches (a real error, falling with the level); for a model, Phong against Phong of its own normals
+// (none: the reference of a mesh is its own interpolated normals, DESIGN §1).
+TEST(TeapotDraw, ErrorViewMeasuresTeapotsAndModels) {
+    SHADELAB_REQUIRE_GL(renderer);
+    const ViewParse parsed = parseView("error");
+    ASSERT_TRUE(parsed.view.has_value()) << parsed.error;
+    double previousMean = 1e9;
+    for (const int level : {2, 4}) {
+        Scene teapot = teapotScene(128, ShadingMode::Phong, level);
+        teapot.view = *parsed.view;
+        (void)renderer->render(teapot);
+        const gl::ViewFigures& f = renderer->viewFigures();
+        EXPECT_GT(f.interiorPixels, 2000u) << "level " << level;
+        EXPECT_TRUE(std::isfinite(f.interiorMean) && std::isfinite(f.interiorMax)) << "level " << level;
+        EXPECT_LT(f.interiorMean, previousMean) << "level " << level;
+        previousMean = f.interiorMean;
+    }
+    Scene model = modelScene(ShadingMode::Phong);
+    model.view = *parsed.view;
+    (void)renderer->render(model);
+    EXPECT_GT(renderer->viewFigures().interiorPixels, 1000u);
+    EXPECT_EQ(renderer->viewFigures().interiorMax, 0.0);
 }
 
 // The wireframe and normals overlays follow the sphere's subdivision: other shapes draw none, and no
