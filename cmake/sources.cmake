@@ -15,7 +15,7 @@ set(SHADELAB_CORE_SOURCES
   src/geometry/teapot.cpp src/geometry/teapot_data.cpp
   src/shading/lighting.cpp
   src/scene/camera.cpp src/scene/observer.cpp src/scene/auto_level.cpp src/scene/view.cpp src/scene/scene.cpp src/scene/scene_check.cpp
-  src/scene/scene_shapes.cpp
+  src/scene/scene_shapes.cpp src/scene/model.cpp src/scene/model_obj.cpp src/scene/model_gltf.cpp src/scene/model_libraries.cpp
   src/scene/scene_limits.cpp src/scene/scene_messages.cpp src/scene/scene_json.cpp src/scene/scene_parse.cpp
   src/scene/scene_write.cpp src/scene/scene_flags.cpp src/scene/lesson.cpp src/scene/slide_name.cpp
   src/exact/ray_cast.cpp src/exact/probe.cpp src/exact/patch_cast.cpp src/exact/mesh_cast.cpp

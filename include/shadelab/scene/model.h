@@ -3,7 +3,9 @@
 // surface: its reference is per-fragment lighting of its own interpolated normals.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -21,8 +23,9 @@ struct Model {
     bool normalsMade = false;         // the file had no normals
 };
 
-// The most vertices one model may have (docs/ci-engineers.md "Limits").
+// The most vertices one model may have, and the largest file read (docs/ci-engineers.md "Limits").
 inline constexpr std::size_t kMaxModelVertices = std::size_t(1) << 24;
+inline constexpr std::uintmax_t kMaxModelBytes = std::uintmax_t(1) << 30;
 
 // Reads `file` by its extension (.obj, .gltf, .glb). Throws InputError naming the file and the line (OBJ)
 // or the JSON path / accessor (glTF), what is wrong and the fix: out-of-range indices, NaN or Inf, zero-area
@@ -41,5 +44,8 @@ std::shared_ptr<const Model> parseModel(std::string_view bytes, std::string_view
 // name it, and gives an object without a "material" of its own the file's material. Throws InputError naming
 // the object ("objects[2].mesh: ...").
 void loadSceneModels(Scene& scene, const std::filesystem::path& sceneFolder);
+// The same, with the models already read kept in `cache` (by path) for the next scene: a lesson's steps.
+using ModelCache = std::map<std::string, std::shared_ptr<const Model>>;
+void loadSceneModels(Scene& scene, const std::filesystem::path& sceneFolder, ModelCache& cache);
 
 } // namespace shadelab
