@@ -19,6 +19,8 @@ program_packages=(
   # libraries, all found by find_package / pkg-config
   libglfw3-dev libglm-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libosmesa6-dev libpng-dev
   nlohmann-json3-dev libcli11-dev libbenchmark-dev python3-glad libimgui-dev libstb-dev fonts-dejavu-core
+  # the model readers (OBJ/MTL, glTF); their headers are also what the page compiles
+  libtinyobjloader-dev libtinygltf-dev
   # `shadelab report`'s plot
   gnuplot-nox
 )

@@ -16,7 +16,7 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 
 install_missing() {
   local packages=(emscripten chromium chromium-driver python3-selenium python3-glad libglm-dev
-    nlohmann-json3-dev cmake make)
+    nlohmann-json3-dev libtinyobjloader-dev libtinygltf-dev cmake make)
   local missing=()
   for p in "${packages[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
