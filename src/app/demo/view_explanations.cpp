@@ -14,7 +14,7 @@ constexpr std::array kViews = {
                     "camera space (β = M_cam·α), projected by M_proj to the window",
                     "I = k_a I_a + Σ att·(k_d I_d max(l·n, 0) + k_s I_s spec) per pixel"},
     ViewExplanation{"error", "|shaded − exact| per pixel as a heatmap, with its interior mean and max",
-                    "window pixels, the mesh's picture against the ray-cast sphere's",
+                    "window pixels, the mesh's picture against the ray-cast surface's",
                     "error = |I_mode − I_exact| on 0..255, the silhouette eroded by 2 px"},
     ViewExplanation{
         "split",
@@ -24,7 +24,7 @@ constexpr std::array kViews = {
     ViewExplanation{"profile",
                     "the intensity along one row: the mode's, the exact one, and mesh-edge crossings",
                     "one window row, x from left to right",
-                    "I(x) of the mode and of the exact sphere; a kink where an edge crosses"},
+                    "I(x) of the mode and of the exact surface; a kink where an edge crosses"},
     ViewExplanation{
         "outside", "the camera itself from an observer: the eye e, u, v, w, the view volume, lights",
         "world space (α), seen by a second camera", "M_cam = [u v w e]⁻¹, the volume [l,r]×[b,t]×[f,n]"},
@@ -42,9 +42,12 @@ constexpr std::array kShadings = {
                     "camera space per pixel, n = (M⁻¹)ᵀ·n_object", "n(p) = normalize(Σ λᵢ nᵢ), then I(n(p))"},
     ViewExplanation{"toon", "the diffuse term quantized into bands, the highlight cut at a threshold",
                     "camera space per pixel", "bands of max(l·n, 0); spec on or off"},
-    ViewExplanation{"exact", "the true sphere ray-cast per pixel: the reference",
-                    "camera space per pixel, the exact normal",
-                    "n = (M⁻¹)ᵀ·p_object at the ray's hit, then I(n)"},
+    ViewExplanation{
+        "exact",
+        "the true surface ray-cast per pixel (a sphere, the teapot's patches; a model: its own mesh): the "
+        "reference",
+        "camera space per pixel, the exact normal",
+        "n = (M⁻¹)ᵀ·n_object at the ray's hit (the sphere's n_object = p_object), then I(n)"},
 };
 
 // The row named `name` (every view and shading mode has one: view_explanations_test.cpp checks it).

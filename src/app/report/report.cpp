@@ -102,7 +102,7 @@ constexpr std::array<const char*, 4> kReportFiles{"report.csv", "report.json", "
 
 int runReport(const ReportOptions& options) {
     validateReportOptions(options);
-    const Scene scene = options.scene ? loadScene(*options.scene) : bundledScene("report.json");
+    const Scene scene = options.scene ? loadSceneWithModels(*options.scene) : bundledScene("report.json");
     ReportInfo info;
     info.sceneName = options.scene ? printable(options.scene->string()) : "scenes/report.json (bundled)";
     // Measured: about 220 bytes per pixel (float targets, the reference and its normals, error and SSIM

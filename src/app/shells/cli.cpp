@@ -119,8 +119,9 @@ struct ReferenceCommand {
     ReferenceArgs args;
     bool specialize = true; // accepted, no effect
     CLI::App* add(CLI::App& cli) {
-        CLI::App* reference =
-            cli.add_subcommand("reference", "Ray-cast the exact spheres on the CPU to a PNG");
+        CLI::App* reference = cli.add_subcommand(
+            "reference",
+            "Ray-cast the exact surfaces (spheres, teapot patches; a model's own mesh) on the CPU to a PNG");
         reference->add_option("scene", args.scene, "Scene file (JSON)");
         addSceneFlags(*reference, args.overrides);
         reference->add_option("--out", args.out, "Output PNG, or - for standard output")->required();
@@ -253,10 +254,12 @@ template <class Command> ParsedCommand headless(const Command& command) {
 } // namespace
 
 ParsedCommand parseCommandLine(int argc, char** argv) {
-    CLI::App cli{"shadelab: flat, Gouraud, Phong and toon shading under Phong and Blinn-Phong lighting, on a "
-                 "sphere subdivided from a tetrahedron.\nWithout a subcommand: the demo window (or, with no "
-                 "display, the showcase PNG).",
-                 "shadelab"};
+    CLI::App cli{
+        "shadelab: flat, Gouraud, Phong and toon shading under Phong and Blinn-Phong lighting, on a "
+        "sphere subdivided from a tetrahedron, Newell's teapot or a model file (mesh paths relative to the "
+        "scene file).\nWithout a subcommand: the demo window (or, with no "
+        "display, the showcase PNG).",
+        "shadelab"};
     cli.set_help_all_flag("--help-all", "Help for every subcommand");
     DemoCommand demo;
     demo.add(cli);

@@ -6,6 +6,7 @@
 
 #include "app/demo/demo_draw.h"
 #include "app/demo/presentation_images.h"
+#include "app/measure/bundled_scenes.h"
 #include "app/measure/memory_budget.h"
 #include "app/shells/commands.h"
 #include "app/shells/deck.h"
@@ -83,7 +84,7 @@ std::vector<std::string> glyphWarnings(const LessonStep& step, std::size_t index
 
 int runCheck(const fs::path& file) {
     const std::string shown = printable(file.string());
-    const std::variant<Scene, Lesson> read = loadSceneOrLesson(file);
+    const std::variant<Scene, Lesson> read = loadSceneOrLessonWithModels(file);
     if (const Scene* scene = std::get_if<Scene>(&read)) {
         try {
             checkDrawable(*scene);
@@ -118,7 +119,7 @@ namespace {
 
 // The lesson `slides` exports; a scene is refused with what takes it.
 Lesson slidesLesson(const fs::path& file) {
-    std::variant<Scene, Lesson> read = loadSceneOrLesson(file);
+    std::variant<Scene, Lesson> read = loadSceneOrLessonWithModels(file);
     if (std::holds_alternative<Scene>(read))
         throw InputError(printable(file.string()) +
                          ": a scene, not a lesson (it has no \"steps\"): `shadelab slides` exports a "

@@ -14,6 +14,7 @@
 
 #include "app/bench/bench.h"
 #include "app/demo/matrices_text.h"
+#include "app/measure/bundled_scenes.h"
 #include "app/report/report.h"
 #include "app/shells/cli.h"
 #include "app/shells/commands.h"
@@ -76,7 +77,7 @@ int run(const app::RenderArgs& render) {
         if (render.printMatrices)
             refuseStandardOutputAlias(render.out, "--out", "the matrices of --print-matrices");
     }
-    const Scene scene = composeScene(render.scene, render.overrides);
+    const Scene scene = app::composeSceneWithModels(render.scene, render.overrides);
     warnAbout(scene, render.scene);
     if (render.printMatrices) {
         printMatrices(scene);
@@ -89,7 +90,7 @@ int run(const app::ReferenceArgs& reference) {
     (void)app::contextFromArguments(reference.context.backend, reference.context.api, ""); // as render would
     app::checkOutputPath(reference.out);
     refuseOverwritingInput(reference.out, "--out", reference.scene);
-    const Scene scene = composeScene(reference.scene, reference.overrides);
+    const Scene scene = app::composeSceneWithModels(reference.scene, reference.overrides);
     warnAbout(scene, reference.scene);
     return app::runReference(scene, reference.out);
 }
@@ -162,7 +163,8 @@ int run(const app::DemoArgs& args) {
     refuseOverwritingInput(args.demo.showcaseOut, "--showcase-out", args.scene);
     app::DemoOptions demo = args.demo;
     Scene scene;
-    std::variant<Scene, Lesson> read = args.scene.empty() ? Scene{} : loadSceneOrLesson(args.scene);
+    std::variant<Scene, Lesson> read =
+        args.scene.empty() ? Scene{} : app::loadSceneOrLessonWithModels(args.scene);
     if (Lesson* readLesson = std::get_if<Lesson>(&read)) {
         // A lesson: the scene flags apply to every step, as they would to each step's scene file.
         Lesson lesson = std::move(*readLesson);

@@ -234,7 +234,7 @@ void lectureSwitches(Controls& controls) {
     }
 }
 
-// The material and scale of the chosen object (a probe click picks one), or of all of them when "all
+// The shape, material and scale of the chosen object (a probe click picks one), or of all of them when "all
 // objects" (0) is chosen. An uneven scale makes an ellipsoid, where normals by M (J) go wrong.
 void materialSection(Controls& controls) {
     const DemoState& state = controls.state;
@@ -246,12 +246,24 @@ void materialSection(Controls& controls) {
             controls.set("object", std::to_string(chosen));
     }
     const SceneObject& shown = state.scene().objects[*state.shownObject()];
+    if (shown.shape == Shape::Mesh) {
+        ImGui::TextWrapped("shape: mesh %s", shown.mesh.c_str()); // a file's, not switched by D
+    } else {
+        ImGui::AlignTextToFramePadding();
+        ImGui::TextUnformatted("shape (D):");
+        for (const Shape shape : kShapes) {
+            const std::string name(toString(shape));
+            if (radio(name.c_str(), shown.shape == shape) && shown.shape != shape)
+                controls.set("shape", name);
+        }
+    }
     materialControls(controls, shown.material);
     glm::vec3 scale(shown.scale);
     if (ImGui::DragFloat3("scale x y z", &scale.x, 0.01f, 0.1f, 4.0f, "%.2f"))
         controls.set("scale", valueText(glm::dvec3(scale)));
     controls.showRefusal("material.");
     controls.showRefusal("scale");
+    controls.showRefusal("shape");
 }
 
 } // namespace
