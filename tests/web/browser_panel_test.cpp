@@ -612,6 +612,7 @@ TEST_F(Browser, EveryMenuHoldsItsCppTablesValues) {
         {"normals", spellings(kVertexNormals)},
         {"overlay", spellings(kOverlays)},
         {"view-kind", views},
+        {"shape", spellings(kShapes)},
     };
     std::map<std::string, json> shown;
     for (const json& menu : session.answer(menus).at("menus")) shown[menu.at("id")] = menu;

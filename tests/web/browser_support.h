@@ -99,6 +99,10 @@ public:
         return add({{"op", "load-file"}, {"path", path.string()}, {"name", name}});
     }
     std::size_t key(int code) { return add({{"op", "key"}, {"code", code}}); }
+    // Model files dropped on the canvas or picked with the model input (driver.py Page.model_files);
+    // answers the page's message once it has loaded them.
+    std::size_t dropFiles(const std::vector<fs::path>& paths) { return addFiles("drop-files", paths); }
+    std::size_t pickFiles(const std::vector<fs::path>& paths) { return addFiles("pick-files", paths); }
     std::size_t ui() { return add({{"op", "ui"}}); }
     // Real mouse input at (x, y) CSS pixels from the canvas's centre.
     std::size_t click(int x = 0, int y = 0) {
@@ -177,6 +181,11 @@ public:
     ImageF imageF(std::size_t i) const;
 
 private:
+    std::size_t addFiles(const char* op, const std::vector<fs::path>& paths) {
+        json list = json::array();
+        for (const fs::path& p : paths) list.push_back(p.string());
+        return add({{"op", op}, {"paths", list}});
+    }
     std::size_t add(json request) {
         requests_.push_back(std::move(request));
         return requests_.size() - 1;
