@@ -42,6 +42,7 @@ std::string modes(const Scene& scene) {
 std::string geometry(const DemoState& state, const Scene& drawn, bool sphereNamed = false) {
     const std::string shape =
         sphereNamed || state.shape() != Shape::Sphere ? std::string(toString(state.shape())) + ", " : "";
+    if (state.shape() == Shape::Mesh) return shape + "its file's triangles, no levels";
     if (drawn.shading == ShadingMode::Exact) return shape + "ray-cast per pixel, no mesh";
     return shape + "level " + std::to_string(state.level()) + (state.autoLevel() ? " (auto)" : "");
 }

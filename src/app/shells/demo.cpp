@@ -25,9 +25,25 @@
 #include "shadelab/gl/renderer.h"
 #include "shadelab/io/numbered_files.h"
 #include "shadelab/io/text.h"
+#include "shadelab/scene/model.h"
 
 namespace shadelab::app {
 namespace {
+
+// The scene as saved beside a screenshot in `folder`: each model's path made relative to that folder (a
+// scene's mesh paths are relative to its own file, DESIGN §4), so the saved JSON renders where it lies.
+Scene savedBeside(Scene scene, const std::filesystem::path& folder) {
+    std::error_code error;
+    const std::filesystem::path base = std::filesystem::absolute(folder, error).lexically_normal();
+    for (SceneObject& object : scene.objects) {
+        if (object.shape != Shape::Mesh || !object.model || error) continue;
+        const std::filesystem::path model =
+            std::filesystem::absolute(object.model->path, error).lexically_normal();
+        const std::filesystem::path relative = model.lexically_relative(base);
+        if (!error && !relative.empty()) object.mesh = relative.generic_string();
+    }
+    return scene;
+}
 
 using Clock = std::chrono::steady_clock;
 
@@ -256,7 +272,8 @@ private:
             // The scene first, the picture last: a reader that sees the PNG finds its scene beside it.
             const std::string stem =
                 writeNumberedFiles(options_.screenshotDir, "shadelab-", screenshots_,
-                                   {{".json", sceneToJson(scene)}, {".png", encodePng(image)}});
+                                   {{".json", sceneToJson(savedBeside(scene, options_.screenshotDir))},
+                                    {".png", encodePng(image)}});
             std::printf("%s.png\n", stem.c_str());
             std::fflush(stdout);
         } catch (const std::bad_alloc&) {
