@@ -33,7 +33,9 @@ const std::vector<SceneFlag>& sceneFlags() {
     static const std::vector<SceneFlag> kFlags = {
         {"shading", &SceneOverrides::shading,
          "Shading mode: " + joinNames(kAllShadingModes) +
-             " (exact: each sphere ray-cast per pixel, the analytic reference; overrides the scene)"},
+             " (exact: each sphere and teapot ray-cast per pixel, the analytic reference; a model: Phong of "
+             "its "
+             "own normals; overrides the scene)"},
         {"lighting", &SceneOverrides::lighting,
          "Lighting model: " + joinNames(kLightingModels) + " (overrides the scene)"},
         {"term", &SceneOverrides::term,
