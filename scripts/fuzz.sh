@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets of fuzz/ with clang and runs each for a fixed budget, all three at once on the
-# two cores (60 s: the 2 CPU-minutes two fuzzers took, now 40 CPU-seconds each), printing how many inputs each
+# Builds the libFuzzer targets of fuzz/ with clang and runs each for a fixed budget, all four at once on the
+# two cores (60 s: the 2 CPU-minutes two fuzzers took, now 30 CPU-seconds each), printing how many inputs each
 # executed. Exits non-zero if any found a crash, a leak, a timeout or a sanitizer report, after printing the
 # report and the file that reproduces it.
 #   scripts/fuzz.sh [seconds per fuzzer]      (default 60; SHADELAB_FUZZ_SECONDS also sets it)
@@ -39,10 +39,12 @@ run_fuzzer cli "" "-max_len=4096 -len_control=0" &
 pids+=($!)
 run_fuzzer lesson "lessons" "" &
 pids+=($!)
+run_fuzzer model "" "" &
+pids+=($!)
 
 status=0
-names=(scene cli lesson)
-for i in 0 1 2; do
+names=(scene cli lesson model)
+for i in "${!names[@]}"; do
   name=${names[$i]}
   if wait "${pids[$i]}"; then
     runs=$(sed -n 's/^stat::number_of_executed_units: //p' "$work/$name.log")
