@@ -5,6 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include "shadelab/geometry/sphere.h"
+
+#include "shadelab/scene/model.h"
+
 #include "app/demo/scene_setters.h"
 #include "demo_test_support.h"
 #include "shadelab/geometry/teapot.h"
@@ -86,6 +90,28 @@ TEST(DemoShape, TheShapeSetterSetsAndReadsTheShapeAndRefusesAMesh) {
     EXPECT_EQ(state.scene().objects[2].shape, Shape::Teapot) << "a refused value changes nothing";
     EXPECT_EQ(setValue(state, "shape", "sphere"), "");
     EXPECT_EQ(state.scene().objects[2].shape, Shape::Sphere);
+}
+
+// A model (dropped on the page, or a scene's) becomes the sphere or the teapot on D or the shape menu,
+// keeping the material it drew with; nothing of the file is left on it.
+TEST(DemoShape, AMeshObjectTakesTheShapeAndKeepsItsMaterial) {
+    Scene scene;
+    auto model = std::make_shared<Model>();
+    model->mesh = buildSphere(1, VertexNormals::Exact);
+    scene.objects[0].shape = Shape::Mesh;
+    scene.objects[0].mesh = "cube.obj";
+    scene.objects[0].model = model;
+    scene.objects[0].materialGiven = false;
+    scene.objects[0].material.diffuse = {0.9, 0.1, 0.1};
+    DemoState state(scene);
+    EXPECT_EQ(setValue(state, "shape", "teapot"), "");
+    const SceneObject& o = state.scene().objects[0];
+    EXPECT_EQ(o.shape, Shape::Teapot);
+    EXPECT_TRUE(o.mesh.empty());
+    EXPECT_EQ(o.model, nullptr);
+    EXPECT_TRUE(o.materialGiven); // written back with the scene, as drawn
+    EXPECT_EQ(o.material.diffuse, glm::dvec3(0.9, 0.1, 0.1));
+    EXPECT_NO_THROW(validateScene(state.scene()));
 }
 
 TEST(DemoShape, HelpNamesTheShapeKey) {

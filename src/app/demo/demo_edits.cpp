@@ -63,7 +63,13 @@ void DemoState::setShape(Shape shape) {
     Scene edited = scene_;
     for (std::size_t i = 0; i < edited.objects.size(); ++i) {
         SceneObject& o = edited.objects[i];
-        if (o.shape == Shape::Mesh || (editedObject_ != kAllObjects && i != *shown)) continue;
+        if (editedObject_ != kAllObjects && i != *shown) continue;
+        if (o.shape == Shape::Mesh) { // a dropped or scene model becomes the shape, keeping its material
+            o.mesh.clear();
+            o.model.reset();
+            o.closed = false;
+            o.materialGiven = true;
+        }
         o.shape = shape;
         if (o.subdivisions != kAutoSubdivisions)
             o.subdivisions = std::min(o.subdivisions, finestLevel(shape));
