@@ -187,6 +187,21 @@ std::vector<RatioSpec> registerModes(Gpu& gpu, const std::shared_ptr<Limits>& li
     Scene phong8 = sized(Scene{}, o, 8);
     registerFrame(gpu, "frame/modes/phong-level8",
                   [&gpu, phong8] { gpu.renderer.render(phong8, phong8.width, phong8.height); });
+    // The teapot (DESIGN §1): its patches ray-cast from a proxy mesh against its level-6 mesh, framed as
+    // scenes/teapot.json frames it.
+    Scene teapotPhong = oneLight;
+    teapotPhong.objects[0].shape = Shape::Teapot;
+    teapotPhong.eye = {1.0, 2.0, 4.7};
+    teapotPhong.target = {0.15, -0.1, 0};
+    Scene teapotExact = teapotPhong;
+    teapotExact.shading = ShadingMode::Exact;
+    registerFrame(gpu, "frame/teapot/phong-level6", [&gpu, teapotPhong] {
+        gpu.renderer.render(teapotPhong, teapotPhong.width, teapotPhong.height);
+    });
+    registerFrame(gpu, "frame/teapot/exact", [&gpu, teapotExact] {
+        gpu.renderer.render(teapotExact, teapotExact.width, teapotExact.height);
+    });
+    ratios.push_back({"teapot: exact / phong L6", "frame/teapot/exact", "frame/teapot/phong-level6"});
     ratios.push_back({"exact / phong L6", "frame/modes/exact", "frame/modes/phong"});
     ratios.push_back({"exact / phong L8", "frame/modes/exact", "frame/modes/phong-level8"});
     ratios.push_back({"full-screen fill / clear", "frame/limits/fill", "frame/limits/clear"});
