@@ -104,8 +104,8 @@ nlohmann::json panelJson() {
         {"editedObjectName", s.editedObjectName()},
         {"shownObject", shown ? nlohmann::json(*shown) : nlohmann::json(nullptr)}, // whose material shows
         // Its shape, and for a mesh object the model file as the scene names it (the shape menu's row).
-        {"shownShape",
-         shown ? nlohmann::json(std::string(toString(scene.objects[*shown].shape))) : nlohmann::json(nullptr)},
+        {"shownShape", shown ? nlohmann::json(std::string(toString(scene.objects[*shown].shape)))
+                             : nlohmann::json(nullptr)},
         {"shownMesh", shown ? nlohmann::json(scene.objects[*shown].mesh) : nlohmann::json(nullptr)},
         {"lesson", lessonJson(s)},
     };
