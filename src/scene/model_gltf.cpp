@@ -8,6 +8,7 @@
 #define TINYGLTF_NO_EXTERNAL_IMAGE
 #include <tiny_gltf.h>
 
+#include <algorithm>
 #include <cstring>
 
 #include <glm/gtc/quaternion.hpp>
@@ -97,6 +98,12 @@ private:
         const std::string path = "nodes[" + std::to_string(node) + "]";
         if (node < 0 || node >= int(gltf_.nodes.size())) fail(path, "no such node");
         if (depth > 64) fail(path, "nodes nested more than 64 deep (a cycle?)");
+        // glTF's nodes form trees (a node has one parent at most): a node reached twice would be read again
+        // each time, 2^depth times for a chain of nodes each naming the next twice.
+        if (visited_.empty()) visited_.assign(gltf_.nodes.size(), false);
+        if (visited_[std::size_t(node)])
+            fail(path, "is reached twice (two parents, or twice in the scene): glTF's nodes form trees");
+        visited_[std::size_t(node)] = true;
         const tinygltf::Node& n = gltf_.nodes[std::size_t(node)];
         const glm::dmat4 world = parent * localMatrix(n);
         if (n.mesh >= 0) addMesh(n.mesh, world);
@@ -136,6 +143,10 @@ private:
         if (view.byteOffset > buffer.size() || view.byteLength > buffer.size() - view.byteOffset)
             fail("bufferViews[" + std::to_string(a.bufferView) + "]",
                  "reaches past its buffer (" + std::to_string(buffer.size()) + " bytes)");
+        // Checked alone first: a byteOffset near 2^64 would wrap need() around to a small number.
+        if (a.byteOffset > view.byteLength)
+            fail(at, "byteOffset " + std::to_string(a.byteOffset) + " is past its buffer view (" +
+                         std::to_string(view.byteLength) + " bytes)");
         if (count > view.byteLength || need(count) > view.byteLength)
             fail(at, "count " + std::to_string(count) + " reaches past its buffer view (" +
                          std::to_string(view.byteLength) + " bytes)");
@@ -182,6 +193,12 @@ private:
             const std::vector<double> positions =
                 elements(position->second, path + ".attributes.POSITION", TINYGLTF_TYPE_VEC3, false);
             const std::size_t first = raw_.positions.size(), count = positions.size() / 3;
+            // Checked as the vertices are added (finishModel checks the sum too late): primitives or nodes
+            // naming one accessor many times would otherwise grow the arrays without bound.
+            if (count > kMaxModelVertices - std::min(first, kMaxModelVertices))
+                fail(path,
+                     "more than " + std::to_string(kMaxModelVertices) +
+                         " vertices in all; at most that many are allowed: decimate or split the model");
             for (std::size_t v = 0; v < count; ++v)
                 raw_.positions.push_back(
                     glm::dvec3(worldFromMesh *
@@ -233,7 +250,8 @@ private:
     const tinygltf::Model& gltf_;
     std::string_view name_;
     RawMesh raw_;
-    bool hasNormals_ = true; // every primitive so far has NORMAL
+    bool hasNormals_ = true;    // every primitive so far has NORMAL
+    std::vector<bool> visited_; // per node: read already
 };
 
 } // namespace

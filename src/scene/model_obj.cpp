@@ -33,6 +33,15 @@ std::vector<std::string_view> words(std::string_view line) {
     return out;
 }
 
+// The line starting at `at`, and `at` moved past its end. Lines end as tinyobjloader's safeGetline ends
+// them: "\n", "\r\n" or a lone "\r" (old Mac files), so that the check and the library read the same lines.
+std::string_view nextLine(std::string_view text, std::size_t& at) {
+    const std::size_t end = std::min(text.find_first_of("\r\n", at), text.size());
+    const std::string_view line = text.substr(at, end - at);
+    at = end + (end + 1 < text.size() && text[end] == '\r' && text[end + 1] == '\n' ? 2 : 1);
+    return line;
+}
+
 // The first pass: per line, "v"/"vn" numbers finite, "f" indices non-zero and in range (a negative index
 // counts back from the vertices read so far), mtllib names inside the model's folder.
 class ObjChecker {
@@ -43,18 +52,12 @@ public:
     void check(std::string_view text) {
         // Positive indices may name a vertex given later in the file: count them all first.
         for (std::size_t at = 0; at <= text.size();) {
-            const std::size_t end = std::min(text.find('\n', at), text.size());
-            const std::vector<std::string_view> w = words(text.substr(at, end - at));
+            const std::vector<std::string_view> w = words(nextLine(text, at));
             if (!w.empty() && w[0] == "v") ++totalPositions_;
             if (!w.empty() && w[0] == "vn") ++totalNormals_;
-            at = end + 1;
         }
         std::size_t line = 1;
-        for (std::size_t at = 0; at <= text.size(); ++line) {
-            const std::size_t end = std::min(text.find('\n', at), text.size());
-            checkLine(words(text.substr(at, end - at)), line);
-            at = end + 1;
-        }
+        for (std::size_t at = 0; at <= text.size(); ++line) checkLine(words(nextLine(text, at)), line);
     }
     // MTL text by name, read while checking, for the library's material reader.
     std::map<std::string, std::string> materials;
@@ -109,8 +112,13 @@ private:
                 const std::size_t slash = corner.find('/');
                 checkIndex(corner.substr(0, slash), line, positions_, totalPositions_, "vertex", "vertices");
                 if (slash == std::string_view::npos) continue;
+                // tinyobjloader reads the number after a '/' with atoi, which skips blanks: an empty index
+                // at a corner's end ("1//", "1/2/", "1/") would be read from the next corner.
+                if (corner.back() == '/')
+                    fail(line, "the corner " + quotedValue(corner) +
+                                   " ends with '/': give the index after it, or leave the '/' out");
                 const std::size_t second = corner.find('/', slash + 1);
-                if (second != std::string_view::npos && second + 1 < corner.size())
+                if (second != std::string_view::npos)
                     checkIndex(corner.substr(second + 1), line, normals_, totalNormals_, "normal", "normals");
             }
         } else if (w[0] == "mtllib") {

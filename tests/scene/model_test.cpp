@@ -245,6 +245,10 @@ TEST(Model, BadObjIsRefusedWithTheFileAndTheLine) {
         {"mtllib missing.mtl\n" + cube + "f 1 2 3\n", {"bad.obj: line 1:", "cannot read \"missing.mtl\""}},
         {cube + "vn 0 0 0\nf 1//1 2//1 3//1\n", {"bad.obj:", "a vertex normal is zero"}},
         {cube + "vn 0 0 1\nf 1//1 2//1 3//2\n", {"bad.obj: line 5:", "normal index 2 is out of range"}},
+        // Found by the model fuzzer: tinyobjloader reads an empty index after '/' from the next corner, and
+        // ends a line at a lone CR, where a check that split at LF alone saw one line.
+        {cube + "vn 0 0 1\nf 1// 2// 3//1\n", {"bad.obj: line 5:", "ends with '/'"}},
+        {"v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 9\r", {"bad.obj: line 4:", "vertex index 9 is out of range"}},
     };
     for (const Case& c : cases) {
         const std::string message = refusal(c.text, "bad.obj");
@@ -276,6 +280,14 @@ TEST(Model, BadGltfIsRefusedWithItsJsonPath) {
         {sphereGltf(sphere, "missing.bin").json, {"bad.gltf: buffers:", "cannot read \"missing.bin\""}},
         {"{\"asset\": {\"version\": \"2.0\"}}", {"bad.gltf:", "no triangles"}},
         {"not json", {"bad.gltf:", ""}},
+        // Found by reading the reader: an offset near 2^64 wrapped the bounds' sum to a small number.
+        {with("\"bufferView\": 2, \"componentType\": 5125",
+              "\"bufferView\": 2, \"byteOffset\": 18446744073709551604, \"componentType\": 5125"),
+         {"bad.gltf: accessors[2]:", "byteOffset 18446744073709551604 is past its buffer view"}},
+        // A node reached twice (each of a chain naming the next twice is 2^depth visits).
+        {with("\"nodes\": [{\"mesh\": 0}]",
+              "\"nodes\": [{\"mesh\": 0, \"children\": [1, 1]}, {\"mesh\": 0}]"),
+         {"bad.gltf: nodes[1]:", "is reached twice"}},
     };
     for (const Case& c : cases) {
         const std::string message = refusal(c.json, "bad.gltf");
