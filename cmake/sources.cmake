@@ -20,6 +20,7 @@ set(SHADELAB_CORE_SOURCES
   src/scene/scene_write.cpp src/scene/scene_flags.cpp src/scene/lesson.cpp src/scene/slide_name.cpp
   src/exact/ray_cast.cpp src/exact/probe.cpp src/exact/patch_cast.cpp src/exact/mesh_cast.cpp
   src/diagram/overlay.cpp src/diagram/outside_view.cpp src/diagram/point_stages.cpp
+  src/diagram/mesh_overlay.cpp
   src/context/names.cpp)
 # What only the native program needs: PNG files (libpng; the page hands the browser its pixels) and the
 # analytic reference image (threads; the page checks against the native build instead).
