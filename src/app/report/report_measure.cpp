@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <tuple>
 #include <utility>
 
 #include "app/measure/frame_timing.h"
@@ -40,7 +41,10 @@ struct MeshKey {
     Shape shape = Shape::Sphere;
     int level = 0;
     const Model* model = nullptr;
-    auto operator<=>(const MeshKey&) const = default;
+    // Spelled out: clang-tidy 14 reads a defaulted operator<=> as a literal 0 (modernize-use-nullptr).
+    bool operator<(const MeshKey& other) const {
+        return std::tie(shape, level, model) < std::tie(other.shape, other.level, other.model);
+    }
 };
 using BuiltMeshes = std::map<MeshKey, BuiltLevel>;
 
