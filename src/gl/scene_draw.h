@@ -137,9 +137,16 @@ private:
     std::map<std::tuple<Shape, const Model*, int, VertexNormals, MeshLayout>, CachedMesh> meshes_;
     Buffer teapotPatches_{NoCreate}; // the control points' uniform block (made at first use)
     std::unique_ptr<LineProgram> lineProgram_;
-    // By level, normals, overlay and, for the normals, the object's scale and the normal-matrix rule.
-    using OverlayKey = std::tuple<int, VertexNormals, Overlay, std::array<double, 3>, NormalMatrixRule>;
-    std::map<OverlayKey, std::unique_ptr<GpuLines>> overlays_;
+    // The overlay's lines of an object (diagram/overlay.h, diagram/mesh_overlay.h), by shape, model (null
+    // but for a model), level (0 for a model), the sphere's normals, overlay and, for the normals, the
+    // object's scale and the normal-matrix rule.
+    using OverlayKey =
+        std::tuple<Shape, const Model*, int, VertexNormals, Overlay, std::array<double, 3>, NormalMatrixRule>;
+    struct CachedLines {
+        std::shared_ptr<const Model> model; // a model's: held, so its address is not reused under the key
+        std::unique_ptr<GpuLines> lines;
+    };
+    std::map<OverlayKey, CachedLines> overlays_;
     std::unique_ptr<GpuLines> streamedLines_, streamedTriangles_;
     VertexArray emptyVertexArray_{NoCreate}; // exact shading's proxies have no attributes (made at first use)
     std::vector<DrawPlan> plans_;            // drawPlan's, the latest first

@@ -8,6 +8,7 @@
 
 #include <glad/gl.h>
 
+#include "shadelab/diagram/mesh_overlay.h"
 #include "shadelab/diagram/outside_view.h"
 #include "shadelab/diagram/overlay.h"
 #include "shadelab/errors.h"
@@ -32,7 +33,7 @@ const SceneDraw::LineProgram& SceneDraw::lineProgram() {
 
 namespace {
 
-// The overlays kept on the GPU: a scene's objects and a few scales or levels tried in the panel.
+// The overlays kept on the GPU: a scene's objects and a few scales, levels or shapes tried in the panel.
 constexpr std::size_t kMaxCachedOverlays = 64;
 
 } // namespace
@@ -41,25 +42,36 @@ void SceneDraw::drawOverlay(const Scene& sized, const SceneView& view, const Dra
     const LineProgram& lines = lineProgram();
     glUseProgram(lines.program.get());
     for (const SceneObject& object : sized.objects) {
-        // The overlay's lines follow the sphere's subdivision (diagram/overlay.h); the teapot and models have
-        // none yet.
-        if (object.shape != Shape::Sphere) continue;
-        const int level = subdivisionLevel(sized, object);
+        const int level = subdivisionLevel(sized, object); // 0 for a model
         const glm::dmat4 world = worldFromObject(object);
-        // The edges alone are the same lines for every object; the normals follow its M and the rule.
+        // The edges alone are the same lines for every object of a shape; the normals follow its M and the
+        // rule.
         const bool normals = sized.overlay == Overlay::Normals;
         const std::array<double, 3> scale =
             normals ? std::array{world[0][0], world[1][1], world[2][2]} : std::array{1.0, 1.0, 1.0};
         const NormalMatrixRule rule = normals ? sized.normalMatrix : NormalMatrixRule::InverseTranspose;
+        const Model* model = object.shape == Shape::Mesh ? object.model.get() : nullptr;
+        if (object.shape == Shape::Mesh && !model) continue; // SceneDraw::mesh refused to draw it already
+        // Only the sphere's lines depend on its vertex normals.
+        const VertexNormals vertexNormals =
+            object.shape == Shape::Sphere ? sized.vertexNormals : VertexNormals::Averaged;
         if (overlays_.size() > kMaxCachedOverlays) overlays_.clear(); // a scale edited again and again
-        auto& edges = overlays_[{level, sized.vertexNormals, sized.overlay, scale, rule}];
-        if (!edges)
-            edges = std::make_unique<GpuLines>(overlayLines(buildSphere(level, sized.vertexNormals),
-                                                            sized.overlay, glm::dmat3(world), rule));
+        CachedLines& cached =
+            overlays_[{object.shape, model, level, vertexNormals, sized.overlay, scale, rule}];
+        if (!cached.lines) {
+            const glm::dmat3 m(world);
+            cached.model = object.shape == Shape::Mesh ? object.model : nullptr;
+            cached.lines = std::make_unique<GpuLines>(
+                object.shape == Shape::Sphere
+                    ? overlayLines(buildSphere(level, vertexNormals), sized.overlay, m, rule)
+                : object.shape == Shape::Teapot
+                    ? teapotOverlayLines(buildTeapot(level), sized.overlay, m, rule)
+                    : modelOverlayLines(model->mesh, sized.overlay, m, rule));
+        }
         const glm::mat4 clipFromObject(options.observerClipFromNdc.value_or(glm::dmat4(1)) *
-                                       view.clipFromView * view.viewFromWorld * worldFromObject(object));
+                                       view.clipFromView * view.viewFromWorld * world);
         glUniformMatrix4fv(lines.clipFromSpace, 1, GL_FALSE, glm::value_ptr(clipFromObject));
-        edges->draw();
+        cached.lines->draw();
     }
     glUseProgram(0);
 }
