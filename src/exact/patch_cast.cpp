@@ -205,7 +205,8 @@ struct Search {
                 int depthLeft) {
         if (depthLeft == 0) {
             for (int k = 0; k < 4; ++k)
-                if (solveFrom(patch, u0 + size * (k / 2), v0 + size * (k % 2), u0, v0, size)) return;
+                if (solveFrom(patch, u0 + size * double(k >> 1), v0 + size * double(k & 1), u0, v0, size))
+                    return;
             return;
         }
         const std::array<TeapotPatch, 4> q = quarters(net);
@@ -221,7 +222,7 @@ struct Search {
         for (int i = 0; i < n; ++i) {
             const auto [entry, k] = order[std::size_t(i)];
             if (entry > hit.t) break;
-            solveRegion(patch, q[std::size_t(k)], u0 + half * (k / 2), v0 + half * (k % 2), half,
+            solveRegion(patch, q[std::size_t(k)], u0 + half * double(k >> 1), v0 + half * double(k & 1), half,
                         depthLeft - 1);
         }
     }

@@ -109,7 +109,7 @@ std::size_t teapotVertexCount(int level) {
 // patches): along each, the first triangle of each of its 2ⁿ quads has two equal corners and is dropped.
 std::size_t teapotTriangleCount(int level) {
     const std::size_t n = std::size_t(1) << level;
-    return kTeapotPatchCount * 2 * n * n - 8 * n;
+    return std::size_t(kTeapotPatchCount) * 2 * n * n - 8 * n;
 }
 
 void checkTeapotLevel(int level, std::string_view field) {

@@ -236,7 +236,9 @@ public:
     // Binds the program that draws the object of that index, with the frame's and the object's uniforms
     // set; returns where the program keeps the rest.
     const SurfaceLocations& operator()(std::size_t index) {
-        const SurfaceProgram& surface = *plan_.objects[index].program;
+        const SurfaceProgram* program = plan_.objects[index].program; // drawPlan sets one for every object
+        if (!program) throw RuntimeError("scene draw: object " + std::to_string(index) + " has no program");
+        const SurfaceProgram& surface = *program;
         const Material& material = sized_.objects[index].material;
         if (&surface != bound_) {
             glUseProgram(surface.program.get());

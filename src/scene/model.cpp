@@ -159,7 +159,12 @@ std::string readRegularFile(const std::filesystem::path& file, std::string_view 
                          " MiB; decimate the model");
     std::ifstream in(file, std::ios::binary);
     if (!in) throw InputError(printable(name) + ": cannot read: " + std::generic_category().message(errno));
-    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    // Read in one piece into a string of the file's size (a character-by-character copy took twice as long
+    // on a 77 MB OBJ); a file that grows meanwhile is read to its end.
+    std::string bytes(error ? 0 : std::size_t(size), '\0');
+    in.read(bytes.data(), std::streamsize(bytes.size()));
+    bytes.resize(std::size_t(in.gcount()));
+    if (in) bytes.append(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
     return bytes;
 }
 
