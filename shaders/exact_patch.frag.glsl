@@ -129,8 +129,13 @@ void main() {
     if (!(s > 0.0) || !(positionView.z <= -uNearFar.x && positionView.z >= -uNearFar.y)) discard;
 
     // normalize(∂P/∂v × ∂P/∂u); at a cusp (the cross product vanishes) +y above the middle, −y below.
+    // At a cusp one derivative vanishes (a border collapsed to a point: the lid's apex, the bottom's
+    // centre) and in float comes out as rounding noise in any direction, so the test is relative: within
+    // 1e-4 of the other (these caps' normals are that close to ±y there).
     vec3 crossObject = cross(dv, du);
-    vec3 normalObject = dot(crossObject, crossObject) > 1e-24 ? crossObject : vec3(0.0, p.y > 0.0 ? 1.0 : -1.0, 0.0);
+    float du2 = dot(du, du), dv2 = dot(dv, dv);
+    bool cusp = !(min(du2, dv2) > 1e-8 * max(du2, dv2));
+    vec3 normalObject = cusp ? vec3(0.0, p.y > 0.0 ? 1.0 : -1.0, 0.0) : crossObject;
     vec3 normalView = safeNormalize(uNormalViewFromObject * normalObject, vec3(0.0, 0.0, 1.0));
     if (dot(normalView, directionView) > 0.0) normalView = -normalView;
 
