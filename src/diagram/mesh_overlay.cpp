@@ -145,7 +145,8 @@ std::vector<LineVertex> teapotOverlayLines(const TeapotMesh& mesh, Overlay overl
         // the first half) — unless the coarse triangle has two equal corners (the lid's top, the bottom's
         // centre), which the coarse level drops (DESIGN §1 "The teapot").
         const int third = stride / 3, twoThirds = 2 * stride / 3;
-        const double coarseN = double(n / stride);
+        const int coarseLevelN = n / stride; // whole: both are powers of two, stride <= n
+        const double coarseN = coarseLevelN;
         auto coarseDropped = [&](const glm::dvec3& patchUv, int coarseI, int coarseJ, bool firstHalf) {
             const TeapotPatch& patch = teapotPatches()[std::size_t(std::lround(patchUv.x))];
             auto at = [&](int di, int dj) {
