@@ -90,7 +90,10 @@ Model finishModel(RawMesh raw, std::string_view name) {
         const glm::dvec3 cross =
             glm::cross(mesh.positions[t.y] - mesh.positions[t.x], mesh.positions[t.z] - mesh.positions[t.x]);
         const double length = glm::length(cross);
-        if (!(length > 0) || !std::isfinite(length)) continue;
+        if (!(length > 0) || !std::isfinite(length)) {
+            ++model.trianglesDropped;
+            continue;
+        }
         mesh.triangles.push_back(t);
         mesh.faceNormals.push_back(cross / length);
         // |cross| is twice the area: summing the unnormalized cross products weighs each face by its area.

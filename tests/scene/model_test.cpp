@@ -224,6 +224,47 @@ TEST(Model, MadeNormalsAreAreaWeighted) {
     EXPECT_GT(glm::length(model->mesh.vertexNormals[shared] - glm::normalize(large + small)), 0.5);
 }
 
+// A zero-area triangle (two corners alike, or three in a line) has no normal: it is left out and counted.
+TEST(Model, ZeroAreaTrianglesAreDroppedAndCounted) {
+    const auto model = parse("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nf 1 2 3\nf 1 1 3\nf 1 2 4\n", "some.obj");
+    ASSERT_EQ(model->mesh.triangles.size(), 1u);
+    const glm::uvec3 kept = model->mesh.triangles[0];
+    EXPECT_EQ(model->mesh.positions[kept.x], glm::dvec3(0, 0, 0));
+    EXPECT_EQ(model->mesh.positions[kept.y], glm::dvec3(1, 0, 0));
+    EXPECT_EQ(model->mesh.positions[kept.z], glm::dvec3(0, 1, 0));
+    EXPECT_EQ(model->trianglesDropped, 2u);
+    EXPECT_EQ(model->mesh.faceNormals.size(), 1u);
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(model->mesh.vertexNormals[kept[k]], glm::dvec3(0, 0, 1)) << k;
+}
+
+// A glTF mesh is placed by its node's world matrix: the parent's times the child's translation · rotation ·
+// scale, in that order; normals by the inverse transpose (a non-uniform scale tells it from the matrix
+// itself); a mirroring scale turns the winding back to counter-clockwise seen from outside.
+TEST(Model, GltfNodesPlaceTheirMeshes) {
+    const SphereMesh sphere = buildSphere(1, VertexNormals::Exact);
+    std::string json = sphereGltf(sphere).json;
+    const std::string node = R"("nodes": [{"mesh": 0}])";
+    json.replace(json.find(node), node.size(),
+                 R"("nodes": [{"children": [1], "translation": [1, 2, 3]},
+                              {"mesh": 0, "rotation": [0, 0, 0.70710678118654752, 0.70710678118654752],
+                               "scale": [2, 1, -0.5]}])");
+    const auto model = parse(json, "placed.gltf");
+    // Scaled by (2, 1, -0.5), a quarter turn about z ((x, y) to (-y, x)), moved by (1, 2, 3).
+    TriangleMesh expected;
+    for (const glm::dvec3& p : sphere.positions)
+        expected.positions.emplace_back(1 - p.y, 2 + 2 * p.x, 3 - 0.5 * p.z);
+    for (const glm::dvec3& n : sphere.vertexNormals)
+        expected.vertexNormals.push_back(glm::normalize(glm::dvec3(-n.y, n.x / 2, -2 * n.z)));
+    for (const glm::uvec3& t : sphere.triangles) expected.triangles.emplace_back(t.x, t.z, t.y);
+    expectSameMesh(model->mesh, expected, 1e-6); // glTF stores float
+    for (std::size_t t = 0; t < model->mesh.triangles.size(); ++t) {
+        const glm::uvec3 c = model->mesh.triangles[t];
+        const glm::dvec3 centroid =
+            (model->mesh.positions[c.x] + model->mesh.positions[c.y] + model->mesh.positions[c.z]) / 3.0;
+        EXPECT_GT(glm::dot(model->mesh.faceNormals[t], centroid - glm::dvec3(1, 2, 3)), 0) << t; // outward
+    }
+}
+
 TEST(Model, BadObjIsRefusedWithTheFileAndTheLine) {
     const std::string cube = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
     struct Case {

@@ -21,6 +21,7 @@ struct Model {
     TriangleMesh mesh;                // object space as in the file; made normals area-weighted
     std::optional<Material> material; // the file's first material (MTL, or glTF's baseColorFactor)
     bool normalsMade = false;         // the file had no normals
+    std::size_t trianglesDropped = 0; // zero-area triangles left out (they have no normal)
 };
 
 // The most vertices one model may have, and the largest file read (docs/ci-engineers.md "Limits").
