@@ -21,8 +21,9 @@ std::string lineField(std::size_t line) {
     return "line " + std::to_string(line);
 }
 
-std::vector<std::string_view> words(std::string_view line) {
-    std::vector<std::string_view> out;
+// The line's words into `out` (one vector reused for every line: a large file has millions).
+void words(std::string_view line, std::vector<std::string_view>& out) {
+    out.clear();
     std::size_t i = 0;
     while (i < line.size()) {
         while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
@@ -30,13 +31,13 @@ std::vector<std::string_view> words(std::string_view line) {
         while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
         if (i > start) out.push_back(line.substr(start, i - start));
     }
-    return out;
 }
 
 // The line starting at `at`, and `at` moved past its end. Lines end as tinyobjloader's safeGetline ends
 // them: "\n", "\r\n" or a lone "\r" (old Mac files), so that the check and the library read the same lines.
 std::string_view nextLine(std::string_view text, std::size_t& at) {
-    const std::size_t end = std::min(text.find_first_of("\r\n", at), text.size());
+    std::size_t end = at; // a loop, not find_first_of, which calls memchr once per character
+    while (end < text.size() && text[end] != '\n' && text[end] != '\r') ++end;
     const std::string_view line = text.substr(at, end - at);
     at = end + (end + 1 < text.size() && text[end] == '\r' && text[end + 1] == '\n' ? 2 : 1);
     return line;
@@ -51,13 +52,17 @@ public:
 
     void check(std::string_view text) {
         // Positive indices may name a vertex given later in the file: count them all first.
+        std::vector<std::string_view> w;
         for (std::size_t at = 0; at <= text.size();) {
-            const std::vector<std::string_view> w = words(nextLine(text, at));
+            words(nextLine(text, at), w);
             if (!w.empty() && w[0] == "v") ++totalPositions_;
             if (!w.empty() && w[0] == "vn") ++totalNormals_;
         }
         std::size_t line = 1;
-        for (std::size_t at = 0; at <= text.size(); ++line) checkLine(words(nextLine(text, at)), line);
+        for (std::size_t at = 0; at <= text.size(); ++line) {
+            words(nextLine(text, at), w);
+            checkLine(w, line);
+        }
     }
     // MTL text by name, read while checking, for the library's material reader.
     std::map<std::string, std::string> materials;
@@ -153,6 +158,16 @@ private:
     const std::map<std::string, std::string>& texts_;
 };
 
+// The text as a stream without a copy (an istringstream copies it twice: a 77 MB OBJ would be held three
+// times). tinyobjloader only reads from it, so the const_cast never writes.
+class ViewBuffer : public std::streambuf {
+public:
+    explicit ViewBuffer(std::string_view text) {
+        char* begin = const_cast<char*>(text.data());
+        setg(begin, begin, begin + text.size());
+    }
+};
+
 glm::dvec3 colour(const tinyobj::real_t (&c)[3]) {
     return {c[0], c[1], c[2]};
 }
@@ -167,7 +182,8 @@ Model parseObj(std::string_view text, std::string_view name, SideFileReader side
     std::vector<tinyobj::shape_t> shapes;
     std::vector<tinyobj::material_t> materials;
     std::string warn, err;
-    std::istringstream in{std::string(text)};
+    ViewBuffer buffer(text);
+    std::istream in(&buffer);
     CheckedMaterials reader(checker.materials);
     if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &in, &reader, true, false))
         throw InputError(printable(name) + ": " + printable(err.empty() ? "not an OBJ file" : err));
