@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -357,9 +358,16 @@ TEST(Model, OnlyRegularFilesInTheModelsFolderAreOpened) {
               std::string::npos);
     const fs::path fifo = folder.path() / "pipe.obj";
     ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
-    // Refused from its type, before it is opened: opening a FIFO nobody writes would block.
-    EXPECT_NE(test::inputErrorOf([&] { (void)loadModel(fifo); }).find("not a regular file"),
-              std::string::npos);
+    // Refused from its type, before it is opened: opening a FIFO nobody writes would block. Read in a child
+    // with an alarm, so that a reader that opened it fails this test in 5 s instead of hanging it.
+    EXPECT_EXIT(
+        {
+            ::alarm(5);
+            const std::string message = test::inputErrorOf([&] { (void)loadModel(fifo); });
+            std::fputs(message.c_str(), stderr);
+            std::exit(0);
+        },
+        ::testing::ExitedWithCode(0), "pipe.obj: is not a regular file");
     EXPECT_NE(test::inputErrorOf([&] { (void)loadModel("/dev/null"); }).find("not a regular file"),
               std::string::npos);
     // A side file that is a link out of the folder.
