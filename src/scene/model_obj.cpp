@@ -214,7 +214,10 @@ Model parseObj(std::string_view text, std::string_view name, SideFileReader side
     for (const tinyobj::shape_t& shape : shapes) {
         const std::vector<tinyobj::index_t>& corners = shape.mesh.indices;
         for (std::size_t c = 0; c + 2 < corners.size(); c += 3) {
-            raw.triangles.emplace_back(vertex(corners[c]), vertex(corners[c + 1]), vertex(corners[c + 2]));
+            // One declaration, so the vertices are numbered in the corners' order whatever the compiler
+            // (a function's arguments are evaluated in no set order: gcc and emscripten's clang differ).
+            const glm::uint a = vertex(corners[c]), b = vertex(corners[c + 1]), d = vertex(corners[c + 2]);
+            raw.triangles.emplace_back(a, b, d);
         }
     }
     if (!materials.empty()) {

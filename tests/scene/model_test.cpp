@@ -230,6 +230,7 @@ TEST(Model, ZeroAreaTrianglesAreDroppedAndCounted) {
     const auto model = parse("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nf 1 2 3\nf 1 1 3\nf 1 2 4\n", "some.obj");
     ASSERT_EQ(model->mesh.triangles.size(), 1u);
     const glm::uvec3 kept = model->mesh.triangles[0];
+    EXPECT_EQ(kept, glm::uvec3(0, 1, 2)); // numbered as the corners first use them, on every compiler
     EXPECT_EQ(model->mesh.positions[kept.x], glm::dvec3(0, 0, 0));
     EXPECT_EQ(model->mesh.positions[kept.y], glm::dvec3(1, 0, 0));
     EXPECT_EQ(model->mesh.positions[kept.z], glm::dvec3(0, 1, 0));
