@@ -1,4 +1,5 @@
 #include "shadelab/diagram/mesh_overlay.h"
+#include "diagram/overlay_lines.h"
 
 #include <algorithm>
 #include <array>
@@ -10,10 +11,8 @@
 namespace shadelab {
 namespace {
 
-void segment(std::vector<LineVertex>& lines, const glm::dvec3& from, const glm::dvec3& to, glm::vec3 color) {
-    lines.push_back({glm::vec3(from), color});
-    lines.push_back({glm::vec3(to), color});
-}
+using detail::NormalTips;
+using detail::segment;
 
 double boundRadius(const TriangleMesh& mesh) {
     double largest = 0;
@@ -44,18 +43,6 @@ std::vector<std::uint32_t> firstAtSamePlace(const TriangleMesh& mesh, double rad
     }
     return first;
 }
-
-// Where a normal line drawn from `from` ends, in object space: once M (`worldFromObject`) is applied, the
-// line runs along `normalWorldFromObject`·n, the normal the shading uses, and is `worldLength` long (as
-// overlay.cpp draws the sphere's).
-struct NormalTips {
-    glm::dmat3 objectFromWorld, normalWorldFromObject;
-    double worldLength;
-    glm::dvec3 operator()(const glm::dvec3& from, const glm::dvec3& normalObject) const {
-        const glm::dvec3 normalWorld = glm::normalize(normalWorldFromObject * normalObject);
-        return from + objectFromWorld * (worldLength * normalWorld);
-    }
-};
 
 // Which normals a shape shows, and how much longer than its mean edge they are drawn (the edge of the
 // level they stand for).

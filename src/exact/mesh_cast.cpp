@@ -20,7 +20,7 @@ namespace {
 
 constexpr std::uint32_t kLeafTriangles = 4;
 constexpr double kBarycentricSlack = 1e-9;
-constexpr double kBoxPad = 1e-9; // of the box's extent
+constexpr double kTriangleBoxPad = 1e-9; // of the box's extent
 
 bool meets(const glm::dvec3& lo, const glm::dvec3& hi, const ObjectRay& ray, const glm::dvec3& inverse,
            double tMax, double& tEntry) {
@@ -67,7 +67,7 @@ std::uint32_t MeshBvh::build(std::uint32_t begin, std::uint32_t end, std::vector
         }
         cLo = glm::min(cLo, centroids[order_[i]]), cHi = glm::max(cHi, centroids[order_[i]]);
     }
-    const glm::dvec3 pad = kBoxPad * (hi - lo) + 1e-300;
+    const glm::dvec3 pad = kTriangleBoxPad * (hi - lo) + 1e-300;
     nodes_[index].lo = lo - pad, nodes_[index].hi = hi + pad;
     const glm::dvec3 extent = cHi - cLo;
     const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;

@@ -33,7 +33,8 @@ constexpr int kExtraDepth = 6;   // the leaf split again, on demand, down to 1/2
 constexpr int kNewtonSteps = 24; // Newton converges in 3–6; the rest is for the linear rate at a graze
 constexpr double kConverged = 1e-13, kAccepted = 1e-10; // |F| in object units
 constexpr double kDomainSlack = 1e-9;                   // u, v in [0, 1] within this
-constexpr double kBoxPad = 1e-12; // object units: the boxes' rounding, so a ray along a face still meets it
+constexpr double kPatchBoxPad =
+    1e-12; // object units: the boxes' rounding, so a ray along a face still meets it
 
 struct Box {
     glm::dvec3 lo, hi;
@@ -42,7 +43,7 @@ struct Box {
 Box boxOf(const TeapotPatch& net) {
     Box box{net[0], net[0]};
     for (const glm::dvec3& p : net) box.lo = glm::min(box.lo, p), box.hi = glm::max(box.hi, p);
-    box.lo -= kBoxPad, box.hi += kBoxPad;
+    box.lo -= kPatchBoxPad, box.hi += kPatchBoxPad;
     return box;
 }
 

@@ -67,7 +67,7 @@ void parseObjOfSize(benchmark::State& state) {
     state.counters["file_MB"] = double(text.size()) / 1e6;
 }
 
-const bool kRegistered = [] {
+const bool kModelBenchmarksRegistered = [] {
     benchmark::RegisterBenchmark("model/parse_obj", parseObjOfSize)
         ->Arg(1)
         ->Arg(10)

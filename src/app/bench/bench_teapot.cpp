@@ -17,7 +17,7 @@ void buildTeapotLevel(benchmark::State& state) {
     state.counters["triangles"] = double(teapotTriangleCount(level));
 }
 
-const bool kRegistered = [] {
+const bool kTeapotBenchmarksRegistered = [] {
     benchmark::RegisterBenchmark("teapot/build", buildTeapotLevel)
         ->DenseRange(2, kMaxTeapotLevel)
         ->ArgName("level")
