@@ -14,9 +14,9 @@ namespace fs = std::filesystem;
 namespace {
 
 // loadSceneModels with its message prefixed by where the scene came from, as parseScene prefixes its own.
-void loadModelsOf(Scene& scene, const fs::path& folder, const std::string& where) {
+void loadModelsOf(Scene& scene, const fs::path& folder, const std::string& where, ModelCache& cache) {
     try {
-        loadSceneModels(scene, folder);
+        loadSceneModels(scene, folder, cache);
     } catch (const InputError& e) {
         throw InputError(where + ": " + e.what());
     }
@@ -28,7 +28,8 @@ Scene bundledScene(std::string_view fileName) {
     const auto text = bundledSceneText(fileName);
     if (!text) throw RuntimeError("scene " + std::string(fileName) + " is not bundled in this binary");
     Scene scene = parseScene(*text, fileName);
-    loadModelsOf(scene, ".", std::string(fileName));
+    ModelCache cache;
+    loadModelsOf(scene, ".", std::string(fileName), cache);
     return scene;
 }
 
@@ -39,7 +40,8 @@ fs::path sceneFolder(const fs::path& sceneFile) {
 
 Scene loadSceneWithModels(const fs::path& sceneFile) {
     Scene scene = loadScene(sceneFile);
-    loadModelsOf(scene, sceneFolder(sceneFile), sceneFile.string());
+    ModelCache cache;
+    loadModelsOf(scene, sceneFolder(sceneFile), sceneFile.string(), cache);
     return scene;
 }
 
@@ -49,18 +51,21 @@ Scene composeSceneWithModels(const std::string& sceneFile, const SceneOverrides&
 
 void loadLessonModels(Lesson& lesson, const fs::path& lessonFile) {
     const fs::path lessonFolder = sceneFolder(lessonFile);
+    ModelCache cache; // a file named by many steps is read once
     for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
         LessonStep& step = lesson.steps[i];
         const fs::path folder = step.file.empty() ? lessonFolder : sceneFolder(lessonFolder / step.file);
         const std::string file = step.file.empty() ? "" : " (scene file " + quotedValue(step.file) + ")";
-        loadModelsOf(step.scene, folder, lessonFile.string() + ": steps[" + std::to_string(i) + "]" + file);
+        loadModelsOf(step.scene, folder, lessonFile.string() + ": steps[" + std::to_string(i) + "]" + file,
+                     cache);
     }
 }
 
 std::variant<Scene, Lesson> loadSceneOrLessonWithModels(const fs::path& file) {
     std::variant<Scene, Lesson> read = loadSceneOrLesson(file);
+    ModelCache cache;
     if (Scene* scene = std::get_if<Scene>(&read))
-        loadModelsOf(*scene, sceneFolder(file), file.string());
+        loadModelsOf(*scene, sceneFolder(file), file.string(), cache);
     else
         loadLessonModels(std::get<Lesson>(read), file);
     return read;
