@@ -10,6 +10,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "scene/scene_internal.h"
+#include "shadelab/io/text.h"
+#include "shadelab/scene/model.h"
 #include "shadelab/vocabulary.h"
 
 namespace shadelab {
@@ -155,6 +157,13 @@ std::vector<std::string> sceneWarnings(const Scene& scene) {
         check(scene.objects[i].material.ambient, path + "ambient");
         check(scene.objects[i].material.diffuse, path + "diffuse");
         check(scene.objects[i].material.specular, path + "specular");
+        // A model's zero-area triangles have no normal and are left out (scene/model.h): say how many, so
+        // that a hole in the picture has its reason on the terminal.
+        if (const auto& model = scene.objects[i].model; model && model->trianglesDropped > 0)
+            warnings.push_back("objects[" + std::to_string(i) +
+                               "].mesh: " + std::to_string(model->trianglesDropped) + " zero-area triangle" +
+                               (model->trianglesDropped == 1 ? "" : "s") + " of " + printable(model->path) +
+                               " left out (they have no normal)");
     }
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
         const std::string path = "lights[" + std::to_string(i) + "].";

@@ -237,6 +237,15 @@ TEST(Model, ZeroAreaTrianglesAreDroppedAndCounted) {
     EXPECT_EQ(model->trianglesDropped, 2u);
     EXPECT_EQ(model->mesh.faceNormals.size(), 1u);
     for (int k = 0; k < 3; ++k) EXPECT_EQ(model->mesh.vertexNormals[kept[k]], glm::dvec3(0, 0, 1)) << k;
+
+    // The scene's warnings say so, naming the object and the file.
+    Scene scene;
+    scene.objects.resize(2);
+    scene.objects[1].model = model;
+    const std::vector<std::string> warnings = sceneWarnings(scene);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_EQ(warnings[0],
+              "objects[1].mesh: 2 zero-area triangles of some.obj left out (they have no normal)");
 }
 
 // A glTF mesh is placed by its node's world matrix: the parent's times the child's translation · rotation ·
