@@ -10,11 +10,13 @@
 #      the fuzzers' build
 #   3. formatting (.clang-format) of src/, include/, tests/, web/, fuzz/; every shell script put through
 #      the shellcheck linter
-#   4. the whole test suite on the release build: CPU tests, GL tests on every headless backend (EGL with
+#   4. pixelmatch at its pinned version from npm (the metrics' independent check), then the whole test
+#      suite on the release build: CPU tests, GL tests on every headless backend (EGL with
 #      OpenGL and with OpenGL ES, OSMesa), the command line end to end, the demo window under Xvfb, the page
 #      in headless Chromium
 #   5. the permission-dropping tests again with the binary in a folder only root can enter, as a clone in
-#      /root is; the program installed into an empty prefix runs the CI example (examples/ci/)
+#      /root is; the program installed into an empty prefix runs the CI example (examples/ci/) as the
+#      GitLab and GitHub jobs do; the Debian package installed in a fresh Debian 12 root
 #   6. the suite under AddressSanitizer + UndefinedBehaviorSanitizer (+ LeakSanitizer; only Mesa's and the
 #      system GL stack's own allocations are suppressed), built by clang at -O1 (the tests' own sources at
 #      -O0, tests/CMakeLists.txt): the CPU, command-line, window and EGL + OpenGL tests whole, and of the
@@ -60,6 +62,9 @@ finish "browser build"
 stage "format check (clang-format) and the shell scripts' check (shellcheck)"
 format_check
 
+stage "the independent comparisons' packages (pixelmatch from npm, at its pinned version)"
+independent_comparisons
+
 stage "tests (release build)"
 release_tests "$@"
 [ "$quick" = 1 ] && exit 0
@@ -69,6 +74,9 @@ permission_tests
 
 stage "the CI example (examples/ci/) run by the program installed into an empty prefix"
 ci_example
+
+stage "the Debian package installed in a fresh Debian 12 root"
+deb_install
 
 stage "sanitizer build (what the release tests left)"
 finish "sanitizer build"

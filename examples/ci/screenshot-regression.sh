@@ -1,21 +1,27 @@
 #!/usr/bin/env bash
-# Screenshot regression as a CI job runs it (docs/ci-engineers.md "Screenshot regression in your CI"): renders every
-# scene in scenes/ headless, compares each with its reference for the GL driver that drew it, and on a
-# failure leaves the render, the difference image and the comparison's JSON in the artifacts folder.
+# Screenshot regression as a CI job runs it (docs/ci-engineers.md "Screenshot regression in your CI"): renders
+# every scene in scenes/ headless into a fresh folder, then `shadelab review` holds each render to the
+# references of the GL driver that drew it and writes the page, the JSON and the JUnit a CI shows.
 #
-#   examples/ci/screenshot-regression.sh [--shadelab PATH] [--artifacts DIR] [--bless]
+#   examples/ci/screenshot-regression.sh [--shadelab PATH] [--artifacts DIR] [--junit FILE]
+#                                        [--bless NAME]... [--bless-failed]
 #
-#   --shadelab PATH   the program (default: shadelab on PATH, else build/shadelab of this checkout)
-#   --artifacts DIR   where a failure's files go (default: screenshot-artifacts/ in the current folder),
-#                     made if missing; of what is in it, only files named after a failing scene are replaced
-#   --bless           write the renders as the references of this driver instead of comparing (look at them
-#                     first: a reference is only as right as the picture you accepted)
+#   --shadelab PATH  the program (default: shadelab on PATH, else build/shadelab of this checkout)
+#   --artifacts DIR  made if missing (default: screenshot-artifacts/ in the current folder). The job owns
+#                    DIR/renders/ (every render of this run: what a bless would write), DIR/review/ (the page,
+#                    index.html, with each case's actual, expected, difference and heatmap images) and
+#                    DIR/review.json (every case's figures and the paths of its images); it replaces those
+#                    and nothing else in DIR
+#   --junit FILE     JUnit XML, one testcase a scene, for the CI's test report
+#   --bless NAME     write scene NAME's render as this driver's reference (repeatable); look at it first
+#   --bless-failed   write the render of every scene that FAILed or is NEW, and print each one written
 #
-# References live in references/DRIVER/, DRIVER being the renderer's first word as `render --verbose`
-# names it (llvmpipe, softpipe, a vendor's driver...): each driver rasterizes its own way, so each has its
-# own pictures. A scene may have a mask, masks/SCENE.png (black: not compared). The tolerances are the
-# TOLERANCE array below. Exit: 0 every scene within tolerance, 1 one or more not, 2 a missing reference or
-# bad arguments.
+# References live in references/DRIVER/, DRIVER being the renderer's first word as `render --verbose` names
+# it (llvmpipe, softpipe, a vendor's driver...): each driver rasterizes its own way, so each has its own
+# pictures; NAME.1.png, NAME.2.png... beside NAME.png are further approved images (any one passing passes).
+# masks/NAME.png (black: not compared) masks a scene. expectations.txt marks known failures per driver.
+# A reference whose scene is gone is reported STALE (delete it). Exit as review's: 0 every scene passes,
+# 1 one or more fail (or are NEW or STALE), 2 bad arguments or bad input.
 set -euo pipefail
 # The folder of the script itself, links resolved: a job may run it through a link in another folder, and the
 # scenes, references and masks are beside the file. No cd: with CDPATH exported, bash's cd prints the folder
@@ -24,40 +30,43 @@ unset CDPATH
 here=$(dirname -- "$(readlink -f -- "$0")")
 
 # Per channel on 0..255: at most 2 apart, a mean under 0.05 over the compared pixels, and up to 8 pixels
-# beyond the 2 (an edge pixel a driver covers differently). The same driver gives the same pixels, so these
-# only absorb what a driver update may move.
-TOLERANCE=(--max 2 --mean 0.05 --outliers 8)
+# beyond the 2 (an edge pixel a driver covers differently); and at most 8 pixels pixelmatch calls visibly
+# different (the same edge allowance, for when --max is loosened for another driver). The same driver gives
+# the same pixels, so these only absorb what a driver update may move (docs/ci-engineers.md "Which metric").
+TOLERANCE=(--max 2 --mean 0.05 --outliers 8 --perceptual-max-pixels 8)
 
+usage() {
+  echo "screenshot-regression.sh: $1 (see the comment at the top of this script)" >&2
+  exit 2
+}
 shadelab=""
 artifacts=$PWD/screenshot-artifacts
-bless=0
+review_args=()
+blessing=0
 while (($#)); do
   case $1 in
-    --shadelab)
-      shadelab=${2:?--shadelab needs the program\'s path}
+    --shadelab | --artifacts | --junit | --bless)
+      (($# >= 2)) || usage "$1 needs a value"
+      case $1 in
+        --shadelab) shadelab=$2 ;;
+        --artifacts) artifacts=$2 ;;
+        --junit) review_args+=("--junit=$2") ;;
+        --bless) review_args+=("--bless=$2") && blessing=1 ;;
+      esac
       shift 2
       ;;
-    --artifacts)
-      artifacts=${2:?--artifacts needs a folder}
-      shift 2
-      ;;
-    --bless)
-      bless=1
+    --bless-failed)
+      review_args+=(--bless-failed)
+      blessing=1
       shift
       ;;
-    *)
-      echo "screenshot-regression.sh: unknown argument '$1' (see the comment at the top of this script)" >&2
-      exit 2
-      ;;
+    *) usage "unknown argument '$1'" ;;
   esac
 done
 if [ -z "$shadelab" ]; then
   shadelab=$(command -v shadelab || echo "$here/../../build/shadelab")
 fi
-[ -x "$shadelab" ] || {
-  echo "screenshot-regression.sh: no shadelab program at '$shadelab' (give --shadelab PATH)" >&2
-  exit 2
-}
+[ -x "$shadelab" ] || usage "no shadelab program at '$shadelab' (give --shadelab PATH)"
 
 work=$(mktemp -d)
 trap 'rm -rf -- "$work"' EXIT
@@ -71,42 +80,25 @@ driver=$(sed -n 's/.*context: \([A-Za-z0-9_.-]*\).*/\1/p' "$work/verbose.txt" | 
 }
 references=$here/references/$driver
 echo "driver: $driver (references: ${references#"$here"/})"
+# A driver with no references yet: every scene is NEW. Held to an empty folder, unless blessing, which makes
+# the driver's folder to write into.
+if [ ! -d "$references" ]; then
+  if ((blessing)); then mkdir -p -- "$references"; else references=$work/none && mkdir "$references"; fi
+fi
 
 mkdir -p -- "$artifacts"
-failed=0
-missing=0
+renders=$artifacts/renders
+rm -rf -- "$renders" "$artifacts/review" "$artifacts/review.json"
+mkdir -- "$renders"
 for scene in "$here"/scenes/*.json; do
-  name=$(basename -- "$scene" .json)
-  actual=$work/$name.png
-  "$shadelab" render "$scene" --out "$actual"
-  if ((bless)); then
-    mkdir -p -- "$references"
-    cp -- "$actual" "$references/$name.png"
-    echo "blessed: $name"
-    continue
-  fi
-  if [ ! -f "$references/$name.png" ]; then
-    echo "MISSING: $name has no reference for $driver (look at a render, then run with --bless)"
-    missing=1
-    continue
-  fi
-  mask=()
-  [ -f "$here/masks/$name.png" ] && mask=(--mask "$here/masks/$name.png")
-  status=0
-  "$shadelab" compare "$actual" "$references/$name.png" "${TOLERANCE[@]}" "${mask[@]}" \
-    --diff "$work/$name.diff.png" --json >"$work/$name.json" || status=$?
-  case $status in
-    0) echo "pass: $name" ;;
-    1)
-      echo "FAIL: $name (render, difference x8 and figures in ${artifacts}/)"
-      cp -- "$actual" "$artifacts/$name.png"
-      cp -- "$work/$name.json" "$artifacts/$name.json"
-      [ -f "$work/$name.diff.png" ] && cp -- "$work/$name.diff.png" "$artifacts/$name.diff.png"
-      failed=1
-      ;;
-    *) exit "$status" ;;
-  esac
+  "$shadelab" render "$scene" --out "$renders/$(basename -- "$scene" .json).png"
 done
-((missing)) && exit 2
-((failed)) && exit 1
-exit 0
+
+[ -d "$here/masks" ] && review_args+=("--masks=$here/masks")
+status=0
+"$shadelab" review "$renders" "$references" --out "$artifacts/review" --json "$artifacts/review.json" \
+  --expectations "$here/expectations.txt" --driver "$driver" "${TOLERANCE[@]}" "${review_args[@]}" || status=$?
+if ((status == 1)); then
+  echo "the page: $artifacts/review/index.html; this run's renders: $renders/ (look, then --bless NAME or --bless-failed)"
+fi
+exit "$status"

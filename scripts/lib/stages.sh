@@ -79,14 +79,36 @@ permission_tests() {
 }
 
 # The installed program alone (its shaders, font and scenes are compiled in) and the example's installed
-# copy, run from outside the checkout, as docs/ci-engineers.md "Screenshot regression in your CI" describes.
+# copy, run from outside the checkout with the arguments examples/ci/gitlab-ci.yml and github-actions.yml
+# give it, as docs/ci-engineers.md "Screenshot regression in your CI" describes; the JUnit must be written.
 ci_example() {
   local prefix
   prefix=$(mktemp -d)
   cmake --install build --prefix "$prefix" >/dev/null
   (cd "$prefix" && PATH="$prefix/bin:$PATH" share/doc/shadelab/examples/ci/screenshot-regression.sh \
-    --artifacts "$prefix/artifacts")
+    --artifacts screenshot-artifacts --junit screenshot-artifacts/junit.xml &&
+    test -s screenshot-artifacts/junit.xml)
   rm -rf "$prefix"
+}
+
+# The independent implementations the image metrics are held to (tests/compare/independent/): pixelmatch at
+# its pinned version, by npm ci, before the suite that runs them.
+independent_comparisons() {
+  local install=tests/compare/independent/install.sh
+  if [ ! -x "$install" ]; then
+    echo "skipped: no $install yet"
+    return 0
+  fi
+  "$install"
+}
+
+# The Debian package (cpack -G DEB) installed in a fresh Debian 12 root and run there.
+deb_install() {
+  if [ ! -x scripts/test-deb.sh ]; then
+    echo "skipped: no scripts/test-deb.sh yet"
+    return 0
+  fi
+  scripts/test-deb.sh
 }
 
 sanitizer_tests() {
