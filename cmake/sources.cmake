@@ -2,15 +2,27 @@
 # (CMakeLists.txt) and the browser build (web/CMakeLists.txt) read. Each reads them with its own root
 # prepended (shadelab_sources).
 
-# The core, no GL, a folder for each stage of the pipeline and in the order they depend on each other:
-# io (atomic writes, printable text), image (pixels, PNG, the labels' font), geometry (the subdivided
-# sphere), shading (the lighting equations and their value types), scene (the camera and view volume, the
-# scene's values, files, flags and "auto" level, lessons), then what reads a whole scene: exact (the ray
-# cast, the reference image, the probe) and diagram (the overlay's lines, the outside view's drawing, a
-# point's stages); and the context names.
-set(SHADELAB_CORE_SOURCES
+# The light library shadelab_check, no GL and no scene: io (atomic writes, printable text) and image
+# (pixels, the labels' font); the page's build compiles these into its own program too.
+set(SHADELAB_IMAGE_SOURCES
   src/io/atomic_file.cpp src/io/output_path.cpp src/io/numbered_files.cpp src/io/text.cpp
-  src/image/image.cpp src/image/font.cpp
+  src/image/image.cpp src/image/font.cpp)
+# What only the native programs need of it: PNG files (libpng; the page hands the browser its pixels).
+set(SHADELAB_IMAGE_NATIVE_SOURCES src/image/png.cpp)
+# The regression kit on top of them (native only): the image metrics and the judgement against limits
+# (src/compare), and the compare and review commands (src/app/check; their mains are the executables').
+# flip.cpp: FLIP, kept only if it holds to its authors' published figures (docs/ci-engineers.md).
+set(SHADELAB_CHECK_SOURCES
+  src/compare/judge.cpp
+  src/app/check/compare_command.cpp src/app/check/check_cli.cpp src/app/check/memory_check.cpp
+  src/app/check/review_page.cpp)
+
+# The core, no GL, a folder for each stage of the pipeline and in the order they depend on each other:
+# geometry (the subdivided sphere), shading (the lighting equations and their value types), scene (the
+# camera and view volume, the scene's values, files, flags and "auto" level, lessons), then what reads a
+# whole scene: exact (the ray cast, the reference image, the probe) and diagram (the overlay's lines, the
+# outside view's drawing, a point's stages); and the context names. It links the light library (above).
+set(SHADELAB_CORE_SOURCES
   src/geometry/sphere.cpp src/geometry/sphere_limits.cpp src/geometry/subdivision.cpp src/geometry/mesh_layout.cpp
   src/geometry/teapot.cpp src/geometry/teapot_data.cpp
   src/shading/lighting.cpp
@@ -22,9 +34,9 @@ set(SHADELAB_CORE_SOURCES
   src/diagram/overlay.cpp src/diagram/outside_view.cpp src/diagram/point_stages.cpp
   src/diagram/mesh_overlay.cpp
   src/context/names.cpp)
-# What only the native program needs: PNG files (libpng; the page hands the browser its pixels) and the
-# analytic reference image (threads; the page checks against the native build instead).
-set(SHADELAB_CORE_NATIVE_SOURCES src/image/png.cpp src/exact/reference.cpp)
+# What only the native program needs: the analytic reference image (threads; the page checks against the
+# native build instead).
+set(SHADELAB_CORE_NATIVE_SOURCES src/exact/reference.cpp)
 # GL: the loader, the objects, programs, meshes, the renderer, render targets and the teaching views.
 set(SHADELAB_GL_SOURCES
   src/gl/loader.cpp src/gl/handles.cpp src/gl/program.cpp src/gl/program_variant.cpp src/gl/mesh.cpp

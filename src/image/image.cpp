@@ -99,12 +99,13 @@ Comparison compareImages(const Image& actual, const Image& expected, const Toler
     if (mask && (mask->width != actual.width || mask->height != actual.height))
         throw std::invalid_argument("compareImages: the mask's size differs from the images'");
     result.pixels = std::size_t(actual.width) * std::size_t(actual.height);
+    const std::size_t channels = tolerance.compareAlpha ? 4 : 3;
     std::uint64_t deltaSum = 0;
     for (std::size_t i = 0; i < result.pixels * 4; i += 4) {
         if (mask && mask->rgba[i] == 0 && mask->rgba[i + 1] == 0 && mask->rgba[i + 2] == 0) continue;
         ++result.comparedPixels;
         int pixelMax = 0;
-        for (std::size_t c = 0; c < 3; ++c) {
+        for (std::size_t c = 0; c < channels; ++c) {
             const int delta = std::abs(int(actual.rgba[i + c]) - int(expected.rgba[i + c]));
             deltaSum += std::uint64_t(delta);
             pixelMax = std::max(pixelMax, delta);
@@ -112,23 +113,36 @@ Comparison compareImages(const Image& actual, const Image& expected, const Toler
         result.maxDelta = std::max(result.maxDelta, pixelMax);
         if (pixelMax > tolerance.maxDelta) ++result.outliers;
     }
-    result.meanDelta = result.comparedPixels ? double(deltaSum) / (3.0 * double(result.comparedPixels)) : 0.0;
+    result.meanDelta =
+        result.comparedPixels ? double(deltaSum) / (double(channels) * double(result.comparedPixels)) : 0.0;
     result.passed = result.outliers <= tolerance.outlierBudget && result.meanDelta <= tolerance.meanDelta;
     return result;
 }
 
 // Sizes may differ (that is one way to fail); the diff then covers both, and a pixel only one image has is
 // shown as a full difference.
-Image diffImage(const Image& actual, const Image& expected) {
+Image diffImage(const Image& actual, const Image& expected, const Image* mask, bool withAlpha) {
     Image diff(std::max(actual.width, expected.width), std::max(actual.height, expected.height));
+    if (mask && (mask->width != diff.width || mask->height != diff.height)) mask = nullptr; // sizes differ
     for (int y = 0; y < diff.height; ++y) {
         for (int x = 0; x < diff.width; ++x) {
             std::uint8_t* out = diff.pixel(x, y);
+            if (mask) {
+                const std::uint8_t* m = mask->pixel(x, y);
+                if (m[0] == 0 && m[1] == 0 && m[2] == 0) {
+                    std::copy_n(&kDiffLeftOut.x, 4, out);
+                    continue;
+                }
+            }
             const bool inBoth =
                 x < actual.width && y < actual.height && x < expected.width && y < expected.height;
+            const int alphaDelta =
+                inBoth && withAlpha ? std::abs(int(actual.pixel(x, y)[3]) - int(expected.pixel(x, y)[3])) : 0;
             for (int c = 0; c < 3; ++c) {
                 const int delta =
-                    inBoth ? std::abs(int(actual.pixel(x, y)[c]) - int(expected.pixel(x, y)[c])) : 255;
+                    inBoth ? std::max(std::abs(int(actual.pixel(x, y)[c]) - int(expected.pixel(x, y)[c])),
+                                      alphaDelta)
+                           : 255;
                 // ×8 makes a one-step difference visible without saturating everything else.
                 out[c] = std::uint8_t(std::min(delta * 8, 255));
             }

@@ -57,11 +57,15 @@ struct ValueScan {
 };
 ValueScan scanValues(const ImageF& image, float lo = 0.0f, float hi = 1.0f);
 
-// Regression comparison of two 8-bit images of the same size (colour channels only).
+// Regression comparison of two 8-bit images of the same size.
 struct Tolerance {
     int maxDelta = 0;      // largest per-channel difference allowed outside the outlier budget
     double meanDelta = 0;  // largest mean per-channel difference over the whole image
     int outlierBudget = 0; // pixels allowed to exceed maxDelta (silhouette pixels)
+    // Alpha as a fourth compared channel. Off for the image tests: a GL read-back's alpha is coverage and
+    // their references are RGB; on for `shadelab compare`, where a transparent image must not pass for an
+    // opaque one (docs/ci-engineers.md "Alpha").
+    bool compareAlpha = false;
 };
 struct Comparison {
     bool sizeMatches = true;
@@ -74,12 +78,17 @@ struct Comparison {
     Tolerance tolerance; // the limits this was judged against, for summary()
     std::string summary() const;
 };
-// Per-channel differences of the colour channels. With a `mask` of the same size, pixels that are black in
-// it are not compared: they count in no figure, the mean included.
+// Per-channel differences of the colour channels (and alpha with tolerance.compareAlpha). With a `mask` of
+// the same size, pixels that are black in it are not compared: they count in no figure, the mean included.
 Comparison compareImages(const Image& actual, const Image& expected, const Tolerance& tolerance,
                          const Image* mask = nullptr);
-// |actual − expected| per channel, amplified ×8 and clamped, opaque; for looking at a failure.
-Image diffImage(const Image& actual, const Image& expected);
+// |actual − expected| per channel, amplified ×8 and clamped, opaque; for looking at a failure. With
+// `withAlpha`, each colour channel shows the larger of its own and alpha's difference (an alpha-only
+// difference is then seen). Pixels black in `mask` (same size as both images) were not compared: they are
+// drawn dark grey (kDiffLeftOut), so a difference there does not look like a failure.
+inline constexpr glm::u8vec4 kDiffLeftOut{64, 64, 64, 255};
+Image diffImage(const Image& actual, const Image& expected, const Image* mask = nullptr,
+                bool withAlpha = false);
 
 // Places `tile` into `canvas` with its top-left corner at (x, y), clipped to the canvas.
 void blit(Image& canvas, const Image& tile, int x, int y);

@@ -3,28 +3,17 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <cstdio>
 #include <set>
 #include <utility>
 #include <vector>
 
-#include <sys/resource.h>
-#include <unistd.h>
-
 #include "shadelab/diagram/overlay.h"
-#include "shadelab/errors.h"
 #include "shadelab/geometry/mesh_layout.h"
 #include "shadelab/geometry/sphere.h"
 #include "shadelab/geometry/teapot.h"
 #include "shadelab/scene/model.h"
 
 namespace shadelab::app {
-
-std::string mebibytes(double bytes) {
-    char text[48];
-    std::snprintf(text, sizeof text, "%.0f MiB", bytes / (1024.0 * 1024.0));
-    return text;
-}
 
 std::string sizeText(const Scene& scene) {
     return std::to_string(scene.width) + "x" + std::to_string(scene.height);
@@ -98,21 +87,6 @@ double referenceBytes(const Scene& scene) {
     // The process without GL, then per pixel the float colour (16 bytes), the object id (4), the 8-bit
     // image (4) and the PNG's RGB rows (3).
     return kProcessBaselineBytes + double(scene.width) * scene.height * (16 + 4 + 4 + 3);
-}
-
-void checkMemoryBudget(std::string_view what, double needBytes, std::string_view sizeField) {
-    const long pages = ::sysconf(_SC_PHYS_PAGES), pageSize = ::sysconf(_SC_PAGESIZE);
-    if (pages > 0 && pageSize > 0 && needBytes > double(pages) * double(pageSize))
-        throw InputError(std::string(sizeField) + ": " + std::string(what) + " would need about " +
-                         mebibytes(needBytes) + ", more than this machine's " +
-                         mebibytes(double(pages) * double(pageSize)) + " of memory; choose a smaller size");
-    rlimit limit{};
-    if (::getrlimit(RLIMIT_AS, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) return;
-    if (needBytes > double(limit.rlim_cur))
-        throw RuntimeError(std::string(what) + " needs about " + mebibytes(needBytes) +
-                           " of address space, but the limit (ulimit -v) is " +
-                           mebibytes(double(limit.rlim_cur)) +
-                           "; raise it (ulimit -v unlimited) or choose a smaller --size or --subdivisions");
 }
 
 } // namespace shadelab::app

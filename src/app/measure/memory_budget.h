@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 
+#include "app/check/memory_check.h" // checkMemoryBudget, kProcessBaselineBytes, mebibytes
 #include "shadelab/scene/scene.h"
 
 namespace shadelab::app {
@@ -15,8 +16,6 @@ namespace shadelab::app {
 // 2 cores (EGL and OSMesa): a 64x64 render fails or crashes inside Mesa (exit 139) at random below about
 // 640 MiB of `ulimit -v`, and succeeded in every run from 660 MB up.
 inline constexpr double kGlBaselineBytes = 640.0 * 1024 * 1024;
-// The process without GL (the program, its libraries and heap at start): what `reference` adds its images to.
-inline constexpr double kProcessBaselineBytes = 64.0 * 1024 * 1024;
 
 // Bytes one render of `scene` adds on top of the baseline: the offscreen colour and depth buffers, the
 // read-back and PNG rows, and the GPU copies of every distinct mesh (a sphere or a teapot at a level, a
@@ -25,12 +24,6 @@ double renderBytes(const Scene& scene);
 // Bytes `shadelab reference` of `scene` takes in all (no GL: the CPU ray cast and its images).
 double referenceBytes(const Scene& scene);
 
-// Throws RuntimeError (exit 1) when `needBytes` is over the address-space limit: names `what`, the
-// estimate, the limit and the fix. Throws InputError (exit 2) naming `sizeField` when it is over the
-// machine's physical memory: no limit could make such a run work here.
-void checkMemoryBudget(std::string_view what, double needBytes, std::string_view sizeField);
-
-std::string mebibytes(double bytes);
 // "512x512": a scene's image size, as the budget's messages name a render.
 std::string sizeText(const Scene& scene);
 

@@ -11,6 +11,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/check/check_cli.h"
 #include "app/demo/demo_state.h"
 #include "app/demo/view_explanations.h"
 #include "app/shells/cli_hints.h"
@@ -156,31 +157,6 @@ struct BenchCommand {
     const BenchArgs& parsed() const { return args; }
 };
 
-struct CompareCommand {
-    CompareOptions o;
-    CLI::App* add(CLI::App& cli) {
-        CLI::App* compare = cli.add_subcommand(
-            "compare", "Compare two PNGs as the image tests do: exit 0 within the tolerance, 1 beyond it");
-        compare->add_option("actual", o.actual, "The image under test (PNG)")->required();
-        compare->add_option("expected", o.expected, "The reference (PNG)")->required();
-        compare->add_option("--max", o.maxDelta, "Largest per-channel difference, 0..255")
-            ->capture_default_str();
-        compare
-            ->add_option("--mean", o.meanDelta,
-                         "Largest mean per-channel difference, over the compared pixels")
-            ->capture_default_str();
-        compare->add_option("--outliers", o.outliers, "Pixels allowed over --max")->capture_default_str();
-        compare->add_option("--mask", o.mask,
-                            "PNG of ACTUAL's size: black pixels are not compared, nor counted in the mean");
-        compare->add_option("--diff", o.diff,
-                            "Where to write the difference ×8 on failure (a file; never an input)");
-        compare->add_flag("--json", o.json,
-                          "Print the result as one JSON object (sizes, max, mean over the compared pixels, "
-                          "outliers, limits, passed, diff) instead of the summary line");
-        return compare;
-    }
-};
-
 struct ReportCommand {
     ReportArgs args;
     CLI::App* add(CLI::App& cli) {
@@ -267,14 +243,14 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
     RenderCommand render;
     ReferenceCommand reference;
     BenchCommand bench;
-    CompareCommand compare;
+    CompareOptions compare;
     ReportCommand report;
     CheckCommand check;
     SlidesCommand slides;
     CLI::App* const renderApp = render.add(cli);
     CLI::App* const referenceApp = reference.add(cli);
     CLI::App* const benchApp = bench.add(cli);
-    CLI::App* const compareApp = compare.add(cli);
+    CLI::App* const compareApp = addCompareCommand(cli, compare);
     CLI::App* const reportApp = report.add(cli);
     CLI::App* const checkApp = check.add(cli);
     CLI::App* const slidesApp = slides.add(cli);
@@ -308,7 +284,7 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
     if (*renderApp) return headless(render);
     if (*referenceApp) return reference.args;
     if (*benchApp) return headless(bench);
-    if (*compareApp) return compare.o;
+    if (*compareApp) return compare;
     if (*reportApp) return headless(report);
     if (*checkApp) return check.args;
     if (*slidesApp) return headless(slides);

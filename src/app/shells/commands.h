@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "app/check/compare_command.h" // CompareOptions, runCompare: `shadelab compare`
 #include "shadelab/context/context.h"
 #include "shadelab/scene/lesson.h"
 #include "shadelab/scene/scene.h"
@@ -29,17 +30,6 @@ int runRender(const Scene& scene, const ContextRequest& context, const std::file
 // --egl-device list: one line per EGL device and what a context of `api` on it reports.
 int runListEglDevices(Api api);
 
-// `shadelab compare ACTUAL EXPECTED`: the image tests' comparison from a shell (DESIGN §6): per-channel max
-// and mean differences plus an outlier budget, optionally only where MASK is not black. Exit 0 within the
-// tolerance, 1 beyond it (with the figures, and --diff written), 2 for bad input.
-struct CompareOptions {
-    std::string actual, expected, mask, diff;
-    int maxDelta = 0;     // --max
-    double meanDelta = 0; // --mean
-    int outliers = 0;     // --outliers: pixels allowed over --max
-    bool json = false;    // --json: standard output carries one JSON object instead of the summary line
-};
-int runCompare(const CompareOptions& options);
 int runReference(const Scene& scene, const std::filesystem::path& out);
 struct DemoOptions {
     std::filesystem::path showcaseOut = "shadelab-showcase.png"; // where the showcase goes without a display
