@@ -132,7 +132,8 @@ TEST_F(CiExample, AChangedReferenceFailsWithItsArtifactsAndAMaskOverTheChangePas
             << path;
     }
     const fs::path expectedCopy =
-        artifacts_ / "review" / caseOf(reviewJson(), "toon-spot").at("expected_file");
+        artifacts_ / "review" /
+        caseOf(reviewJson(), "toon-spot").at("files").at("expected").get<std::string>();
     EXPECT_EQ(readFile(expectedCopy), readFile(reference("toon-spot")))
         << "the expected image is the reference";
 
