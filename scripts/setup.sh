@@ -35,6 +35,9 @@ tools_packages=(
   clang-format clang-tidy clang libclang-rt-14-dev lld-14 shellcheck
   # the page's build and its tests (scripts/web.sh installs them too)
   emscripten chromium chromium-driver python3-selenium
+  # the Debian packages (cpack -G DEB computes Depends with dpkg-shlibdeps) and their install in a fresh
+  # Debian 12 root (scripts/test-deb.sh)
+  dpkg-dev debootstrap
 )
 
 die() {

@@ -99,22 +99,22 @@ Comparison compareImages(const Image& actual, const Image& expected, const Toler
     if (mask && (mask->width != actual.width || mask->height != actual.height))
         throw std::invalid_argument("compareImages: the mask's size differs from the images'");
     result.pixels = std::size_t(actual.width) * std::size_t(actual.height);
-    const std::size_t channels = tolerance.compareAlpha ? 4 : 3;
     std::uint64_t deltaSum = 0;
     for (std::size_t i = 0; i < result.pixels * 4; i += 4) {
         if (mask && mask->rgba[i] == 0 && mask->rgba[i + 1] == 0 && mask->rgba[i + 2] == 0) continue;
         ++result.comparedPixels;
         int pixelMax = 0;
-        for (std::size_t c = 0; c < channels; ++c) {
+        for (std::size_t c = 0; c < 3; ++c) {
             const int delta = std::abs(int(actual.rgba[i + c]) - int(expected.rgba[i + c]));
             deltaSum += std::uint64_t(delta);
             pixelMax = std::max(pixelMax, delta);
         }
+        if (tolerance.compareAlpha)
+            pixelMax = std::max(pixelMax, std::abs(int(actual.rgba[i + 3]) - int(expected.rgba[i + 3])));
         result.maxDelta = std::max(result.maxDelta, pixelMax);
         if (pixelMax > tolerance.maxDelta) ++result.outliers;
     }
-    result.meanDelta =
-        result.comparedPixels ? double(deltaSum) / (double(channels) * double(result.comparedPixels)) : 0.0;
+    result.meanDelta = result.comparedPixels ? double(deltaSum) / (3.0 * double(result.comparedPixels)) : 0.0;
     result.passed = result.outliers <= tolerance.outlierBudget && result.meanDelta <= tolerance.meanDelta;
     return result;
 }

@@ -1,8 +1,9 @@
 // `shadelab compare` end to end (docs/ci-engineers.md "Screenshot regression in your CI"): it judges as the
 // tests do (the figures of compareImages, a mask's black pixels not compared, the mean over the compared
 // pixels), --json for a dashboard, 16-bit files read as stored, a forged header refused before allocating,
-// --diff never one of the inputs, and different sizes named. Each test in a fresh temporary folder
-// (cli_fixture.h). Built into cli_test.
+// --diff never one of the inputs, and different sizes named; then every limit of compare/judge.h (SSIM,
+// the perceptual delta, FLIP, --ignore, alpha), bad values refused by name, and `shadelab-compare` giving
+// the same answers. Each test in a fresh temporary folder (cli_fixture.h). Built into cli_test.
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
@@ -67,7 +68,7 @@ TEST_F(CliTest, CompareJsonCarriesTheFiguresOfTheSummary) {
     shadelab::fillRect(mask, 0, 20, 64, 24, {255, 255, 255, 255}); // compares rows 20..43 only
     shadelab::writePng(mask, dir_ / "mask.png");
     const shadelab::Image a = shadelab::readPng(dir_ / "a.png"), b = shadelab::readPng(dir_ / "b.png");
-    const shadelab::Comparison c = shadelab::compareImages(a, b, shadelab::Tolerance{2, 0.5, 3}, &mask);
+    const shadelab::Comparison c = shadelab::compareImages(a, b, shadelab::Tolerance{2, 0.5, 3, true}, &mask);
     ASSERT_FALSE(c.passed) << "flat and phong must differ for this test: " << c.summary();
 
     const Outcome differ = shadelab({"compare", "a.png", "b.png", "--max", "2", "--mean", "0.5", "--outliers",
@@ -84,7 +85,9 @@ TEST_F(CliTest, CompareJsonCarriesTheFiguresOfTheSummary) {
     EXPECT_EQ(j["outliers"], c.outliers);
     EXPECT_EQ(j["compared_pixels"], 64 * 24);
     EXPECT_EQ(j["pixels"], 64 * 64);
-    EXPECT_EQ(j["limits"], (nlohmann::json{{"max", 2}, {"mean", 0.5}, {"outliers", 3}}));
+    EXPECT_EQ(j["limits"]["max"], 2);
+    EXPECT_EQ(j["limits"]["mean"], 0.5);
+    EXPECT_EQ(j["limits"]["outliers"], 3);
     EXPECT_EQ(j["diff"], "d.png");
     EXPECT_TRUE(pngSize(readFile(dir_ / "d.png"))) << "the difference image";
 
@@ -224,6 +227,227 @@ TEST_F(CliTest, CompareOfDifferentSizesNamesBothAndWritesTheDiff) {
     ASSERT_TRUE(size) << "no difference image";
     EXPECT_EQ(size->width, 16u);
     EXPECT_EQ(size->height, 16u);
+}
+
+// ---- the limits of compare/judge.h ----
+
+// An 8-bit RGBA PNG that keeps its alpha (writePng writes RGB).
+void writeRgbaPng(const shadelab::Image& image, const fs::path& path) {
+    png_image png{};
+    png.version = PNG_IMAGE_VERSION;
+    png.width = png_uint_32(image.width);
+    png.height = png_uint_32(image.height);
+    png.format = PNG_FORMAT_RGBA;
+    ASSERT_TRUE(png_image_write_to_file(&png, path.c_str(), 0, image.rgba.data(), 0, nullptr)) << png.message;
+}
+
+// 64x64 grey, and the same with an 8x8 light square at (8, 8): a difference every metric sees, on few
+// enough pixels that FLIP's median (its filters spread the square a few pixels) is 0.
+void writeSquarePair(const fs::path& dir) {
+    const shadelab::Image grey = filled(64, 64, 60);
+    shadelab::Image square = grey;
+    shadelab::fillRect(square, 8, 8, 8, 8, {220, 220, 220, 255});
+    shadelab::writePng(square, dir / "square.png");
+    shadelab::writePng(grey, dir / "grey.png");
+}
+
+std::vector<std::string> plus(std::vector<std::string> args, const std::vector<std::string>& more) {
+    args.insert(args.end(), more.begin(), more.end());
+    return args;
+}
+
+// Alpha is compared: a fully transparent picture fails against the opaque one of the same colour, and
+// passes with --ignore-alpha, which the JSON says.
+TEST_F(CliTest, CompareComparesAlphaUnlessIgnored) {
+    shadelab::Image transparent = filled(16, 16, 120);
+    for (std::size_t i = 3; i < transparent.rgba.size(); i += 4) transparent.rgba[i] = 0;
+    writeRgbaPng(transparent, dir_ / "transparent.png");
+    shadelab::writePng(filled(16, 16, 120), dir_ / "opaque.png");
+    const Outcome compared = shadelab({"compare", "transparent.png", "opaque.png", "--json"});
+    EXPECT_EQ(compared.exitCode, 1) << describe(compared);
+    const nlohmann::json j = nlohmann::json::parse(compared.out);
+    EXPECT_EQ(j["alpha_compared"], true);
+    EXPECT_EQ(j["max_delta"], 255);
+    const Outcome ignored = shadelab({"compare", "transparent.png", "opaque.png", "--ignore-alpha",
+                                      "--perceptual-max-pixels", "0", "--json"});
+    EXPECT_EQ(ignored.exitCode, 0) << describe(ignored);
+    const nlohmann::json k = nlohmann::json::parse(ignored.out);
+    EXPECT_EQ(k["alpha_compared"], false);
+    EXPECT_EQ(k["max_delta"], 0);
+    EXPECT_EQ(k["perceptual"]["differing_pixels"], 0) << "nor does the perceptual delta see alpha";
+}
+
+// --ignore leaves its rectangles out of every figure, and --diff draws what was left out (by --ignore or
+// --mask) dark grey rather than as a difference.
+TEST_F(CliTest, CompareIgnoreAndMaskLeaveOutAndTheDiffShowsIt) {
+    writeSquarePair(dir_);
+    const Outcome whole = shadelab({"compare", "square.png", "grey.png"});
+    EXPECT_EQ(whole.exitCode, 1) << describe(whole);
+    const Outcome ignored = shadelab({"compare", "square.png", "grey.png", "--ignore", "8,8,8,8",
+                                      "--perceptual-max-pixels", "0", "--ssim-min", "1", "--json"});
+    EXPECT_EQ(ignored.exitCode, 0) << describe(ignored);
+    const nlohmann::json j = nlohmann::json::parse(ignored.out);
+    EXPECT_EQ(j["compared_pixels"], 64 * 64 - 64);
+    EXPECT_EQ(j["ignore"], (nlohmann::json::array({{{"x", 8}, {"y", 8}, {"width", 8}, {"height", 8}}})));
+
+    // Half the square ignored, and a mask leaving out the first row: the diff shows each as grey.
+    shadelab::Image mask = filled(64, 64, 255);
+    shadelab::fillRect(mask, 0, 0, 64, 1, {0, 0, 0, 255});
+    shadelab::writePng(mask, dir_ / "mask.png");
+    const Outcome half = shadelab({"compare", "square.png", "grey.png", "--ignore", "8,8,4,8", "--mask",
+                                   "mask.png", "--diff", "d.png"});
+    EXPECT_EQ(half.exitCode, 1) << describe(half);
+    EXPECT_NE(half.out.find("dark grey"), std::string::npos) << half.out;
+    const shadelab::Image diff = shadelab::readPng(dir_ / "d.png");
+    const auto at = [&](int x, int y) {
+        const std::uint8_t* p = diff.pixel(x, y);
+        return glm::u8vec4(p[0], p[1], p[2], p[3]);
+    };
+    EXPECT_EQ(at(9, 9), shadelab::kDiffLeftOut) << "inside --ignore";
+    EXPECT_EQ(at(20, 0), shadelab::kDiffLeftOut) << "black in --mask";
+    EXPECT_EQ(at(13, 9), glm::u8vec4(255, 255, 255, 255)) << "compared and different: 160 x8, clamped";
+    EXPECT_EQ(at(20, 20), glm::u8vec4(0, 0, 0, 255)) << "compared and the same";
+}
+
+// Each metric's flag fails the comparison beyond its limit and passes within it, figures from --json.
+TEST_F(CliTest, CompareEachMetricLimitPassesAndFails) {
+    writeSquarePair(dir_);
+    const std::vector<std::string> loose{"compare", "square.png", "grey.png", "--max",
+                                         "255",     "--mean",     "255",      "--json"};
+    const Outcome figures = shadelab(plus(loose, {"--flip-mean", "1"}));
+    ASSERT_EQ(figures.exitCode, 0) << describe(figures);
+    const nlohmann::json f = nlohmann::json::parse(figures.out);
+    const double ssim = f["ssim"].get<double>();
+    const long differing = f["perceptual"]["differing_pixels"].get<long>();
+    const double flipMean = f["flip"]["mean"].get<double>();
+    ASSERT_LT(ssim, 0.99);
+    ASSERT_GT(differing, 0);
+    ASSERT_GT(flipMean, 0.0);
+    const auto number = [](double v) { return std::to_string(v); };
+    struct Row {
+        std::vector<std::string> passing, failing;
+        std::string flag;
+    };
+    const std::vector<Row> rows{
+        {{"--ssim-min", number(ssim - 0.001)}, {"--ssim-min", number(ssim + 0.001)}, "--ssim-min"},
+        {{"--perceptual-max-pixels", std::to_string(differing)},
+         {"--perceptual-max-pixels", std::to_string(differing - 1)},
+         "--perceptual-max-pixels"},
+        // 60 against 220 is a YIQ delta far under threshold 1's 35215: nothing differs at 1.
+        {{"--perceptual-max-pixels", "0", "--perceptual-threshold", "1"},
+         {"--perceptual-max-pixels", "0", "--perceptual-threshold", "0.1"},
+         "--perceptual-max-pixels"},
+        {{"--flip-mean", number(flipMean + 0.001)}, {"--flip-mean", number(flipMean - 0.001)}, "--flip-mean"},
+        {{"--flip-percentile", "50:0.001"}, {"--flip-percentile", "99:0.001"}, "--flip-percentile"},
+    };
+    for (const Row& row : rows) {
+        const Outcome pass = shadelab(plus(loose, row.passing));
+        EXPECT_EQ(pass.exitCode, 0) << row.flag << ": " << describe(pass);
+        const Outcome fail = shadelab(plus(loose, row.failing));
+        EXPECT_EQ(fail.exitCode, 1) << row.flag << ": " << describe(fail);
+        if (fail.exitCode != 1) continue;
+        const nlohmann::json j = nlohmann::json::parse(fail.out);
+        ASSERT_EQ(j["failures"].size(), 1u) << fail.out;
+        EXPECT_NE(j["failures"][0].get<std::string>().find(row.flag), std::string::npos) << fail.out;
+    }
+}
+
+// --json holds every figure and every limit, and a line for each failed limit; --heatmap's path when written.
+TEST_F(CliTest, CompareJsonHoldsEveryFigureAndFailedLimit) {
+    writeSquarePair(dir_);
+    const Outcome r = shadelab({"compare",    "square.png",
+                                "grey.png",   "--ssim-min",
+                                "0.999",      "--perceptual-max-pixels",
+                                "3",          "--perceptual-threshold",
+                                "0.05",       "--flip-mean",
+                                "0.001",      "--flip-percentile",
+                                "95:0.5",     "--flip-percentile",
+                                "99.5:0.001", "--ignore",
+                                "0,0,2,2",    "--heatmap",
+                                "h.png",      "--json"});
+    EXPECT_EQ(r.exitCode, 1) << describe(r);
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    const nlohmann::json& l = j["limits"];
+    EXPECT_EQ(l["ssim_min"], 0.999);
+    EXPECT_EQ(l["perceptual_max_pixels"], 3);
+    EXPECT_EQ(l["perceptual_threshold"], 0.05);
+    EXPECT_EQ(l["flip_mean"], 0.001);
+    EXPECT_EQ(l["flip_percentiles"], (nlohmann::json::array({{{"percentile", 95.0}, {"limit", 0.5}},
+                                                             {{"percentile", 99.5}, {"limit", 0.001}}})));
+    EXPECT_TRUE(j["ssim"].is_number());
+    EXPECT_TRUE(j["perceptual"]["differing_pixels"].is_number_integer());
+    EXPECT_TRUE(j["perceptual"]["antialiased_pixels"].is_number_integer());
+    EXPECT_EQ(j["perceptual"]["threshold"], 0.05);
+    EXPECT_TRUE(j["flip"]["mean"].is_number());
+    ASSERT_EQ(j["flip"]["percentiles"].size(), 2u);
+    EXPECT_EQ(j["flip"]["percentiles"][1]["percentile"], 99.5);
+    EXPECT_TRUE(j["flip"]["percentiles"][1]["value"].is_number());
+    EXPECT_EQ(j["alpha_compared"], true);
+    EXPECT_EQ(j["ignore"].size(), 1u);
+    std::string failures;
+    for (const auto& f : j["failures"]) failures += f.get<std::string>() + "\n";
+    for (const char* flag :
+         {"--max", "--ssim-min", "--perceptual-max-pixels", "--flip-mean", "--flip-percentile 99.50"})
+        EXPECT_NE(failures.find(flag), std::string::npos) << flag << " not among\n" << failures;
+    EXPECT_EQ(failures.find("--flip-percentile 95.00"), std::string::npos) << "95:0.5 holds\n" << failures;
+    EXPECT_EQ(j["heatmap"], "h.png");
+    const shadelab::Image heat = shadelab::readPng(dir_ / "h.png");
+    EXPECT_GE(heat.width, 64);
+    EXPECT_GT(heat.height, 64) << "the picture and its scale under it";
+
+    const Outcome noFlip = shadelab({"compare", "square.png", "grey.png", "--json"});
+    EXPECT_FALSE(nlohmann::json::parse(noFlip.out).contains("flip")) << "FLIP only when a limit asks for it";
+}
+
+// A bad value exits 2 before anything is read, naming the flag and the value.
+TEST_F(CliTest, CompareRefusesBadLimitValuesByName) {
+    shadelab::writePng(filled(16, 16, 0), dir_ / "a.png");
+    const std::vector<std::pair<std::string, std::string>> bad{
+        {"--ssim-min", "nan"},
+        {"--ssim-min", "1.5"},
+        {"--mean", "nan"},
+        {"--mean", "-1"},
+        {"--max", "256"},
+        {"--outliers", "-3"},
+        {"--perceptual-max-pixels", "-1"},
+        {"--perceptual-max-pixels", "2.5"},
+        {"--perceptual-threshold", "1.5"},
+        {"--perceptual-threshold", "inf"},
+        {"--flip-mean", "nan"},
+        {"--flip-percentile", "99"},
+        {"--flip-percentile", "101:0.1"},
+        {"--flip-percentile", "50:2"},
+        {"--ignore", "1,2,3"},
+        {"--ignore", "0,0,0,5"},
+        {"--ignore", "a,b,c,d"},
+        {"--ignore", "1,2,3,4,5"},
+        {"--ignore", "10,0,10,10"}, // past the right edge of 16x16
+    };
+    for (const auto& [flag, value] : bad) {
+        const Outcome r = shadelab({"compare", "a.png", "a.png", flag, value});
+        EXPECT_EQ(r.exitCode, 2) << flag << " " << value << ": " << describe(r);
+        EXPECT_NE(r.err.find(flag), std::string::npos) << describe(r);
+        EXPECT_NE(r.err.find(value), std::string::npos) << describe(r);
+        EXPECT_TRUE(r.out.empty()) << describe(r);
+    }
+}
+
+// The light program answers as shadelab does: the same JSON to the byte, the same exit codes.
+TEST_F(CliTest, ShadelabCompareGivesTheSameAnswers) {
+    writeSquarePair(dir_);
+    RunOptions light;
+    light.program = SHADELAB_COMPARE_EXE;
+    for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
+             {"compare", "square.png", "grey.png", "--json", "--ssim-min", "0.9", "--flip-percentile",
+              "99:0.5"},
+             {"compare", "grey.png", "grey.png", "--json", "--ignore", "1,1,4,4"},
+             {"compare", "grey.png", "grey.png", "--ssim-min", "nan"},
+             {"compare", "square.png", "grey.png", "--max", "255", "--mean", "255"}}) {
+        const Outcome full = shadelab(args);
+        const Outcome small = runWith(args, dir_, light);
+        EXPECT_EQ(small.exitCode, full.exitCode) << describe(small) << describe(full);
+        EXPECT_EQ(small.out, full.out);
+    }
 }
 
 } // namespace

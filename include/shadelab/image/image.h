@@ -62,9 +62,10 @@ struct Tolerance {
     int maxDelta = 0;      // largest per-channel difference allowed outside the outlier budget
     double meanDelta = 0;  // largest mean per-channel difference over the whole image
     int outlierBudget = 0; // pixels allowed to exceed maxDelta (silhouette pixels)
-    // Alpha as a fourth compared channel. Off for the image tests: a GL read-back's alpha is coverage and
-    // their references are RGB; on for `shadelab compare`, where a transparent image must not pass for an
-    // opaque one (docs/ci-engineers.md "Alpha").
+    // Alpha's difference joins each pixel's largest difference (so --max and the outliers), while the mean
+    // stays the colour channels' (an opaque pair's figures are the same either way). Off for the image
+    // tests: a GL read-back's alpha is coverage and their references are RGB; on for `shadelab compare`,
+    // where a transparent image must not pass for an opaque one.
     bool compareAlpha = false;
 };
 struct Comparison {
@@ -78,8 +79,9 @@ struct Comparison {
     Tolerance tolerance; // the limits this was judged against, for summary()
     std::string summary() const;
 };
-// Per-channel differences of the colour channels (and alpha with tolerance.compareAlpha). With a `mask` of
-// the same size, pixels that are black in it are not compared: they count in no figure, the mean included.
+// Per-channel differences of the colour channels (alpha in the max with tolerance.compareAlpha). With a
+// `mask` of the same size, pixels that are black in it are not compared: they count in no figure, the mean
+// included.
 Comparison compareImages(const Image& actual, const Image& expected, const Tolerance& tolerance,
                          const Image* mask = nullptr);
 // |actual − expected| per channel, amplified ×8 and clamped, opaque; for looking at a failure. With
