@@ -84,7 +84,7 @@ permission_tests() {
 ci_example() {
   local prefix
   prefix=$(mktemp -d)
-  cmake --install build --prefix "$prefix" >/dev/null
+  cmake --install build --component program --prefix "$prefix" >/dev/null
   (cd "$prefix" && PATH="$prefix/bin:$PATH" share/doc/shadelab/examples/ci/screenshot-regression.sh \
     --artifacts screenshot-artifacts --junit screenshot-artifacts/junit.xml &&
     test -s screenshot-artifacts/junit.xml)
