@@ -9,6 +9,7 @@
 #include <iterator>
 #include <sstream>
 #include <string_view>
+#include <utility>
 
 #include "app/check/review.h"
 #include "app/check/review_page_assets.h"
@@ -21,27 +22,16 @@ namespace {
 // `text` as HTML text or a quoted attribute's value: control characters, bidi overrides and invalid UTF-8
 // escaped by printable() (a file name's bytes are anybody's), then the five characters markup reads.
 std::string reviewPageText(std::string_view text) {
+    static constexpr std::pair<char, std::string_view> kEntities[] = {
+        {'&', "&amp;"}, {'<', "&lt;"}, {'>', "&gt;"}, {'"', "&quot;"}, {'\'', "&#39;"}};
     std::string out;
     for (char c : printable(text)) {
-        switch (c) {
-        case '&':
-            out += "&amp;";
-            break;
-        case '<':
-            out += "&lt;";
-            break;
-        case '>':
-            out += "&gt;";
-            break;
-        case '"':
-            out += "&quot;";
-            break;
-        case '\'':
-            out += "&#39;";
-            break;
-        default:
+        const auto* entity = std::find_if(std::begin(kEntities), std::end(kEntities),
+                                          [c](const auto& e) { return e.first == c; });
+        if (entity != std::end(kEntities))
+            out += entity->second;
+        else
             out += c;
-        }
     }
     return out;
 }
@@ -76,24 +66,38 @@ struct PagePng {
     std::string bytes;
     unsigned width = 0, height = 0;
 };
+// The size in a PNG's first 24 bytes (signature, IHDR length and type, width, height), or false.
+bool readIhdrSize(std::string_view head, unsigned& width, unsigned& height) {
+    static constexpr std::string_view kSignature = "\x89PNG\r\n\x1a\n";
+    if (head.size() < 24 || head.substr(0, 8) != kSignature || head.substr(12, 4) != "IHDR") return false;
+    const auto be32 = [&](std::size_t at) {
+        unsigned value = 0;
+        for (std::size_t i = 0; i < 4; ++i) value = (value << 8) | static_cast<unsigned char>(head[at + i]);
+        return value;
+    };
+    width = be32(16);
+    height = be32(20);
+    return width > 0 && height > 0;
+}
 std::optional<PagePng> readPagePng(const std::filesystem::path& path) {
     std::ifstream file(path, std::ios::binary);
     if (!file) return std::nullopt;
     PagePng png{std::string(std::istreambuf_iterator<char>(file), {}), 0, 0};
-    static constexpr std::string_view kSignature = "\x89PNG\r\n\x1a\n";
-    if (png.bytes.size() < 24 || png.bytes.compare(0, 8, kSignature) != 0 ||
-        png.bytes.compare(12, 4, "IHDR") != 0)
-        return std::nullopt;
-    const auto be32 = [&](std::size_t at) {
-        unsigned value = 0;
-        for (std::size_t i = 0; i < 4; ++i)
-            value = (value << 8) | static_cast<unsigned char>(png.bytes[at + i]);
-        return value;
-    };
-    png.width = be32(16);
-    png.height = be32(20);
-    if (png.width == 0 || png.height == 0) return std::nullopt;
+    if (!readIhdrSize(png.bytes, png.width, png.height)) return std::nullopt;
     return png;
+}
+// The zoom a case opens at: the largest of the menu's that shows its picture at most about 240 CSS pixels
+// wide (an 80-pixel test image at 3×, a full-size render at 1×); the menu changes it.
+constexpr unsigned kZooms[] = {1, 2, 3, 4, 6, 8, 12, 16};
+unsigned openingZoom(const std::filesystem::path& picture) {
+    std::ifstream file(picture, std::ios::binary);
+    std::string head(24, '\0');
+    unsigned width = 0, height = 0;
+    if (!file.read(head.data(), 24) || !readIhdrSize(head, width, height)) return 1;
+    unsigned zoom = 1;
+    for (unsigned z : kZooms)
+        if (z * width <= 240) zoom = z;
+    return zoom;
 }
 
 // Where a case goes on the page: what fails the run first, then what was expected to fail or is flaky,
@@ -116,33 +120,9 @@ PageGroup pageGroup(CaseStatus status) {
     }
     return PageGroup::Failing;
 }
-const char* pageGroupClass(PageGroup group) {
-    switch (group) {
-    case PageGroup::Failing:
-        return "g-fail";
-    case PageGroup::Expected:
-        return "g-expected";
-    case PageGroup::Passing:
-        return "g-pass";
-    case PageGroup::Skipped:
-        return "g-skip";
-    }
-    return "g-fail";
-}
-
-const char* expectationWord(Expectation expectation) { // the expectations file's own spelling
-    switch (expectation) {
-    case Expectation::Pass:
-        return "PASS";
-    case Expectation::Fail:
-        return "FAIL";
-    case Expectation::Skip:
-        return "SKIP";
-    case Expectation::Flaky:
-        return "FLAKY";
-    }
-    return "PASS";
-}
+constexpr const char* kGroupClasses[] = {"g-fail", "g-expected", "g-pass", "g-skip"}; // by PageGroup
+// By Expectation: the expectations file's own spelling.
+constexpr const char* kExpectationWords[] = {"PASS", "FAIL", "SKIP", "FLAKY"};
 
 // A rule's comment as a link when it is one an engineer can follow (http or https, nothing a browser would
 // run or resolve locally), otherwise as text.
@@ -234,106 +214,104 @@ public:
 
 private:
     // An <img> of the file `name` under the out folder, or a line saying why there is none.
-    std::string image(const std::string& name, const char* role, const char* alt,
-                      unsigned* zoomWidth = nullptr) {
+    std::string image(const std::string& name, const char* role, const char* alt) {
         const std::optional<PagePng> png = name.empty() ? std::nullopt : readPagePng(out_ / name);
         if (!png)
             return std::string("<p class=\"missing\">") + alt + ": " +
                    (name.empty() ? std::string("none") : "unreadable " + reviewPageText(name)) + "</p>";
-        if (zoomWidth != nullptr) *zoomWidth = std::max(*zoomWidth, png->width);
         return std::string("<img class=\"px ") + role + "\" alt=\"" + alt + "\" title=\"" +
                reviewPageText(name) + "\" style=\"--w:" + std::to_string(png->width) +
                ";--h:" + std::to_string(png->height) + "\" src=\"data:image/png;base64," +
                reviewPageBase64(png->bytes) + "\">";
     }
     void writeCase(const CaseResult& c, int index);
-    void writeViewer(std::ostringstream& html, const CaseResult& c, int index, unsigned& width);
+    void writeViewer(const CaseResult& c, int index, unsigned zoom);
 
     const ReviewReport& report_;
     std::filesystem::path out_;
     std::ostringstream html_;
 };
 
-void PageWriter::writeViewer(std::ostringstream& html, const CaseResult& c, int index, unsigned& width) {
+void PageWriter::writeViewer(const CaseResult& c, int index, unsigned zoom) {
     const std::string mode = "mode-" + std::to_string(index);
     if (c.actualFile.empty() || c.expectedFile.empty()) { // NEW or STALE: one picture, nothing to compare
-        html << "<div class=\"single\"><figure>"
-             << image(c.actualFile.empty() ? c.expectedFile : c.actualFile, "one",
-                      c.actualFile.empty() ? "reference" : "new", &width)
-             << "<figcaption>" << (c.actualFile.empty() ? "reference (no new image)" : "new (no reference)")
-             << "</figcaption></figure></div>";
+        html_ << "<div class=\"single\"><figure>"
+              << image(c.actualFile.empty() ? c.expectedFile : c.actualFile, "one",
+                       c.actualFile.empty() ? "reference" : "new")
+              << "<figcaption>" << (c.actualFile.empty() ? "reference (no new image)" : "new (no reference)")
+              << "</figcaption></figure></div>";
         return;
     }
-    html << "<div class=\"viewer\" data-mode=\"flip\"><div class=\"controls\">";
+    html_ << "<div class=\"viewer\" data-mode=\"flip\"><div class=\"controls\">";
     for (const auto& [value, label] :
          {std::pair{"flip", "hover-flip"}, {"slide", "slide"}, {"2up", "2-up"}, {"blend", "blend"}})
-        html << "<label><input type=\"radio\" name=\"" << mode << "\" value=\"" << value << "\""
-             << (std::string_view(value) == "flip" ? " checked" : "") << "> " << label << "</label>";
-    html << "<input type=\"range\" class=\"split\" min=\"0\" max=\"100\" value=\"50\" aria-label=\"slide\">"
-         << "<input type=\"range\" class=\"blend\" min=\"0\" max=\"100\" value=\"50\" aria-label=\"blend\">"
-         << "<label>zoom <select class=\"zoom\">";
-    for (int z : {1, 2, 3, 4, 6, 8, 12, 16}) html << "<option value=\"" << z << "\">" << z << "×</option>";
-    html << "</select></label><span class=\"legend\">"
-         << "<span class=\"l-flip\">new; the reference while the pointer is over it</span>"
-         << "<span class=\"l-slide\">new on the left, the reference right of the slider's position</span>"
-         << "<span class=\"l-2up\">new, then the reference</span>"
-         << "<span class=\"l-blend\">the reference over new at the slider's opacity</span></span></div>"
-         << "<div class=\"frame\"><div class=\"stage\">" << image(c.actualFile, "new", "new", &width)
-         << image(c.expectedFile, "ref", "reference", &width) << "</div></div></div>";
+        html_ << "<label><input type=\"radio\" name=\"" << mode << "\" value=\"" << value << "\""
+              << (std::string_view(value) == "flip" ? " checked" : "") << "> " << label << "</label>";
+    html_ << "<input type=\"range\" class=\"split\" min=\"0\" max=\"100\" value=\"50\" aria-label=\"slide\">"
+          << "<input type=\"range\" class=\"blend\" min=\"0\" max=\"100\" value=\"50\" aria-label=\"blend\">"
+          << "<label>zoom <select class=\"zoom\">";
+    for (unsigned z : kZooms)
+        html_ << "<option value=\"" << z << "\"" << (z == zoom ? " selected" : "") << ">" << z
+              << "×</option>";
+    html_ << "</select></label></div><p class=\"legend\">"
+          << "<span class=\"l-flip\">new; the reference while the pointer is over it</span>"
+          << "<span class=\"l-slide\">new on the left, the reference right of the slider's position</span>"
+          << "<span class=\"l-2up\">new, then the reference</span>"
+          << "<span class=\"l-blend\">the reference over new at the slider's opacity</span></p>"
+          << "<div class=\"frame\"><div class=\"stage\">" << image(c.actualFile, "new", "new")
+          << image(c.expectedFile, "ref", "reference") << "</div></div></div>";
 }
 
 void PageWriter::writeCase(const CaseResult& c, int index) {
     const PageGroup group = pageGroup(c.status);
-    std::ostringstream html;
-    html << "<h3><span class=\"badge\">" << reviewPageText(statusName(c.status))
-         << "</span> <span class=\"case-name\">" << reviewPageText(c.name) << "</span></h3>";
-    html << "<p class=\"expectation\">expected: ";
+    const std::string& picture = c.actualFile.empty() ? c.expectedFile : c.actualFile;
+    const unsigned zoom = picture.empty() ? 1 : openingZoom(out_ / picture);
+    html_ << "<section class=\"case " << kGroupClasses[int(group)] << "\" id=\"case-" << index
+          << "\" tabindex=\"-1\" data-status=\"" << reviewPageText(statusName(c.status))
+          << "\" data-fails-run=\"" << (group == PageGroup::Failing ? 1 : 0) << "\" style=\"--zoom:" << zoom
+          << "\">";
+    html_ << "<h3><span class=\"badge\">" << reviewPageText(statusName(c.status))
+          << "</span> <span class=\"case-name\">" << reviewPageText(c.name) << "</span></h3>";
+    html_ << "<p class=\"expectation\">expected: ";
     if (c.rule != nullptr) {
-        html << expectationWord(c.rule->expectation) << " (expectations line " << c.rule->line << ")";
-        if (!c.rule->comment.empty()) html << " · " << bugLink(c.rule->comment);
+        html_ << kExpectationWords[int(c.rule->expectation)] << " (expectations line " << c.rule->line << ")";
+        if (!c.rule->comment.empty()) html_ << " · " << bugLink(c.rule->comment);
     } else {
-        html << "PASS (no rule)";
+        html_ << "PASS (no rule)";
     }
-    html << "</p>";
-    if (!c.message.empty()) html << "<p class=\"message\">" << reviewPageText(c.message) << "</p>";
+    html_ << "</p>";
+    if (!c.message.empty()) html_ << "<p class=\"message\">" << reviewPageText(c.message) << "</p>";
     const ApprovedResult* held =
         c.best >= 0 && std::size_t(c.best) < c.approved.size() ? &c.approved[c.best] : nullptr;
     if (held != nullptr) {
-        html << "<p class=\"approved\">held to " << reviewPageText(held->expected.filename().string());
-        if (c.approved.size() > 1) html << " (the closest of " << c.approved.size() << " approved images)";
-        if (!held->error.empty()) html << ": " << reviewPageText(held->error);
-        html << "</p>";
+        html_ << "<p class=\"approved\">held to " << reviewPageText(held->expected.filename().string());
+        if (c.approved.size() > 1) html_ << " (the closest of " << c.approved.size() << " approved images)";
+        if (!held->error.empty()) html_ << ": " << reviewPageText(held->error);
+        html_ << "</p>";
     }
+    html_ << "<div class=\"case-body\">";
     if (held != nullptr && held->judgement) {
-        html
-            << "<table "
-               "class=\"figures\"><thead><tr><th>figure</th><th>value</th><th>limit</th></tr></thead><tbody>";
+        html_
+            << "<table class=\"figures\"><thead><tr><th>figure</th><th>value</th><th>limit</th></tr></thead>"
+            << "<tbody>";
         for (const FigureRow& row : figureRows(*held->judgement, report_.options.limits))
-            html << "<tr" << (row.failed ? " class=\"failed\"" : "") << "><td>" << reviewPageText(row.figure)
-                 << "</td><td>" << reviewPageText(row.value) << "</td><td>" << reviewPageText(row.limit)
-                 << "</td></tr>";
-        html << "</tbody></table>";
+            html_ << "<tr" << (row.failed ? " class=\"failed\"" : "") << "><td>" << reviewPageText(row.figure)
+                  << "</td><td>" << reviewPageText(row.value) << "</td><td>" << reviewPageText(row.limit)
+                  << "</td></tr>";
+        html_ << "</tbody></table>";
     }
-    unsigned width = 0;
-    writeViewer(html, c, index, width);
+    writeViewer(c, index, zoom);
     if (!c.diffFile.empty() || !c.heatmapFile.empty()) {
-        html << "<div class=\"maps\">";
+        html_ << "<div class=\"maps\">";
         if (!c.diffFile.empty())
-            html << "<figure>" << image(c.diffFile, "diff", "difference")
-                 << "<figcaption>difference</figcaption></figure>";
+            html_ << "<figure>" << image(c.diffFile, "diff", "difference")
+                  << "<figcaption>difference</figcaption></figure>";
         if (!c.heatmapFile.empty())
-            html << "<figure>" << image(c.heatmapFile, "heat", "heatmap")
-                 << "<figcaption>heatmap</figcaption></figure>";
-        html << "</div>";
+            html_ << "<figure>" << image(c.heatmapFile, "heat", "heatmap")
+                  << "<figcaption>heatmap</figcaption></figure>";
+        html_ << "</div>";
     }
-    // The first zoom that shows the picture about 320 CSS pixels wide: a 64-pixel test image is judged at 5×,
-    // a full-size render at 1× (the zoom menu changes it).
-    const unsigned zoom = std::clamp(width == 0 ? 1u : 320u / width, 1u, 16u);
-    html_ << "<section class=\"case " << pageGroupClass(group) << "\" id=\"case-" << index
-          << "\" tabindex=\"-1\""
-          << " data-status=\"" << reviewPageText(statusName(c.status)) << "\" data-fails-run=\""
-          << (group == PageGroup::Failing ? 1 : 0) << "\" style=\"--zoom:" << zoom << "\">" << html.str()
-          << "</section>\n";
+    html_ << "</div></section>\n";
 }
 
 std::string PageWriter::write() {
@@ -341,11 +319,9 @@ std::string PageWriter::write() {
     const std::optional<std::string_view> style = reviewPageAsset("review_page.css");
     if (!script || !style)
         throw RuntimeError("review page: the page's script or style was not embedded (a build problem)");
+    // The report's order (failures first, then by name) kept within each of the page's groups.
     std::vector<const CaseResult*> order;
     for (const CaseResult& c : report_.cases) order.push_back(&c);
-    std::stable_sort(order.begin(), order.end(), [](const CaseResult* a, const CaseResult* b) {
-        return pageGroup(a->status) < pageGroup(b->status);
-    });
     int failing = 0;
     for (const CaseResult* c : order) failing += pageGroup(c->status) == PageGroup::Failing ? 1 : 0;
 
@@ -368,8 +344,8 @@ std::string PageWriter::write() {
         const auto n =
             std::count_if(order.begin(), order.end(), [s](const CaseResult* c) { return c->status == s; });
         if (n > 0)
-            html_ << "<li class=\"" << pageGroupClass(pageGroup(s)) << "\">" << reviewPageText(statusName(s))
-                  << " <b>" << n << "</b></li>";
+            html_ << "<li class=\"" << kGroupClasses[int(pageGroup(s))] << "\">"
+                  << reviewPageText(statusName(s)) << " <b>" << n << "</b></li>";
     }
     html_ << "</ul><p class=\"run\"><span>driver: "
           << (report_.options.driver.empty() ? std::string("(none)") : reviewPageText(report_.options.driver))
