@@ -34,7 +34,7 @@ bool parseCheckNumber(const std::string& text, double& value) {
 
 // A number flag from `low` to `high`, checked as it is parsed; `fix` says what to give.
 void addCheckNumber(CLI::App& command, const std::string& flag, const std::string& help, double low,
-                    double high, const std::string& fix, std::function<void(double)> set) {
+                    double high, const std::string& fix, const std::function<void(double)>& set) {
     command.add_option_function<std::string>(
         flag,
         [flag, low, high, fix, set](const std::string& text) {

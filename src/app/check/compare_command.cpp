@@ -28,12 +28,13 @@ std::optional<PngSize> compareClaimedSize(const std::string& path) {
 }
 
 // What comparing the files will take, from their headers and sizes, against the memory budget: each image
-// decoded (4 bytes a pixel) and the files themselves, then per pixel of the larger size the difference
-// image and its rows for the encoder (7), the selection and its mask (5), SSIM's luma, its five filtered
-// moments and its map (4 bytes each: 32), the perceptual map (4), and with a FLIP limit FLIP's colour and
-// feature images and its map (about 64); and the process without GL (measured: 29 MB peak for two 64x64
-// images). The per-pixel figures are counted from the code, not measured.
-void checkCompareMemory(const CompareOptions& o) {
+// decoded (4 bytes a pixel) and the files themselves, the process without GL (measured: 29 MB peak for two
+// 64x64 images), and per pixel of the larger size `bytesPerPixel`. Checked twice: before decoding, with the
+// difference image and its rows for the encoder (7), so that the decoder's own refusal of a forged header
+// comes first; and before judging, adding the selection and its mask (5), SSIM's luma, five filtered
+// moments and map (4 bytes each: 32), the perceptual map (4) and with a FLIP limit FLIP's colour and feature
+// images and map (about 64). The per-pixel figures are counted from the code, not measured.
+void checkCompareMemory(const CompareOptions& o, double bytesPerPixel) {
     double need = kProcessBaselineBytes, largest = 0;
     std::string sizes;
     for (const std::string* path : {&o.actual, &o.expected, &o.mask}) {
@@ -49,9 +50,13 @@ void checkCompareMemory(const CompareOptions& o) {
                      std::to_string(size->height);
         }
     }
-    need += (7 + 5 + 32 + 4 + (o.limits.computeFlip() ? 64 : 0)) * largest;
+    need += bytesPerPixel * largest;
     checkMemoryBudget("comparing " + (sizes.empty() ? std::string("the images") : sizes), need,
                       "ACTUAL and EXPECTED (smaller images)");
+}
+constexpr double kDecodeBytesPerPixel = 7;
+double judgeBytesPerPixel(const CheckLimits& limits) {
+    return kDecodeBytesPerPixel + 5 + 32 + 4 + (limits.computeFlip() ? 64 : 0);
 }
 
 nlohmann::json optionalJson(const auto& value) {
@@ -168,11 +173,12 @@ int runCompare(const CompareOptions& o) {
     checkCompareOutput(o.heatmap, "--heatmap", o);
     if (!o.diff.empty() && o.diff == o.heatmap)
         throw InputError("--diff and --heatmap: both name " + printable(o.diff) + "; give each its own file");
-    checkCompareMemory(o);
+    checkCompareMemory(o, kDecodeBytesPerPixel);
     const Image actual = readCompareInput(o.actual, "ACTUAL");
     const Image expected = readCompareInput(o.expected, "EXPECTED");
     std::optional<Image> mask;
     if (!o.mask.empty()) mask = readCompareInput(o.mask, "--mask");
+    checkCompareMemory(o, judgeBytesPerPixel(o.limits));
     const Judgement j = judgeImages(actual, expected, o.limits, mask ? &*mask : nullptr);
 
     const bool writeDiff = !j.passed && !o.diff.empty();
