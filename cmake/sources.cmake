@@ -15,6 +15,8 @@ set(SHADELAB_IMAGE_NATIVE_SOURCES src/image/png.cpp)
 set(SHADELAB_CHECK_SOURCES
   src/compare/judge.cpp
   src/app/check/compare_command.cpp src/app/check/check_cli.cpp src/app/check/memory_check.cpp
+  src/app/check/expectations.cpp src/app/check/review.cpp src/app/check/review_files.cpp src/app/check/review_run.cpp
+  src/app/check/review_json.cpp src/app/check/junit.cpp
   src/app/check/review_page.cpp)
 
 # The core, no GL, a folder for each stage of the pipeline and in the order they depend on each other:

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -65,6 +66,7 @@ struct ReviewOptions {
     std::filesystem::path out;          // --out DIR: index.html and the cases' images; empty: no page
     std::filesystem::path json, junit;  // --json FILE, --junit FILE; empty: not written
     std::filesystem::path expectations; // --expectations FILE; empty: every case PASS
+    std::filesystem::path masks;        // --masks DIR: DIR/NAME.png is case NAME's mask (black = left out)
     std::string driver;                 // --driver KEY, matched by the rules' driver globs ("" matches "*")
     CheckLimits limits;                 // the same flags as compare
     std::vector<std::string> bless;     // --bless NAME (repeatable): write these cases' actual images
@@ -76,6 +78,9 @@ struct ReviewReport {
     ReviewOptions options;
     std::vector<CaseResult> cases; // failures first, then by name
     std::vector<std::string> blessed; // what --bless wrote, as "NAME -> PATH"
+    // The parsed expectations file that CaseResult::rule points into; shared, so a copied report's
+    // pointers stay valid.
+    std::shared_ptr<const std::vector<ExpectationRule>> rules;
     int count(CaseStatus status) const;
     bool failed() const; // any case whose status fails the run
 };
@@ -83,6 +88,10 @@ struct ReviewReport {
 // Judges every case (throws InputError for bad input: exit 2), blesses what was asked, writes --out,
 // --json and --junit, and prints one line a case and a summary. Exit 0 all pass, 1 a failure.
 int runReview(const ReviewOptions& options);
+
+// A judgement's figures in one line ("max 3, mean 0.0120, outliers 0/40000, SSIM 0.99870, perceptual 0 px
+// (2 anti-aliased)"): what the summary line, the JUnit failure and the page show (review_run.cpp).
+std::string judgementFigures(const Judgement& judgement);
 
 // The pieces runReview puts together, each testable alone:
 ReviewReport reviewFolders(const ReviewOptions& options);              // src/app/check/review.cpp
