@@ -186,6 +186,56 @@ TEST_F(ReviewPage, EveryLoadIsInlinedAndForbiddenByThePolicy) {
     EXPECT_EQ(html_.find("<script src"), std::string::npos);
 }
 
+TEST_F(ReviewPage, EveryStatusInItsGroup) {
+    // One case of each status, in the report's order; the page groups them: those failing the run, then
+    // expected-fail and flaky, then passing (folded), then skipped (listed without pictures).
+    ReviewReport report = fixture_.report;
+    const CaseResult model = report.cases.front();
+    report.cases.clear();
+    for (const auto& [name, status] :
+         std::vector<std::pair<std::string, CaseStatus>>{{"s-skip", CaseStatus::Skipped},
+                                                         {"s-pass", CaseStatus::Pass},
+                                                         {"s-flaky", CaseStatus::FlakyFail},
+                                                         {"s-expected", CaseStatus::ExpectedFail},
+                                                         {"s-unexpected", CaseStatus::UnexpectedPass},
+                                                         {"s-stale", CaseStatus::Stale},
+                                                         {"s-new", CaseStatus::New},
+                                                         {"s-fail", CaseStatus::Fail}}) {
+        CaseResult c = model;
+        c.name = name;
+        c.status = status;
+        if (status == CaseStatus::New) c.expectedFile.clear();
+        if (status == CaseStatus::Stale) c.actualFile = "gone.png"; // named but not there: said so
+        report.cases.push_back(c);
+    }
+    const std::string html = reviewPageHtml(report, dir_ / "out");
+    const auto at = [&](const std::string& text) { return html.find(text); };
+    const std::vector<std::string> order = {"<h2>Failing (4)</h2>",
+                                            "s-unexpected",
+                                            "s-stale",
+                                            "s-new",
+                                            "s-fail",
+                                            "<h2>Expected to fail or flaky (2)</h2>",
+                                            "s-flaky",
+                                            "s-expected",
+                                            "<summary>Passing (1)</summary>",
+                                            "s-pass",
+                                            "</details>",
+                                            "<h2>Skipped (1)</h2>",
+                                            "s-skip"};
+    for (std::size_t i = 1; i < order.size(); ++i) {
+        ASSERT_NE(at(order[i]), std::string::npos) << order[i];
+        EXPECT_LT(at(order[i - 1]), at(order[i])) << order[i - 1] << " before " << order[i];
+    }
+    // NEW: its one picture, no viewer; STALE: the missing file named; SKIP: no picture.
+    const std::string newCase = html.substr(at("s-new"), at("s-fail") - at("s-new"));
+    EXPECT_EQ(newCase.find("class=\"viewer\""), std::string::npos);
+    EXPECT_NE(newCase.find("new (no reference)"), std::string::npos);
+    const std::string staleCase = html.substr(at("s-stale"), at("s-new") - at("s-stale"));
+    EXPECT_NE(staleCase.find("unreadable gone.png"), std::string::npos);
+    EXPECT_EQ(html.substr(at("<h2>Skipped")).find("<img"), std::string::npos);
+}
+
 // RFC 4648 §4 base64, written out bit by bit (the page has its own encoder).
 std::string base64(const std::string& bytes) {
     static const std::string kAlphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";

@@ -122,7 +122,7 @@ PageGroup pageGroup(CaseStatus status) {
 }
 constexpr const char* kGroupClasses[] = {"g-fail", "g-expected", "g-pass", "g-skip"}; // by PageGroup
 // By Expectation: the expectations file's own spelling.
-constexpr const char* kExpectationWords[] = {"PASS", "FAIL", "SKIP", "FLAKY"};
+constexpr const char* kPageExpectationWords[] = {"PASS", "FAIL", "SKIP", "FLAKY"};
 
 // A rule's comment as a link when it is one an engineer can follow (http or https, nothing a browser would
 // run or resolve locally), otherwise as text.
@@ -274,7 +274,8 @@ void PageWriter::writeCase(const CaseResult& c, int index) {
           << "</span> <span class=\"case-name\">" << reviewPageText(c.name) << "</span></h3>";
     html_ << "<p class=\"expectation\">expected: ";
     if (c.rule != nullptr) {
-        html_ << kExpectationWords[int(c.rule->expectation)] << " (expectations line " << c.rule->line << ")";
+        html_ << kPageExpectationWords[int(c.rule->expectation)] << " (expectations line " << c.rule->line
+              << ")";
         if (!c.rule->comment.empty()) html_ << " · " << bugLink(c.rule->comment);
     } else {
         html_ << "PASS (no rule)";
