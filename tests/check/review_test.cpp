@@ -206,6 +206,20 @@ TEST_F(Review, TheDifferenceImageHonoursTheSelectionOfAFailingCase) {
     EXPECT_EQ(diff.pixel(4, 4)[0], 255);
 }
 
+TEST_F(Review, ACasesMaskLeavesItsBlackPixelsOut) {
+    put(actual, "masked", grey(4, 4, 100, 250));
+    put(expected, "masked", grey(4, 4, 100));
+    put(actual, "unmasked", grey(4, 4, 100, 250)); // no mask of its own: every pixel counts
+    put(expected, "unmasked", grey(4, 4, 100));
+    fs::create_directories(root / "masks");
+    put(root / "masks", "masked", grey(4, 4, 255, 0)); // black at the differing pixel (1, 1)
+    ReviewOptions o = options();
+    o.masks = root / "masks";
+    const ReviewReport report = reviewFolders(o);
+    EXPECT_EQ(caseNamed(report, "masked").status, CaseStatus::Pass);
+    EXPECT_EQ(caseNamed(report, "unmasked").status, CaseStatus::Fail);
+}
+
 TEST_F(Review, AnOutputThatIsAnInputIsRefused) {
     put(actual, "a", grey(4, 4, 100));
     put(expected, "a", grey(4, 4, 100));
