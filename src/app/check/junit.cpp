@@ -152,8 +152,7 @@ std::string junitXml(const ReviewReport& report) {
             break;
         case CaseStatus::ExpectedFail:
         case CaseStatus::FlakyFail:
-            xml += ">\n    <system-out>" +
-                   junitEscape(status + junitBug(c) + ": " + c.message + "\n" + junitFigures(c), false) +
+            xml += ">\n    <system-out>" + junitEscape(status + junitBug(c) + "\n" + junitFigures(c), false) +
                    "</system-out>\n  </testcase>\n";
             break;
         case CaseStatus::Pass:
