@@ -155,7 +155,8 @@ fs::path prepareReviewOutputs(const ReviewOptions& o, const std::vector<fs::path
     for (const auto& [path, field] : files) {
         if (path.empty()) continue;
         (void)resolveOutput(path, field);
-        refuseStandardOutputAlias(path, field, "the summary", "review.json");
+        refuseStandardOutputAlias(path, field, "the summary",
+                                  field == "--json" ? "review.json" : "junit.xml");
         for (const fs::path& input : inputs) refuseOverwritingInput(path, field, input);
     }
     if (!o.json.empty() && (o.json == o.junit || isSameFile(o.json, o.junit)))
