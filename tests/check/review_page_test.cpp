@@ -170,6 +170,13 @@ TEST_F(ReviewPage, InvalidUtf8AndControlsInANameAreReplaced) {
 
 TEST_F(ReviewPage, EveryLoadIsInlinedAndForbiddenByThePolicy) {
     EXPECT_NE(html_.find("default-src 'none'; img-src data:;"), std::string::npos);
+    // The one script runs by the policy's nonce, which differs from page to page.
+    std::smatch nonce;
+    std::regex_search(html_, nonce, std::regex("script-src 'nonce-([A-Za-z0-9+/=]{24})'"));
+    ASSERT_FALSE(nonce.empty());
+    EXPECT_NE(html_.find("<script nonce=\"" + nonce[1].str() + "\">"), std::string::npos);
+    EXPECT_EQ(reviewPageHtml(fixture_.report, dir_ / "out").find(nonce[1].str()), std::string::npos)
+        << "the same nonce twice";
     const std::regex reference(R"re((src|href)\s*=\s*"([^"]*)")re");
     int images = 0;
     for (std::sregex_iterator it(html_.begin(), html_.end(), reference), end; it != end; ++it) {
@@ -348,6 +355,7 @@ TEST_F(ReviewPage, InHeadlessChromium) {
         EXPECT_EQ(resource.get<std::string>().rfind("data:", 0), 0u) << resource;
     EXPECT_EQ(seen.at("requests"), json::array());
     EXPECT_EQ(seen.at("console"), json::array());
+    EXPECT_FALSE(seen.at("injectedHandlerRan")) << "the policy lets an inline event handler run";
     EXPECT_GT(fs::file_size(desktop), 0u);
     EXPECT_GT(fs::file_size(phone), 0u);
 }

@@ -143,6 +143,12 @@ def probe(browser, url, desktop, phone):
                 requests.append(requested)
     seen['requests'] = requests
     seen['console'] = [e['message'] for e in browser.get_log('browser')]
+
+    # The policy itself: an inline handler put on the page now (as markup past the escaping would be) is
+    # not run.
+    seen['injectedHandlerRan'] = js('window.__ran = false; const b = document.createElement("button");'
+                                    'b.setAttribute("onclick", "window.__ran = true"); document.body.append(b);'
+                                    'b.click(); return window.__ran')
     return seen
 
 
