@@ -182,6 +182,30 @@ TEST_F(ReviewOutput, TheJunitIsValidAgainstTheSchemaWithHostileNames) {
     EXPECT_EQ(xml.find('\x01'), std::string::npos); // a control character XML 1.0 forbids is replaced
 }
 
+TEST_F(ReviewOutput, BadInputWritesNothing) {
+    fourCases();
+    writeText(root / "exp.txt", "fail * FAIL\nnew * MAYBE\n");
+    ReviewOptions o = options();
+    o.expectations = root / "exp.txt";
+    o.json = root / "review.json";
+    o.junit = root / "junit.xml";
+    o.out = root / "page";
+    o.blessFailed = true;
+    const std::string failBefore = bytesOf(expected / "fail.png");
+    try {
+        (void)runReview(o);
+        ADD_FAILURE() << "no InputError";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  (root / "exp.txt").string() +
+                      ":2: expectation: got 'MAYBE' (one of PASS, FAIL, SKIP, FLAKY, in capitals)");
+    }
+    EXPECT_FALSE(fs::exists(o.json));
+    EXPECT_FALSE(fs::exists(o.junit));
+    EXPECT_FALSE(fs::exists(o.out));
+    EXPECT_EQ(bytesOf(expected / "fail.png"), failBefore); // nothing blessed
+}
+
 TEST_F(ReviewOutput, RunReviewPrintsACaseALineAndWritesItsFiles) {
     fourCases();
     ReviewOptions o = options();
