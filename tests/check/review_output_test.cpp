@@ -16,12 +16,12 @@ class ReviewOutput : public ReviewFixture {
 protected:
     // A pass, a failure, a new and a stale case.
     void fourCases() {
-        put(actual, "pass", grey(4, 4, 100));
-        put(expected, "pass", grey(4, 4, 100));
-        put(actual, "fail", grey(4, 4, 100, 200));
-        put(expected, "fail", grey(4, 4, 100));
-        put(actual, "new", grey(4, 4, 30));
-        put(expected, "stale", grey(4, 4, 30));
+        put(actual, "pass", grey(16, 16, 100));
+        put(expected, "pass", grey(16, 16, 100));
+        put(actual, "fail", grey(16, 16, 100, 200));
+        put(expected, "fail", grey(16, 16, 100));
+        put(actual, "new", grey(16, 16, 30));
+        put(expected, "stale", grey(16, 16, 30));
     }
     static std::string inputErrorOf(const ReviewOptions& o) {
         try {
@@ -81,8 +81,8 @@ TEST_F(ReviewOutput, BlessingWhatHasNoActualImageIsBadInput) {
 }
 
 TEST_F(ReviewOutput, BlessNeverWritesThroughALink) {
-    put(actual, "fail", grey(4, 4, 100, 200));
-    put(root, "target", grey(4, 4, 100));
+    put(actual, "fail", grey(16, 16, 100, 200));
+    put(root, "target", grey(16, 16, 100));
     fs::create_symlink(root / "target.png", expected / "fail.png");
     const std::string before = bytesOf(root / "target.png");
     ReviewOptions o = options();
@@ -94,7 +94,7 @@ TEST_F(ReviewOutput, BlessNeverWritesThroughALink) {
 
 TEST_F(ReviewOutput, TheJsonHoldsEveryCaseWithItsFiguresAndFiles) {
     fourCases();
-    put(actual, kHostile, grey(4, 4, 100, 200));
+    put(actual, kHostile, grey(16, 16, 100, 200));
     writeText(root / "exp.txt", "x* * FAIL # https://example.org/<1>\n");
     ReviewOptions o = options();
     o.out = root / "page";
@@ -143,13 +143,13 @@ TEST_F(ReviewOutput, TheJunitIsValidAgainstTheSchemaWithHostileNames) {
         GTEST_SKIP() << "xmllint (Debian: libxml2-utils) is not installed: the schema check needs it";
     }
     fourCases();
-    put(actual, kHostile, grey(4, 4, 100, 200));
-    put(expected, kHostile, grey(4, 4, 100));
-    put(actual, "flaky", grey(4, 4, 100, 200));
-    put(expected, "flaky", grey(4, 4, 100));
-    put(actual, "skipped", grey(4, 4, 1));
-    put(actual, "known", grey(4, 4, 100, 200));
-    put(expected, "known", grey(4, 4, 100));
+    put(actual, kHostile, grey(16, 16, 100, 200));
+    put(expected, kHostile, grey(16, 16, 100));
+    put(actual, "flaky", grey(16, 16, 100, 200));
+    put(expected, "flaky", grey(16, 16, 100));
+    put(actual, "skipped", grey(16, 16, 1));
+    put(actual, "known", grey(16, 16, 100, 200));
+    put(expected, "known", grey(16, 16, 100));
     writeText(root / "exp.txt", "flaky * FLAKY # https://example.org/?a=1&b=<2>\nskipped * SKIP # \x01 why\n"
                                 "known * FAIL # bug 7\n");
     ReviewOptions o = options();

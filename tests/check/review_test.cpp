@@ -15,12 +15,12 @@ namespace fs = std::filesystem;
 class Review : public ReviewFixture {};
 
 TEST_F(Review, PairsByNameAndPutsFailuresFirst) {
-    put(actual, "a-same", grey(4, 4, 100));
-    put(expected, "a-same", grey(4, 4, 100));
-    put(actual, "b-differs", grey(4, 4, 100, 200));
-    put(expected, "b-differs", grey(4, 4, 100));
-    put(actual, "c-new", grey(4, 4, 100));
-    put(expected, "d-stale", grey(4, 4, 100));
+    put(actual, "a-same", grey(16, 16, 100));
+    put(expected, "a-same", grey(16, 16, 100));
+    put(actual, "b-differs", grey(16, 16, 100, 200));
+    put(expected, "b-differs", grey(16, 16, 100));
+    put(actual, "c-new", grey(16, 16, 100));
+    put(expected, "d-stale", grey(16, 16, 100));
     writeText(actual / "notes.txt", "not a png"); // only *.png files are cases
     const ReviewReport report = reviewFolders(options());
     ASSERT_EQ(report.cases.size(), 4u);
@@ -38,25 +38,25 @@ TEST_F(Review, PairsByNameAndPutsFailuresFirst) {
 }
 
 TEST_F(Review, ASizeMismatchFailsWithBothSizes) {
-    put(actual, "s", grey(5, 4, 100));
-    put(expected, "s", grey(4, 4, 100));
+    put(actual, "s", grey(17, 16, 100));
+    put(expected, "s", grey(16, 16, 100));
     const ReviewReport report = reviewFolders(options());
     const CaseResult& c = caseNamed(report, "s");
     EXPECT_EQ(c.status, CaseStatus::Fail);
-    EXPECT_NE(c.message.find("5x4"), std::string::npos) << c.message;
-    EXPECT_NE(c.message.find("4x4"), std::string::npos) << c.message;
+    EXPECT_NE(c.message.find("17x16"), std::string::npos) << c.message;
+    EXPECT_NE(c.message.find("16x16"), std::string::npos) << c.message;
 }
 
 TEST_F(Review, AnyApprovedImagePassingPassesTheCase) {
-    put(actual, "shot", grey(4, 4, 100));
-    put(expected, "shot", grey(4, 4, 90));    // in name order: shot.1.png, shot.2.png, shot.png; the first
-    put(expected, "shot.1", grey(4, 4, 80));  // and the last fail...
-    put(expected, "shot.2", grey(4, 4, 100)); // ...the one between passes
-    put(actual, "v1.5", grey(4, 4, 30));      // an actual image named like an alternative is its own case
-    put(expected, "v1.5", grey(4, 4, 30));
-    put(actual, "two", grey(4, 4, 50));
-    put(expected, "two", grey(4, 4, 60));
-    put(expected, "two.1", grey(4, 4, 52)); // neither passes: the failure names the closest
+    put(actual, "shot", grey(16, 16, 100));
+    put(expected, "shot", grey(16, 16, 90));    // in name order: shot.1.png, shot.2.png, shot.png; the first
+    put(expected, "shot.1", grey(16, 16, 80));  // and the last fail...
+    put(expected, "shot.2", grey(16, 16, 100)); // ...the one between passes
+    put(actual, "v1.5", grey(16, 16, 30));      // an actual image named like an alternative is its own case
+    put(expected, "v1.5", grey(16, 16, 30));
+    put(actual, "two", grey(16, 16, 50));
+    put(expected, "two", grey(16, 16, 60));
+    put(expected, "two.1", grey(16, 16, 52)); // neither passes: the failure names the closest
     ReviewOptions o = options();
     o.limits.tolerance.maxDelta = 0;
     const ReviewReport report = reviewFolders(o);
@@ -74,10 +74,10 @@ TEST_F(Review, AnyApprovedImagePassingPassesTheCase) {
 }
 
 TEST_F(Review, AFailingFlakyCaseDoesNotFailTheRun) {
-    put(actual, "flaky", grey(4, 4, 100, 200));
-    put(expected, "flaky", grey(4, 4, 100));
-    put(actual, "steady", grey(4, 4, 100));
-    put(expected, "steady", grey(4, 4, 100));
+    put(actual, "flaky", grey(16, 16, 100, 200));
+    put(expected, "flaky", grey(16, 16, 100));
+    put(actual, "steady", grey(16, 16, 100));
+    put(expected, "steady", grey(16, 16, 100));
     writeText(root / "exp.txt", "flaky llvm* FLAKY # https://example.org/34\nsteady * FLAKY\n");
     ReviewOptions o = options();
     o.expectations = root / "exp.txt";
@@ -98,7 +98,7 @@ TEST_F(Review, ASkippedCaseIsNotCompared) {
     // Neither file could be compared: the actual is not a PNG, the approved image another size. Read, either
     // would fail the case; skipped, neither is opened.
     writeText(actual / "broken.png", "not a png at all");
-    put(expected, "broken", grey(9, 9, 0));
+    put(expected, "broken", grey(19, 19, 0));
     writeText(root / "exp.txt", "bro* * SKIP # no GL 3.3\n");
     ReviewOptions o = options();
     o.expectations = root / "exp.txt";
@@ -114,16 +114,16 @@ TEST_F(Review, ASkippedCaseIsNotCompared) {
 }
 
 TEST_F(Review, AFailRuleExpectsAFailureAndAPassFailsTheRun) {
-    put(actual, "known-bug", grey(4, 4, 100, 200));
-    put(expected, "known-bug", grey(4, 4, 100));
+    put(actual, "known-bug", grey(16, 16, 100, 200));
+    put(expected, "known-bug", grey(16, 16, 100));
     writeText(root / "exp.txt", "known-bug * FAIL # https://example.org/12\nfixed * FAIL\n");
     ReviewOptions o = options();
     o.expectations = root / "exp.txt";
     ReviewReport report = reviewFolders(o);
     EXPECT_EQ(caseNamed(report, "known-bug").status, CaseStatus::ExpectedFail);
     EXPECT_FALSE(report.failed());
-    put(actual, "fixed", grey(4, 4, 7));
-    put(expected, "fixed", grey(4, 4, 7));
+    put(actual, "fixed", grey(16, 16, 7));
+    put(expected, "fixed", grey(16, 16, 7));
     report = reviewFolders(o);
     EXPECT_EQ(caseNamed(report, "fixed").status, CaseStatus::UnexpectedPass);
     EXPECT_TRUE(report.failed());
@@ -131,13 +131,13 @@ TEST_F(Review, AFailRuleExpectsAFailureAndAPassFailsTheRun) {
 }
 
 TEST_F(Review, FilesThatAreNotRegularAreFailedCasesNeverOpened) {
-    put(root, "outside", grey(4, 4, 100));
-    put(expected, "linked", grey(4, 4, 100));
+    put(root, "outside", grey(16, 16, 100));
+    put(expected, "linked", grey(16, 16, 100));
     fs::create_symlink(root / "outside.png", actual / "linked.png");
     ASSERT_EQ(::mkfifo((actual / "fifo.png").c_str(), 0600), 0);
-    put(expected, "fifo", grey(4, 4, 100));
-    put(actual, "planted", grey(4, 4, 100));
-    put(expected, "planted", grey(4, 4, 100));                            // passes...
+    put(expected, "fifo", grey(16, 16, 100));
+    put(actual, "planted", grey(16, 16, 100));
+    put(expected, "planted", grey(16, 16, 100));                          // passes...
     fs::create_symlink(root / "outside.png", expected / "planted.2.png"); // ...but a link sits beside it
     ::alarm(20); // a blocking open of the FIFO would hang: the alarm ends the test instead
     const ReviewReport report = reviewFolders(options());
@@ -155,11 +155,11 @@ TEST_F(Review, FilesThatAreNotRegularAreFailedCasesNeverOpened) {
 
 TEST_F(Review, OutHoldsEachCasesImagesNamedByIndex) {
     const std::string hostile = "a\"<script>&'";
-    put(actual, hostile, grey(6, 6, 100, 250));
-    put(expected, hostile, grey(6, 6, 100));
-    put(actual, "masked", grey(6, 6, 100, 250));
-    put(expected, "masked", grey(6, 6, 100));
-    put(actual, "zz-new", grey(6, 6, 1));
+    put(actual, hostile, grey(16, 16, 100, 250));
+    put(expected, hostile, grey(16, 16, 100));
+    put(actual, "masked", grey(16, 16, 100, 250));
+    put(expected, "masked", grey(16, 16, 100));
+    put(actual, "zz-new", grey(16, 16, 1));
     ReviewOptions o = options();
     o.out = root / "page";
     const ReviewReport report = reviewFolders(o);
@@ -190,10 +190,10 @@ TEST_F(Review, OutHoldsEachCasesImagesNamedByIndex) {
 }
 
 TEST_F(Review, TheDifferenceImageHonoursTheSelectionOfAFailingCase) {
-    Image changed = grey(6, 6, 100, 250);
+    Image changed = grey(16, 16, 100, 250);
     changed.pixel(4, 4)[0] = 0; // a second difference, outside the ignored rectangle: the case still fails
     put(actual, "c", changed);
-    put(expected, "c", grey(6, 6, 100));
+    put(expected, "c", grey(16, 16, 100));
     ReviewOptions o = options();
     o.out = root / "page";
     o.limits.ignore = {IgnoreRect{1, 1, 1, 1}};
@@ -207,12 +207,12 @@ TEST_F(Review, TheDifferenceImageHonoursTheSelectionOfAFailingCase) {
 }
 
 TEST_F(Review, ACasesMaskLeavesItsBlackPixelsOut) {
-    put(actual, "masked", grey(4, 4, 100, 250));
-    put(expected, "masked", grey(4, 4, 100));
-    put(actual, "unmasked", grey(4, 4, 100, 250)); // no mask of its own: every pixel counts
-    put(expected, "unmasked", grey(4, 4, 100));
+    put(actual, "masked", grey(16, 16, 100, 250));
+    put(expected, "masked", grey(16, 16, 100));
+    put(actual, "unmasked", grey(16, 16, 100, 250)); // no mask of its own: every pixel counts
+    put(expected, "unmasked", grey(16, 16, 100));
     fs::create_directories(root / "masks");
-    put(root / "masks", "masked", grey(4, 4, 255, 0)); // black at the differing pixel (1, 1)
+    put(root / "masks", "masked", grey(16, 16, 255, 0)); // black at the differing pixel (1, 1)
     ReviewOptions o = options();
     o.masks = root / "masks";
     const ReviewReport report = reviewFolders(o);
@@ -221,8 +221,8 @@ TEST_F(Review, ACasesMaskLeavesItsBlackPixelsOut) {
 }
 
 TEST_F(Review, AnOutputThatIsAnInputIsRefused) {
-    put(actual, "a", grey(4, 4, 100));
-    put(expected, "a", grey(4, 4, 100));
+    put(actual, "a", grey(16, 16, 100));
+    put(expected, "a", grey(16, 16, 100));
     ReviewOptions o = options();
     o.json = expected / "a.png";
     EXPECT_THROW((void)reviewFolders(o), InputError);
