@@ -25,7 +25,7 @@ program_packages=(
   gnuplot-nox
 )
 # What building the tests needs on top.
-tests_packages=(libgtest-dev libx11-dev git libxml2-utils) # libxml2-utils: xmllint, the JUnit schema check
+tests_packages=(libgtest-dev libx11-dev git libxml2-utils python3-skimage python3-pil) # libxml2-utils: xmllint, the JUnit schema check; python3-skimage: the SSIM check
 # What running the checks needs, none of it for the build: scripts/test.sh installs these beside the build.
 tools_packages=(
   # the demo under a virtual display, and driving it in tests

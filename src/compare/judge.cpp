@@ -1,5 +1,5 @@
 // One comparison against every limit (compare/judge.h): the per-channel figures always, SSIM and the
-// perceptual delta whenever the sizes match, FLIP when a limit asks for it; a line for each failed limit.
+// perceptual delta whenever the sizes match; a line for each failed limit.
 #include "shadelab/compare/judge.h"
 
 #include <cmath>
@@ -39,12 +39,6 @@ void checkLimitValues(const CheckLimits& limits) {
     if (!(limits.perceptualThreshold >= 0 && limits.perceptualThreshold <= 1))
         refuse("--perceptual-threshold", judgeNumber(limits.perceptualThreshold),
                "give a number from 0 to 1 (pixelmatch's default 0.1)");
-    if (limits.flipMean && !(*limits.flipMean >= 0 && *limits.flipMean <= 1))
-        refuse("--flip-mean", judgeNumber(*limits.flipMean), "give a number from 0 to 1");
-    for (const FlipPercentileLimit& p : limits.flipPercentiles)
-        if (!(p.percentile >= 0 && p.percentile <= 100 && p.limit >= 0 && p.limit <= 1))
-            refuse("--flip-percentile", judgeNumber(p.percentile, 2) + ":" + judgeNumber(p.limit),
-                   "give P:T with P from 0 to 100 and T from 0 to 1, e.g. 99:0.2");
 }
 
 // The selection as compareImages takes it: a mask, black where a pixel is left out.
@@ -92,17 +86,6 @@ void judgeFailures(Judgement& j, const CheckLimits& limits) {
                              " perceptually differing pixel(s) (threshold " +
                              judgeNumber(limits.perceptualThreshold, 3) + ") over --perceptual-max-pixels " +
                              std::to_string(*limits.perceptualMaxPixels));
-    if (!j.flip) return;
-    if (limits.flipMean && j.flip->mean > *limits.flipMean)
-        j.failures.push_back("FLIP mean " + judgeNumber(j.flip->mean) + " over --flip-mean " +
-                             judgeNumber(*limits.flipMean));
-    for (const FlipPercentileLimit& p : limits.flipPercentiles) {
-        const double value = j.flip->percentile(p.percentile);
-        if (value > p.limit)
-            j.failures.push_back("FLIP " + judgeNumber(p.percentile, 2) + "th percentile " +
-                                 judgeNumber(value) + " over --flip-percentile " +
-                                 judgeNumber(p.percentile, 2) + ":" + judgeNumber(p.limit));
-    }
 }
 
 } // namespace
@@ -164,7 +147,6 @@ Judgement judgeImages(const Image& actual, const Image& expected, const CheckLim
         j.perceptual = limits.ignoreAlpha
                            ? perceptualDelta(judgeOpaque(actual), judgeOpaque(expected), perceptual, counted)
                            : perceptualDelta(actual, expected, perceptual, counted);
-        if (limits.computeFlip()) j.flip = flip(actual, expected, FlipOptions{}, counted);
     }
     judgeFailures(j, limits);
     j.passed = j.failures.empty();

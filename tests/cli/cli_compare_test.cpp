@@ -2,7 +2,7 @@
 // tests do (the figures of compareImages, a mask's black pixels not compared, the mean over the compared
 // pixels), --json for a dashboard, 16-bit files read as stored, a forged header refused before allocating,
 // --diff never one of the inputs, and different sizes named; then every limit of compare/judge.h (SSIM,
-// the perceptual delta, FLIP, --ignore, alpha), bad values refused by name, and `shadelab-compare` giving
+// the perceptual delta, --ignore, alpha), bad values refused by name, and `shadelab-compare` giving
 // the same answers. Each test in a fresh temporary folder (cli_fixture.h). Built into cli_test.
 #include <algorithm>
 #include <chrono>
@@ -241,8 +241,7 @@ void writeRgbaPng(const shadelab::Image& image, const fs::path& path) {
     ASSERT_TRUE(png_image_write_to_file(&png, path.c_str(), 0, image.rgba.data(), 0, nullptr)) << png.message;
 }
 
-// 64x64 grey, and the same with an 8x8 light square at (8, 8): a difference every metric sees, on few
-// enough pixels that FLIP's median (its filters spread the square a few pixels) is 0.
+// 64x64 grey, and the same with an 8x8 light square at (8, 8): a difference every metric sees.
 void writeSquarePair(const fs::path& dir) {
     const shadelab::Image grey = filled(64, 64, 60);
     shadelab::Image square = grey;
@@ -315,15 +314,13 @@ TEST_F(CliTest, CompareEachMetricLimitPassesAndFails) {
     writeSquarePair(dir_);
     const std::vector<std::string> loose{"compare", "square.png", "grey.png", "--max",
                                          "255",     "--mean",     "255",      "--json"};
-    const Outcome figures = shadelab(plus(loose, {"--flip-mean", "1"}));
+    const Outcome figures = shadelab(loose);
     ASSERT_EQ(figures.exitCode, 0) << describe(figures);
     const nlohmann::json f = nlohmann::json::parse(figures.out);
     const double ssim = f["ssim"].get<double>();
     const long differing = f["perceptual"]["differing_pixels"].get<long>();
-    const double flipMean = f["flip"]["mean"].get<double>();
     ASSERT_LT(ssim, 0.99);
     ASSERT_GT(differing, 0);
-    ASSERT_GT(flipMean, 0.0);
     const auto number = [](double v) { return std::to_string(v); };
     struct Row {
         std::vector<std::string> passing, failing;
@@ -338,8 +335,6 @@ TEST_F(CliTest, CompareEachMetricLimitPassesAndFails) {
         {{"--perceptual-max-pixels", "0", "--perceptual-threshold", "1"},
          {"--perceptual-max-pixels", "0", "--perceptual-threshold", "0.1"},
          "--perceptual-max-pixels"},
-        {{"--flip-mean", number(flipMean + 0.001)}, {"--flip-mean", number(flipMean - 0.001)}, "--flip-mean"},
-        {{"--flip-percentile", "50:0.001"}, {"--flip-percentile", "99:0.001"}, "--flip-percentile"},
     };
     for (const Row& row : rows) {
         const Outcome pass = shadelab(plus(loose, row.passing));
@@ -356,48 +351,29 @@ TEST_F(CliTest, CompareEachMetricLimitPassesAndFails) {
 // --json holds every figure and every limit, and a line for each failed limit; --heatmap's path when written.
 TEST_F(CliTest, CompareJsonHoldsEveryFigureAndFailedLimit) {
     writeSquarePair(dir_);
-    const Outcome r = shadelab({"compare",    "square.png",
-                                "grey.png",   "--ssim-min",
-                                "0.999",      "--perceptual-max-pixels",
-                                "3",          "--perceptual-threshold",
-                                "0.05",       "--flip-mean",
-                                "0.001",      "--flip-percentile",
-                                "95:0.5",     "--flip-percentile",
-                                "99.5:0.001", "--ignore",
-                                "0,0,2,2",    "--heatmap",
-                                "h.png",      "--json"});
+    const Outcome r =
+        shadelab({"compare", "square.png", "grey.png", "--ssim-min", "0.999", "--perceptual-max-pixels", "3",
+                  "--perceptual-threshold", "0.05", "--ignore", "0,0,2,2", "--heatmap", "h.png", "--json"});
     EXPECT_EQ(r.exitCode, 1) << describe(r);
     const nlohmann::json j = nlohmann::json::parse(r.out);
     const nlohmann::json& l = j["limits"];
     EXPECT_EQ(l["ssim_min"], 0.999);
     EXPECT_EQ(l["perceptual_max_pixels"], 3);
     EXPECT_EQ(l["perceptual_threshold"], 0.05);
-    EXPECT_EQ(l["flip_mean"], 0.001);
-    EXPECT_EQ(l["flip_percentiles"], (nlohmann::json::array({{{"percentile", 95.0}, {"limit", 0.5}},
-                                                             {{"percentile", 99.5}, {"limit", 0.001}}})));
     EXPECT_TRUE(j["ssim"].is_number());
     EXPECT_TRUE(j["perceptual"]["differing_pixels"].is_number_integer());
     EXPECT_TRUE(j["perceptual"]["antialiased_pixels"].is_number_integer());
     EXPECT_EQ(j["perceptual"]["threshold"], 0.05);
-    EXPECT_TRUE(j["flip"]["mean"].is_number());
-    ASSERT_EQ(j["flip"]["percentiles"].size(), 2u);
-    EXPECT_EQ(j["flip"]["percentiles"][1]["percentile"], 99.5);
-    EXPECT_TRUE(j["flip"]["percentiles"][1]["value"].is_number());
     EXPECT_EQ(j["alpha_compared"], true);
     EXPECT_EQ(j["ignore"].size(), 1u);
     std::string failures;
     for (const auto& f : j["failures"]) failures += f.get<std::string>() + "\n";
-    for (const char* flag :
-         {"--max", "--ssim-min", "--perceptual-max-pixels", "--flip-mean", "--flip-percentile 99.50"})
+    for (const char* flag : {"--max", "--ssim-min", "--perceptual-max-pixels"})
         EXPECT_NE(failures.find(flag), std::string::npos) << flag << " not among\n" << failures;
-    EXPECT_EQ(failures.find("--flip-percentile 95.00"), std::string::npos) << "95:0.5 holds\n" << failures;
     EXPECT_EQ(j["heatmap"], "h.png");
     const shadelab::Image heat = shadelab::readPng(dir_ / "h.png");
     EXPECT_GE(heat.width, 64);
     EXPECT_GT(heat.height, 64) << "the picture and its scale under it";
-
-    const Outcome noFlip = shadelab({"compare", "square.png", "grey.png", "--json"});
-    EXPECT_FALSE(nlohmann::json::parse(noFlip.out).contains("flip")) << "FLIP only when a limit asks for it";
 }
 
 // A bad value exits 2 before anything is read, naming the flag and the value.
@@ -414,10 +390,6 @@ TEST_F(CliTest, CompareRefusesBadLimitValuesByName) {
         {"--perceptual-max-pixels", "2.5"},
         {"--perceptual-threshold", "1.5"},
         {"--perceptual-threshold", "inf"},
-        {"--flip-mean", "nan"},
-        {"--flip-percentile", "99"},
-        {"--flip-percentile", "101:0.1"},
-        {"--flip-percentile", "50:2"},
         {"--ignore", "1,2,3"},
         {"--ignore", "0,0,0,5"},
         {"--ignore", "a,b,c,d"},
@@ -439,8 +411,7 @@ TEST_F(CliTest, ShadelabCompareGivesTheSameAnswers) {
     RunOptions light;
     light.program = SHADELAB_COMPARE_EXE;
     for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
-             {"compare", "square.png", "grey.png", "--json", "--ssim-min", "0.9", "--flip-percentile",
-              "99:0.5"},
+             {"compare", "square.png", "grey.png", "--json", "--ssim-min", "0.9"},
              {"compare", "grey.png", "grey.png", "--json", "--ignore", "1,1,4,4"},
              {"compare", "grey.png", "grey.png", "--ssim-min", "nan"},
              {"compare", "square.png", "grey.png", "--max", "255", "--mean", "255"}}) {

@@ -138,7 +138,6 @@ TEST(Judge, EachMetricLimitFailsWithItsFlag) {
     ASSERT_TRUE(none.ssim && none.perceptual);
     EXPECT_LT(none.ssim->mean, 1.0);
     EXPECT_GT(none.perceptual->differingPixels, 0);
-    EXPECT_FALSE(none.flip) << "FLIP only when a limit asks for it";
 
     CheckLimits ssimLimit = loose;
     ssimLimit.ssimMin = none.ssim->mean + 1e-6;
@@ -155,16 +154,6 @@ TEST(Judge, EachMetricLimitFailsWithItsFlag) {
     EXPECT_TRUE(failureNames(perceptualFailed, "--perceptual-max-pixels")) << failuresText(perceptualFailed);
     perceptual.perceptualMaxPixels = none.perceptual->differingPixels;
     EXPECT_TRUE(judgeImages(actual, expected, perceptual).passed);
-
-    CheckLimits flipLimit = loose;
-    flipLimit.flipMean = 0.0;
-    flipLimit.flipPercentiles = {{50, 1.0}, {100, 0.0}};
-    const Judgement flipFailed = judgeImages(actual, expected, flipLimit);
-    ASSERT_TRUE(flipFailed.flip);
-    EXPECT_GT(flipFailed.flip->mean, 0.0);
-    EXPECT_TRUE(failureNames(flipFailed, "--flip-mean")) << failuresText(flipFailed);
-    EXPECT_TRUE(failureNames(flipFailed, "--flip-percentile 100.00:")) << failuresText(flipFailed);
-    EXPECT_FALSE(failureNames(flipFailed, "--flip-percentile 50.00:")) << "a median of at most 1 holds";
 }
 
 TEST(Judge, DifferentSizesFailWithBothSizesAndNoMetric) {
@@ -197,9 +186,6 @@ TEST(Judge, BadLimitValuesAreRefusedByName) {
     l = {};
     l.perceptualThreshold = 1.5;
     EXPECT_NE(refusal(l).find("--perceptual-threshold"), std::string::npos);
-    l = {};
-    l.flipPercentiles = {{101, 0.1}};
-    EXPECT_NE(refusal(l).find("--flip-percentile"), std::string::npos);
     l = {};
     l.tolerance.maxDelta = 256;
     EXPECT_NE(refusal(l).find("--max"), std::string::npos);

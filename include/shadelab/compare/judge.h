@@ -15,34 +15,28 @@ namespace shadelab {
 struct IgnoreRect { // --ignore x,y,w,h: pixels left out, in the actual image's pixel coordinates
     int x = 0, y = 0, width = 0, height = 0;
 };
-struct FlipPercentileLimit { // --flip-percentile P:T: the P-th percentile of FLIP at most T
-    double percentile = 0, limit = 0;
-};
 
 // Every limit a comparison can be held to. The per-channel ones always apply; an unset optional is no limit.
 struct CheckLimits {
-    Tolerance tolerance;                          // --max, --mean, --outliers
-    bool ignoreAlpha = false;                     // --ignore-alpha: alpha is not a compared channel
-    std::optional<double> ssimMin;                // --ssim-min
-    std::optional<long> perceptualMaxPixels;      // --perceptual-max-pixels
-    double perceptualThreshold = 0.1;             // --perceptual-threshold (pixelmatch's threshold)
-    std::optional<double> flipMean;               // --flip-mean
-    std::vector<FlipPercentileLimit> flipPercentiles; // --flip-percentile, repeatable
-    std::vector<IgnoreRect> ignore;               // --ignore, repeatable
-    bool computeFlip() const { return flipMean.has_value() || !flipPercentiles.empty(); }
+    Tolerance tolerance;                     // --max, --mean, --outliers
+    bool ignoreAlpha = false;                // --ignore-alpha: alpha is not a compared channel
+    std::optional<double> ssimMin;           // --ssim-min
+    std::optional<long> perceptualMaxPixels; // --perceptual-max-pixels
+    double perceptualThreshold = 0.1;        // --perceptual-threshold (pixelmatch's threshold)
+    std::vector<IgnoreRect> ignore;          // --ignore, repeatable
 };
 
 struct Judgement {
-    Comparison comparison;                    // max / mean / outliers, alpha included unless ignoreAlpha
-    std::optional<SsimResult> ssim;           // computed whenever the sizes match
+    Comparison comparison;                      // max / mean / outliers, alpha included unless ignoreAlpha
+    std::optional<SsimResult> ssim;             // computed whenever the sizes match
     std::optional<PerceptualResult> perceptual; // computed whenever the sizes match
-    std::optional<FlipResult> flip;           // computed when a FLIP limit is set and the sizes match
-    std::vector<std::string> failures;        // one line per failed limit, with the figure and the limit
+    std::vector<std::string> failures;          // one line per failed limit, with the figure and the limit
     bool passed = false;
 };
 
 // The selection `mask` (same size as actual, black = left out) and `rects` make, or nullopt if neither
-// leaves a pixel out. Throws InputError naming --mask or --ignore for a size or a rectangle that does not fit.
+// leaves a pixel out. Throws InputError naming --mask or --ignore for a size or a rectangle that does not
+// fit.
 std::optional<PixelSelection> makeSelection(int width, int height, const Image* mask,
                                             const std::vector<IgnoreRect>& rects);
 Judgement judgeImages(const Image& actual, const Image& expected, const CheckLimits& limits,

@@ -1,8 +1,10 @@
 // Image metrics for screenshot regression beyond per-channel max and mean (docs/ci-engineers.md "Which
-// metric"): SSIM, pixelmatch's perceptual YIQ delta with anti-aliasing detection, and FLIP; and the
+// metric"): SSIM and pixelmatch's perceptual YIQ delta with anti-aliasing detection; and the
 // colour-blind-safe heatmap a per-pixel map is drawn as. No GL: the light `shadelab-compare` links these.
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <string_view>
 #include <vector>
 
@@ -10,7 +12,7 @@
 
 namespace shadelab {
 
-// One value per pixel, rows top to bottom (an SSIM map, a FLIP map, a difference).
+// One value per pixel, rows top to bottom (an SSIM map, a perceptual map, a difference).
 struct MetricMap {
     int width = 0, height = 0;
     std::vector<float> values;
@@ -35,10 +37,12 @@ struct PixelSelection {
 // (not sample) covariances, borders reflected half-sample symmetric — what scikit-image's
 // structural_similarity(gaussian_weights=True, sigma=1.5, use_sample_covariance=False, data_range=255)
 // computes. `mean` is the map's mean over the pixels at least 5 px from every border (scikit-image crops the
-// same margin), and of those only the counted ones.
+// same margin), and of those only the counted ones. An image under 11 px on a side has no such interior and
+// is averaged whole (scikit-image refuses it); with no pixel counted the mean is 1 (nothing differs).
 struct SsimResult {
     double mean = 1;
-    MetricMap map; // the full-size SSIM map, -1..1
+    std::size_t meanPixels = 0; // the pixels the mean is over
+    MetricMap map;              // the full-size SSIM map, -1..1
 };
 SsimResult ssim(const Image& actual, const Image& expected, const PixelSelection* selection = nullptr);
 
@@ -56,21 +60,6 @@ struct PerceptualResult {
 };
 PerceptualResult perceptualDelta(const Image& actual, const Image& expected, const PerceptualOptions& options,
                                  const PixelSelection* selection = nullptr);
-
-// ---- FLIP (Andersson et al. 2020, LDR), in src/compare/flip.cpp ----
-// Pixels per degree of visual angle default to the paper's 67.0 (a 0.7 m wide 3840-pixel monitor at 0.7 m).
-struct FlipOptions {
-    double pixelsPerDegree = 67.0;
-};
-struct FlipResult {
-    double mean = 0;
-    MetricMap map; // 0..1
-    // The p-th percentile (0..100) of the counted pixels' FLIP values (linear interpolation between ranks).
-    double percentile(double p) const;
-    std::vector<float> sortedCounted; // the counted pixels' values, ascending: what percentile() reads
-};
-FlipResult flip(const Image& actual, const Image& expected, const FlipOptions& options = {},
-                const PixelSelection* selection = nullptr);
 
 // ---- the heatmap ----
 // `map` drawn with a colour-blind-safe sequential colour map (viridis: lightness rises monotonically, and it

@@ -61,17 +61,6 @@ IgnoreRect parseIgnoreRect(const std::string& text) {
     return {int(parts[0]), int(parts[1]), int(parts[2]), int(parts[3])};
 }
 
-FlipPercentileLimit parseFlipPercentile(const std::string& text) {
-    const std::size_t colon = text.find(':');
-    FlipPercentileLimit limit;
-    if (colon == std::string::npos || !parseCheckNumber(text.substr(0, colon), limit.percentile) ||
-        !parseCheckNumber(text.substr(colon + 1), limit.limit) || limit.percentile < 0 ||
-        limit.percentile > 100 || limit.limit < 0 || limit.limit > 1)
-        refuseValue("--flip-percentile", text,
-                    "give P:T, the P-th percentile (0..100) of FLIP at most T (0..1), e.g. 99:0.2");
-    return limit;
-}
-
 } // namespace
 
 void addLimitFlags(CLI::App& command, CheckLimits& limits) {
@@ -101,14 +90,6 @@ void addLimitFlags(CLI::App& command, CheckLimits& limits) {
                    "pixelmatch's threshold, 0..1, smaller is stricter (default 0.1)", 0, 1,
                    "give a number from 0 to 1 (pixelmatch's default 0.1)",
                    [&limits](double v) { limits.perceptualThreshold = v; });
-    addCheckNumber(command, "--flip-mean", "Largest mean FLIP (LDR), 0..1", 0, 1, "give a number from 0 to 1",
-                   [&limits](double v) { limits.flipMean = v; });
-    command.add_option_function<std::vector<std::string>>(
-        "--flip-percentile",
-        [&limits](const std::vector<std::string>& texts) {
-            for (const std::string& text : texts) limits.flipPercentiles.push_back(parseFlipPercentile(text));
-        },
-        "P:T, the P-th percentile of FLIP at most T (repeatable), e.g. 99:0.2");
     command.add_option_function<std::vector<std::string>>(
         "--ignore",
         [&limits](const std::vector<std::string>& texts) {

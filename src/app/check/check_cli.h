@@ -12,8 +12,8 @@ class App;
 
 namespace shadelab::app {
 
-// --max, --mean, --outliers, --ssim-min, --perceptual-max-pixels, --perceptual-threshold, --flip-mean,
-// --flip-percentile P:T (repeatable), --ignore x,y,w,h (repeatable), --ignore-alpha; bound to `limits`.
+// --max, --mean, --outliers, --ssim-min, --perceptual-max-pixels, --perceptual-threshold,
+// --ignore x,y,w,h (repeatable), --ignore-alpha; bound to `limits`.
 void addLimitFlags(CLI::App& command, CheckLimits& limits);
 
 // The `compare` subcommand of `parent`, bound to `options` (filled when the subcommand is parsed).

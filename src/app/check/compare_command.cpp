@@ -32,8 +32,8 @@ std::optional<PngSize> compareClaimedSize(const std::string& path) {
 // 64x64 images), and per pixel of the larger size `bytesPerPixel`. Checked twice: before decoding, with the
 // difference image and its rows for the encoder (7), so that the decoder's own refusal of a forged header
 // comes first; and before judging, adding the selection and its mask (5), SSIM's luma, five filtered
-// moments and map (4 bytes each: 32), the perceptual map (4) and with a FLIP limit FLIP's colour and feature
-// images and map (about 64). The per-pixel figures are counted from the code, not measured.
+// moments and map (4 bytes each: 32), the perceptual map (4). The per-pixel figures are counted from the
+// code, not measured.
 void checkCompareMemory(const CompareOptions& o, double bytesPerPixel) {
     double need = kProcessBaselineBytes, largest = 0;
     std::string sizes;
@@ -55,8 +55,8 @@ void checkCompareMemory(const CompareOptions& o, double bytesPerPixel) {
                       "ACTUAL and EXPECTED (smaller images)");
 }
 constexpr double kDecodeBytesPerPixel = 7;
-double judgeBytesPerPixel(const CheckLimits& limits) {
-    return kDecodeBytesPerPixel + 5 + 32 + 4 + (limits.computeFlip() ? 64 : 0);
+double judgeBytesPerPixel() {
+    return kDecodeBytesPerPixel + 5 + 32 + 4;
 }
 
 nlohmann::json optionalJson(const auto& value) {
@@ -74,9 +74,7 @@ std::string judgementJson(const Judgement& j, const CompareOptions& o, bool wrot
     const auto pathOrNull = [](const std::string& path, bool written = true) {
         return path.empty() || !written ? nlohmann::json(nullptr) : nlohmann::json(path);
     };
-    nlohmann::json percentileLimits = nlohmann::json::array(), ignore = nlohmann::json::array();
-    for (const FlipPercentileLimit& p : l.flipPercentiles)
-        percentileLimits.push_back({{"percentile", p.percentile}, {"limit", p.limit}});
+    nlohmann::json ignore = nlohmann::json::array();
     for (const IgnoreRect& r : l.ignore)
         ignore.push_back({{"x", r.x}, {"y", r.y}, {"width", r.width}, {"height", r.height}});
     nlohmann::json out{
@@ -94,9 +92,7 @@ std::string judgementJson(const Judgement& j, const CompareOptions& o, bool wrot
           {"outliers", l.tolerance.outlierBudget},
           {"ssim_min", optionalJson(l.ssimMin)},
           {"perceptual_max_pixels", optionalJson(l.perceptualMaxPixels)},
-          {"perceptual_threshold", l.perceptualThreshold},
-          {"flip_mean", optionalJson(l.flipMean)},
-          {"flip_percentiles", percentileLimits}}},
+          {"perceptual_threshold", l.perceptualThreshold}}},
         {"passed", j.passed},
         {"failures", j.failures},
         {"diff", pathOrNull(o.diff, wroteDiff)},
@@ -114,13 +110,6 @@ std::string judgementJson(const Judgement& j, const CompareOptions& o, bool wrot
         out["perceptual"] = {{"differing_pixels", j.perceptual->differingPixels},
                              {"antialiased_pixels", j.perceptual->antialiasedPixels},
                              {"threshold", l.perceptualThreshold}};
-    if (j.flip) {
-        nlohmann::json percentiles = nlohmann::json::array();
-        for (const FlipPercentileLimit& p : l.flipPercentiles)
-            percentiles.push_back(
-                {{"percentile", p.percentile}, {"value", j.flip->percentile(p.percentile)}});
-        out["flip"] = {{"mean", j.flip->mean}, {"percentiles", percentiles}};
-    }
     // Bytes that are not UTF-8 in a path are replaced rather than refused: the result must still print.
     return out.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
 }
@@ -137,7 +126,6 @@ std::string judgementSummary(const Judgement& j) {
                 (std::snprintf(line, sizeof line, ", %ld perceptually differing pixel(s), %ld anti-aliased",
                                j.perceptual->differingPixels, j.perceptual->antialiasedPixels),
                  line);
-        if (j.flip) text += (std::snprintf(line, sizeof line, ", FLIP mean %.4f", j.flip->mean), line);
         for (const std::string& failure : j.failures) text += "\nfailed: " + failure;
     }
     return text;
@@ -178,7 +166,7 @@ int runCompare(const CompareOptions& o) {
     const Image expected = readCompareInput(o.expected, "EXPECTED");
     std::optional<Image> mask;
     if (!o.mask.empty()) mask = readCompareInput(o.mask, "--mask");
-    checkCompareMemory(o, judgeBytesPerPixel(o.limits));
+    checkCompareMemory(o, judgeBytesPerPixel());
     const Judgement j = judgeImages(actual, expected, o.limits, mask ? &*mask : nullptr);
 
     const bool writeDiff = !j.passed && !o.diff.empty();

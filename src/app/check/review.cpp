@@ -63,10 +63,9 @@ struct ReviewOutFolder {
     }
 };
 
-// The heatmap of the map that says most about this judgement: FLIP when it was computed, 1 − SSIM when an
-// SSIM limit is set, else the perceptual delta's map (1 anti-aliased, 2 differing).
+// The heatmap of the map that says most about this judgement: 1 − SSIM when an SSIM limit is set, else the
+// perceptual delta's map (1 anti-aliased, 2 differing).
 Image reviewHeatmap(const Judgement& j, const CheckLimits& limits, const PixelSelection* selection) {
-    if (j.flip) return heatmap(j.flip->map, 0.0f, 1.0f, "FLIP", selection);
     if (limits.ssimMin && j.ssim) {
         MetricMap dissimilarity = j.ssim->map;
         for (float& v : dissimilarity.values) v = 1.0f - v;

@@ -32,11 +32,11 @@ const ExpectationRule* findExpectation(const std::vector<ExpectationRule>& rules
 
 // ---- one case ----
 enum class CaseStatus {
-    Pass,           // within the limits of at least one approved image (and expected to pass)
-    Fail,           // beyond the limits of every approved image (or a size mismatch, or unreadable)
-    New,            // an actual image with no approved image: nothing to hold it to (fails; bless it)
-    Stale,          // approved images with no actual image: the case is gone or the run did not write it (fails)
-    Skipped,        // SKIP in the expectations: not compared
+    Pass,    // within the limits of at least one approved image (and expected to pass)
+    Fail,    // beyond the limits of every approved image (or a size mismatch, or unreadable)
+    New,     // an actual image with no approved image: nothing to hold it to (fails; bless it)
+    Stale,   // approved images with no actual image: the case is gone or the run did not write it (fails)
+    Skipped, // SKIP in the expectations: not compared
     ExpectedFail,   // FAIL in the expectations and it fails: does not fail the run
     UnexpectedPass, // FAIL in the expectations but it passes: fails the run (remove the rule)
     FlakyFail,      // FLAKY in the expectations and it fails: reported, does not fail the run
@@ -44,19 +44,19 @@ enum class CaseStatus {
 const char* statusName(CaseStatus status); // "pass", "FAIL", "NEW", "STALE", "skip", "expected-fail", ...
 bool failsRun(CaseStatus status);
 
-struct ApprovedResult {                // the case's actual image against one approved image
-    std::filesystem::path expected;    // EXPECTED_DIR/NAME.png or an alternative NAME.N.png
+struct ApprovedResult {                 // the case's actual image against one approved image
+    std::filesystem::path expected;     // EXPECTED_DIR/NAME.png or an alternative NAME.N.png
     std::optional<Judgement> judgement; // nullopt: unreadable (error says why)
     std::string error;
 };
 struct CaseResult {
-    std::string name;                           // the file name without .png: untrusted text
+    std::string name; // the file name without .png: untrusted text
     CaseStatus status = CaseStatus::Pass;
-    const ExpectationRule* rule = nullptr;      // the expectation that decided it, if any
+    const ExpectationRule* rule = nullptr; // the expectation that decided it, if any
     std::optional<std::filesystem::path> actual;
-    std::vector<ApprovedResult> approved;       // every approved image, in name order
-    int best = -1;                              // the index in `approved` that passed, else the closest one
-    std::string message;                        // one line: the failed limits with figures, or why
+    std::vector<ApprovedResult> approved; // every approved image, in name order
+    int best = -1;                        // the index in `approved` that passed, else the closest one
+    std::string message;                  // one line: the failed limits with figures, or why
     // Files written under --out (relative to the out folder), empty when not written.
     std::string actualFile, expectedFile, diffFile, heatmapFile;
 };
@@ -76,7 +76,7 @@ struct ReviewOptions {
 
 struct ReviewReport {
     ReviewOptions options;
-    std::vector<CaseResult> cases; // failures first, then by name
+    std::vector<CaseResult> cases;    // failures first, then by name
     std::vector<std::string> blessed; // what --bless wrote, as "NAME -> PATH"
     // The parsed expectations file that CaseResult::rule points into; shared, so a copied report's
     // pointers stay valid.
@@ -94,9 +94,9 @@ int runReview(const ReviewOptions& options);
 std::string judgementFigures(const Judgement& judgement);
 
 // The pieces runReview puts together, each testable alone:
-ReviewReport reviewFolders(const ReviewOptions& options);              // src/app/check/review.cpp
-std::string reviewJson(const ReviewReport& report);                    // src/app/check/review_json.cpp
-std::string junitXml(const ReviewReport& report);                      // src/app/check/junit.cpp
+ReviewReport reviewFolders(const ReviewOptions& options); // src/app/check/review.cpp
+std::string reviewJson(const ReviewReport& report);       // src/app/check/review_json.cpp
+std::string junitXml(const ReviewReport& report);         // src/app/check/junit.cpp
 // The page: one HTML file with every image inlined as a data: URI, its script and style inlined, no
 // network; every name and message HTML-escaped. Reads the images the report's *File fields name under `out`.
 std::string reviewPageHtml(const ReviewReport& report, const std::filesystem::path& out); // review_page.cpp

@@ -1,4 +1,4 @@
-// `review --ReviewJsonValue FILE` (review.h): every case's status, figures and limits, and the paths of its
+// `review --json FILE` (review.h): every case's status, figures and limits, and the paths of its
 // images (relative to --out, null when not written), for a CI step or a dashboard to read.
 #include <nlohmann/json.hpp>
 
@@ -23,12 +23,7 @@ ReviewJsonValue reviewLimitsJson(const CheckLimits& l) {
         {"perceptual_max_pixels",
          l.perceptualMaxPixels ? ReviewJsonValue(*l.perceptualMaxPixels) : ReviewJsonValue(nullptr)},
         {"perceptual_threshold", l.perceptualThreshold},
-        {"flip_mean", l.flipMean ? ReviewJsonValue(*l.flipMean) : ReviewJsonValue(nullptr)},
     };
-    ReviewJsonValue percentiles = ReviewJsonValue::array();
-    for (const FlipPercentileLimit& p : l.flipPercentiles)
-        percentiles.push_back({{"percentile", p.percentile}, {"limit", p.limit}});
-    out["flip_percentiles"] = percentiles;
     ReviewJsonValue rects = ReviewJsonValue::array();
     for (const IgnoreRect& r : l.ignore)
         rects.push_back({{"x", r.x}, {"y", r.y}, {"width", r.width}, {"height", r.height}});
@@ -36,7 +31,7 @@ ReviewJsonValue reviewLimitsJson(const CheckLimits& l) {
     return out;
 }
 
-ReviewJsonValue reviewApprovedJson(const ApprovedResult& a, const CheckLimits& limits) {
+ReviewJsonValue reviewApprovedJson(const ApprovedResult& a) {
     ReviewJsonValue out = {{"path", a.expected.string()}};
     if (!a.judgement) {
         out["passed"] = false;
@@ -60,14 +55,6 @@ ReviewJsonValue reviewApprovedJson(const ApprovedResult& a, const CheckLimits& l
     if (j.perceptual) {
         out["perceptual_pixels"] = j.perceptual->differingPixels;
         out["antialiased_pixels"] = j.perceptual->antialiasedPixels;
-    }
-    if (j.flip) {
-        out["flip_mean"] = j.flip->mean;
-        ReviewJsonValue percentiles = ReviewJsonValue::array();
-        for (const FlipPercentileLimit& p : limits.flipPercentiles)
-            percentiles.push_back(
-                {{"percentile", p.percentile}, {"value", j.flip->percentile(p.percentile)}});
-        out["flip_percentiles"] = percentiles;
     }
     return out;
 }
@@ -98,7 +85,7 @@ std::string reviewJson(const ReviewReport& report) {
     ReviewJsonValue cases = ReviewJsonValue::array();
     for (const CaseResult& c : report.cases) {
         ReviewJsonValue approved = ReviewJsonValue::array();
-        for (const ApprovedResult& a : c.approved) approved.push_back(reviewApprovedJson(a, o.limits));
+        for (const ApprovedResult& a : c.approved) approved.push_back(reviewApprovedJson(a));
         cases.push_back({
             {"name", c.name},
             {"status", statusName(c.status)},

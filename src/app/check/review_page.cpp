@@ -174,18 +174,7 @@ std::vector<FigureRow> figureRows(const Judgement& judgement, const CheckLimits&
              limits.perceptualMaxPixels ? "≤ " + std::to_string(*limits.perceptualMaxPixels) : "no limit",
              limits.perceptualMaxPixels && p.differingPixels > *limits.perceptualMaxPixels});
     }
-    if (judgement.flip) {
-        const FlipResult& f = *judgement.flip;
-        rows.push_back({"FLIP mean", reviewPageNumber(f.mean, "%.5f"),
-                        limits.flipMean ? "≤ " + reviewPageNumber(*limits.flipMean) : "no limit",
-                        limits.flipMean && f.mean > *limits.flipMean});
-        for (const FlipPercentileLimit& p : limits.flipPercentiles) {
-            const double value = f.percentile(p.percentile);
-            rows.push_back({"FLIP " + reviewPageNumber(p.percentile) + "th percentile",
-                            reviewPageNumber(value, "%.5f"), "≤ " + reviewPageNumber(p.limit),
-                            value > p.limit});
-        }
-    }
+
     return rows;
 }
 
@@ -198,9 +187,6 @@ std::string limitsText(const CheckLimits& limits) {
     if (limits.perceptualMaxPixels)
         text += ", perceptual pixels ≤ " + std::to_string(*limits.perceptualMaxPixels) + " at threshold " +
                 reviewPageNumber(limits.perceptualThreshold);
-    if (limits.flipMean) text += ", FLIP mean ≤ " + reviewPageNumber(*limits.flipMean);
-    for (const FlipPercentileLimit& p : limits.flipPercentiles)
-        text += ", FLIP p" + reviewPageNumber(p.percentile) + " ≤ " + reviewPageNumber(p.limit);
     if (!limits.ignore.empty()) text += ", " + std::to_string(limits.ignore.size()) + " ignored rectangle(s)";
     return text;
 }

@@ -85,7 +85,6 @@ std::string judgementFigures(const Judgement& j) {
     if (j.perceptual)
         text += ", perceptual " + std::to_string(j.perceptual->differingPixels) + " px (" +
                 std::to_string(j.perceptual->antialiasedPixels) + " anti-aliased)";
-    if (j.flip) text += ", FLIP mean " + reviewNumber(j.flip->mean, "%.4f");
     return text;
 }
 
