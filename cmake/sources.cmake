@@ -12,7 +12,7 @@ set(SHADELAB_IMAGE_NATIVE_SOURCES src/image/png.cpp)
 # The regression kit on top of them (native only): the image metrics and the judgement against limits
 # (src/compare), and the compare and review commands (src/app/check; their mains are the executables').
 set(SHADELAB_CHECK_SOURCES
-  src/compare/judge.cpp src/compare/ssim.cpp src/compare/heatmap.cpp
+  src/compare/judge.cpp src/compare/ssim.cpp src/compare/perceptual.cpp src/compare/heatmap.cpp
   src/app/check/compare_command.cpp src/app/check/check_cli.cpp src/app/check/memory_check.cpp
   src/app/check/expectations.cpp src/app/check/review.cpp src/app/check/review_files.cpp src/app/check/review_run.cpp
   src/app/check/review_json.cpp src/app/check/junit.cpp

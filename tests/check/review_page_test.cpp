@@ -73,7 +73,7 @@ Judgement judgement(int maxDelta, double meanDelta, int outliers, double ssimMea
     j.comparison.tolerance = limits.tolerance;
     j.comparison.passed =
         outliers <= limits.tolerance.outlierBudget && meanDelta <= limits.tolerance.meanDelta;
-    j.ssim = SsimResult{ssimMean, {}};
+    j.ssim = SsimResult{ssimMean, 0, {}};
     j.perceptual = PerceptualResult{outliers, 2, {}};
     j.passed = j.comparison.passed && ssimMean >= limits.ssimMin.value_or(0);
     return j;

@@ -134,6 +134,8 @@ CLI::App* addReviewCommand(CLI::App& parent, ReviewOptions& o) {
     review->add_option("--expectations", o.expectations,
                        "Rules CASE DRIVER-GLOB PASS|FAIL|SKIP|FLAKY # reason, the first match deciding");
     review->add_option("--driver", o.driver, "The driver key the expectations' globs match");
+    review->add_option("--masks", o.masks,
+                       "Folder of masks: DIR/NAME.png is case NAME's mask (black = not compared)");
     review->add_option("--bless", o.bless, "Write this case's actual image as approved (repeatable)");
     review->add_flag("--bless-failed", o.blessFailed,
                      "Write every failed or new case's actual image as approved");

@@ -244,6 +244,7 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
     ReferenceCommand reference;
     BenchCommand bench;
     CompareOptions compare;
+    ReviewOptions review;
     ReportCommand report;
     CheckCommand check;
     SlidesCommand slides;
@@ -251,6 +252,7 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
     CLI::App* const referenceApp = reference.add(cli);
     CLI::App* const benchApp = bench.add(cli);
     CLI::App* const compareApp = addCompareCommand(cli, compare);
+    CLI::App* const reviewApp = addReviewCommand(cli, review);
     CLI::App* const reportApp = report.add(cli);
     CLI::App* const checkApp = check.add(cli);
     CLI::App* const slidesApp = slides.add(cli);
@@ -272,10 +274,10 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
         const std::string& scene = demo.args.scene;
         std::error_code ec;
         if (hints.empty() && !scene.empty() && !std::filesystem::exists(scene, ec))
-            throw InputError(
-                "\"" + scene +
-                "\" is neither a subcommand (render, reference, report, bench, compare, check, slides) nor a "
-                "scene or lesson file");
+            throw InputError("\"" + scene +
+                             "\" is neither a subcommand (render, reference, report, bench, compare, review, "
+                             "check, slides) nor a "
+                             "scene or lesson file");
         std::ostringstream out, err;
         cli.exit(e, out, err); // CLI11's message naming the argument, and its "Run with --help" hint
         throw InputError(withoutTrailingNewlines(err.str()) + hints);
@@ -285,6 +287,7 @@ ParsedCommand parseCommandLine(int argc, char** argv) {
     if (*referenceApp) return reference.args;
     if (*benchApp) return headless(bench);
     if (*compareApp) return compare;
+    if (*reviewApp) return review;
     if (*reportApp) return headless(report);
     if (*checkApp) return check.args;
     if (*slidesApp) return headless(slides);

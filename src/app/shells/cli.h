@@ -8,6 +8,7 @@
 #include <variant>
 
 #include "app/bench/bench.h"
+#include "app/check/review.h"
 #include "app/shells/commands.h"
 #include "shadelab/errors.h"
 
@@ -66,7 +67,7 @@ struct SlidesArgs {                   // the scene's other flags do not apply to
     ContextArgs context;
 };
 using ParsedCommand = std::variant<ExitArgs, DemoArgs, RenderArgs, ReferenceArgs, BenchArgs, ReportArgs,
-                                   EglDevicesArgs, CompareOptions, CheckArgs, SlidesArgs>;
+                                   EglDevicesArgs, CompareOptions, ReviewOptions, CheckArgs, SlidesArgs>;
 
 // Throws InputError for anything CLI11 rejects, with CLI11's message (naming the argument) and its
 // "Run with --help" hint; a mistyped subcommand is named as such.

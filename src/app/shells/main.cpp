@@ -1,6 +1,6 @@
 // shadelab's entry point: the demo window (default) and the commands (`render`, `reference`, `bench`,
-// `compare`, `report`, `check`, `slides`; DESIGN §5, README), and the exit codes: 0 success, 2 bad input,
-// 1 run-time failure.
+// `compare`, `review`, `report`, `check`, `slides`; DESIGN §5, README), and the exit codes: 0 success, 2 bad
+// input, 1 run-time failure.
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -128,6 +128,10 @@ int run(const app::ReportArgs& args) {
 int run(const app::CompareOptions& compare) {
     if (!compare.diff.empty()) app::checkOutputPath(compare.diff, "--diff");
     return app::runCompare(compare);
+}
+
+int run(const app::ReviewOptions& review) {
+    return app::runReview(review);
 }
 
 int run(const app::EglDevicesArgs& list) {
