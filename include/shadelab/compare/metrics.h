@@ -46,10 +46,11 @@ struct SsimResult {
 };
 SsimResult ssim(const Image& actual, const Image& expected, const PixelSelection* selection = nullptr);
 
-// ---- the perceptual delta of pixelmatch (mapbox/pixelmatch, the version pinned in tests/compare/) ----
-// Per pixel, the YIQ colour difference (Kotsarenko & Ramos 2010) of the two pixels each blended over white
-// by its alpha, against threshold² · 35215; a differing pixel that either image shows as anti-aliasing
-// (pixelmatch's antialiased() test on both images) is counted as AA, not as differing.
+// ---- the perceptual delta of pixelmatch 7.2.0 (mapbox/pixelmatch, pinned in tests/compare/independent/) ----
+// Per pixel, the YIQ colour difference (Kotsarenko & Ramos 2010) of the two pixels, each blended by its alpha
+// over pixelmatch's checkerboard when either is translucent, against threshold² · 35215; a differing pixel
+// that either image shows as anti-aliasing (pixelmatch's antialiased() test on both images) is counted as
+// AA, not as differing. Pixels the selection leaves out count as the same.
 struct PerceptualOptions {
     double threshold = 0.1; // pixelmatch's `threshold`, 0..1: smaller is stricter
 };
