@@ -16,7 +16,7 @@ namespace {
 
 constexpr double kSsimSigma = 1.5;
 constexpr double kSsimTruncate = 3.5; // scipy.ndimage.gaussian_filter's default: radius int(3.5σ + 0.5) = 5
-constexpr int kSsimRadius = int(kSsimTruncate * kSsimSigma + 0.5);
+constexpr int kSsimRadius = 5;        // int(kSsimTruncate * kSsimSigma + 0.5), as scipy rounds the radius
 constexpr double kSsimK1 = 0.01, kSsimK2 = 0.03, kSsimRange = 255;
 
 // A grey plane in double, rows top to bottom.
@@ -43,7 +43,7 @@ std::vector<double> ssimGaussianTaps() {
     std::vector<double> taps(2 * kSsimRadius + 1);
     double sum = 0;
     for (int i = -kSsimRadius; i <= kSsimRadius; ++i)
-        sum += taps[std::size_t(i + kSsimRadius)] = std::exp(-0.5 * i * i / (kSsimSigma * kSsimSigma));
+        sum += taps[std::size_t(i) + kSsimRadius] = std::exp(-0.5 * i * i / (kSsimSigma * kSsimSigma));
     for (double& t : taps) t /= sum;
     return taps;
 }
@@ -62,15 +62,15 @@ SsimPlane ssimBlur(const SsimPlane& in, const std::vector<double>& taps) {
     for (int y = 0; y < in.height; ++y)
         for (int x = 0; x < in.width; ++x) {
             double sum = 0;
-            for (int k = -kSsimRadius; k <= kSsimRadius; ++k)
-                sum += taps[std::size_t(k + kSsimRadius)] * in.at(x, ssimReflect(y + k, in.height));
+            for (std::size_t t = 0; t < taps.size(); ++t)
+                sum += taps[t] * in.at(x, ssimReflect(y + int(t) - kSsimRadius, in.height));
             columns.at(x, y) = sum;
         }
     for (int y = 0; y < in.height; ++y)
         for (int x = 0; x < in.width; ++x) {
             double sum = 0;
-            for (int k = -kSsimRadius; k <= kSsimRadius; ++k)
-                sum += taps[std::size_t(k + kSsimRadius)] * columns.at(ssimReflect(x + k, in.width), y);
+            for (std::size_t t = 0; t < taps.size(); ++t)
+                sum += taps[t] * columns.at(ssimReflect(x + int(t) - kSsimRadius, in.width), y);
             out.at(x, y) = sum;
         }
     return out;

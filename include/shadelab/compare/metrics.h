@@ -46,7 +46,7 @@ struct SsimResult {
 };
 SsimResult ssim(const Image& actual, const Image& expected, const PixelSelection* selection = nullptr);
 
-// ---- the perceptual delta of pixelmatch 7.2.0 (mapbox/pixelmatch, pinned in tests/compare/independent/) ----
+// ---- the perceptual delta of pixelmatch 7.2.0 (mapbox/pixelmatch; tests/compare/independent/) ----
 // Per pixel, the YIQ colour difference (Kotsarenko & Ramos 2010) of the two pixels, each blended by its alpha
 // over pixelmatch's checkerboard when either is translucent, against threshold² · 35215; a differing pixel
 // that either image shows as anti-aliasing (pixelmatch's antialiased() test on both images) is counted as
