@@ -117,6 +117,9 @@ TEST_F(ReviewOutput, TheJsonHoldsEveryCaseWithItsFiguresAndFiles) {
     EXPECT_EQ(fail["expectation"], "PASS");
     EXPECT_EQ(fail["approved"][0]["max_delta"], 100);
     EXPECT_TRUE(fail["approved"][0].contains("ssim"));
+    // The figures in compare --json's schema (app/check/figures_json.h).
+    EXPECT_TRUE(fail["approved"][0]["perceptual"]["differing_pixels"].is_number_integer()) << fail.dump();
+    EXPECT_EQ(fail["approved"][0]["perceptual"]["threshold"], 0.1);
     EXPECT_EQ(fail["approved"][0]["passed"], false);
     EXPECT_TRUE(fail["files"]["diff"].is_string());
     EXPECT_TRUE(fs::is_regular_file(o.out / fail["files"]["diff"].get<std::string>()));

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/check/figures_json.h"
 #include "app/check/memory_check.h"
 #include "shadelab/errors.h"
 #include "shadelab/image/image_file.h"
@@ -98,18 +99,7 @@ std::string judgementJson(const Judgement& j, const CompareOptions& o, bool wrot
         {"diff", pathOrNull(o.diff, wroteDiff)},
         {"heatmap", pathOrNull(o.heatmap, wroteHeatmap)},
     };
-    if (c.sizeMatches) {
-        out["max_delta"] = c.maxDelta;
-        out["mean_delta"] = c.meanDelta;
-        out["outliers"] = c.outliers;
-        out["compared_pixels"] = c.comparedPixels;
-        out["pixels"] = c.pixels;
-    }
-    if (j.ssim) out["ssim"] = j.ssim->mean;
-    if (j.perceptual)
-        out["perceptual"] = {{"differing_pixels", j.perceptual->differingPixels},
-                             {"antialiased_pixels", j.perceptual->antialiasedPixels},
-                             {"threshold", l.perceptualThreshold}};
+    addFiguresJson(out, j, l);
     // Bytes that are not UTF-8 in a path are replaced rather than refused: the result must still print.
     return out.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
 }
@@ -201,6 +191,22 @@ int runCompare(const CompareOptions& o) {
         if (!j.passed && !o.heatmap.empty() && !j.ssim) std::printf("no heatmap: the sizes differ\n");
     }
     return j.passed ? kExitOk : kExitRuntimeError; // as cmp and diff: 1 is "they differ"
+}
+
+void addFiguresJson(nlohmann::json& out, const Judgement& judgement, const CheckLimits& limits) {
+    const Comparison& c = judgement.comparison;
+    if (c.sizeMatches) {
+        out["max_delta"] = c.maxDelta;
+        out["mean_delta"] = c.meanDelta;
+        out["outliers"] = c.outliers;
+        out["compared_pixels"] = c.comparedPixels;
+        out["pixels"] = c.pixels;
+    }
+    if (judgement.ssim) out["ssim"] = judgement.ssim->mean;
+    if (judgement.perceptual)
+        out["perceptual"] = {{"differing_pixels", judgement.perceptual->differingPixels},
+                             {"antialiased_pixels", judgement.perceptual->antialiasedPixels},
+                             {"threshold", limits.perceptualThreshold}};
 }
 
 } // namespace shadelab::app

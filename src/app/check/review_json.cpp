@@ -2,6 +2,7 @@
 // images (relative to --out, null when not written), for a CI step or a dashboard to read.
 #include <nlohmann/json.hpp>
 
+#include "app/check/figures_json.h"
 #include "app/check/review.h"
 
 namespace shadelab::app {
@@ -31,7 +32,7 @@ ReviewJsonValue reviewLimitsJson(const CheckLimits& l) {
     return out;
 }
 
-ReviewJsonValue reviewApprovedJson(const ApprovedResult& a) {
+ReviewJsonValue reviewApprovedJson(const ApprovedResult& a, const CheckLimits& limits) {
     ReviewJsonValue out = {{"path", a.expected.string()}};
     if (!a.judgement) {
         out["passed"] = false;
@@ -45,17 +46,7 @@ ReviewJsonValue reviewApprovedJson(const ApprovedResult& a) {
     out["failures"] = j.failures;
     out["size"] = {{"actual", {c.actualWidth, c.actualHeight}},
                    {"expected", {c.expectedWidth, c.expectedHeight}}};
-    if (!c.sizeMatches) return out;
-    out["max_delta"] = c.maxDelta;
-    out["mean_delta"] = c.meanDelta;
-    out["outliers"] = c.outliers;
-    out["compared_pixels"] = c.comparedPixels;
-    out["pixels"] = c.pixels;
-    if (j.ssim) out["ssim"] = j.ssim->mean;
-    if (j.perceptual) {
-        out["perceptual_pixels"] = j.perceptual->differingPixels;
-        out["antialiased_pixels"] = j.perceptual->antialiasedPixels;
-    }
+    addFiguresJson(out, j, limits);
     return out;
 }
 
@@ -85,7 +76,7 @@ std::string reviewJson(const ReviewReport& report) {
     ReviewJsonValue cases = ReviewJsonValue::array();
     for (const CaseResult& c : report.cases) {
         ReviewJsonValue approved = ReviewJsonValue::array();
-        for (const ApprovedResult& a : c.approved) approved.push_back(reviewApprovedJson(a));
+        for (const ApprovedResult& a : c.approved) approved.push_back(reviewApprovedJson(a, o.limits));
         cases.push_back({
             {"name", c.name},
             {"status", statusName(c.status)},
