@@ -311,7 +311,7 @@ std::vector<std::string> commandsShown(const std::string& text) {
 
 TEST(Docs, EveryCommandShownExistsWithTheFlagsItTakes) {
     static const std::set<std::string> kSubcommands = {"render", "reference", "bench", "compare",
-                                                       "report", "check",     "slides"};
+                                                       "review", "report",    "check", "slides"};
     static const std::regex kFlag(R"((^|[\s\[])(--[a-z][a-z0-9-]*))");
     static const std::regex kScript(R"((scripts|bench|examples/ci)/[A-Za-z0-9_.-]+\.sh)");
     std::map<std::string, std::string> helps;
