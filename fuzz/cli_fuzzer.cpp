@@ -51,6 +51,9 @@ void check(const app::RenderArgs& render) {
 void check(const app::CompareOptions& compare) {
     if (compare.actual.empty() || compare.expected.empty()) crash("compare without its two images", "");
 }
+void check(const app::ReviewOptions& review) {
+    if (review.actualDir.empty() || review.expectedDir.empty()) crash("review without its two folders", "");
+}
 void check(const app::EglDevicesArgs&) {}
 void check(const app::BenchArgs& bench) {
     if (bench.bench.frames < 3 || bench.bench.warmupFrames < 0)
