@@ -25,7 +25,10 @@ program_packages=(
   gnuplot-nox
 )
 # What building the tests needs on top.
-tests_packages=(libgtest-dev libx11-dev git libxml2-utils python3-skimage python3-pil) # libxml2-utils: xmllint, the JUnit schema check; python3-skimage: the SSIM check
+tests_packages=(libgtest-dev libx11-dev git libxml2-utils python3-skimage python3-pil nodejs) # libxml2-utils: xmllint, the JUnit schema check; python3-skimage: the SSIM check; nodejs: pixelmatch, the perceptual check
+# npm installs pixelmatch (tests/compare/independent/install.sh); NodeSource's nodejs bundles it and conflicts
+# with Debian's npm package, so that is only asked for when no npm is there.
+command -v npm >/dev/null || tests_packages+=(npm)
 # What running the checks needs, none of it for the build: scripts/test.sh installs these beside the build.
 tools_packages=(
   # the demo under a virtual display, and driving it in tests
