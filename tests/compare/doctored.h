@@ -36,22 +36,25 @@ inline Image noise(int width, int height, std::uint32_t seed) {
     return image;
 }
 
-// A grey-shaded disc on black with an anti-aliased edge (coverage by 4x4 samples), centre offset by `dx`.
-inline Image shadedDisc(int width, int height, double dx) {
+// A grey-shaded disc on black, centre offset by `dx`; its edge anti-aliased by coverage of n×n samples per
+// pixel (n = 1: aliased, a pixel is in or out).
+inline Image shadedDisc(int width, int height, double dx, int samplesPerSide = 4) {
     Image image(width, height);
     const double cx = width / 2.0 + dx, cy = height / 2.0, r = std::min(width, height) * 0.35;
+    const int n = samplesPerSide, samples = n * n;
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
             int covered = 0;
-            for (int s = 0; s < 16; ++s) {
-                const double sx = x + (s % 4 + 0.5) / 4, sy = y + (s / 4 + 0.5) / 4;
+            for (int s = 0; s < samples; ++s) {
+                const double sx = x + (s % n + 0.5) / n, sy = y + (s / n + 0.5) / n;
                 covered += (sx - cx) * (sx - cx) + (sy - cy) * (sy - cy) < r * r;
             }
+            const double coverage = double(covered) / samples;
             const double shade = 0.3 + 0.7 * std::clamp(1.0 - (x - cx + y - cy) / (3 * r), 0.0, 1.0);
             std::uint8_t* p = image.pixel(x, y);
-            p[0] = std::uint8_t(std::lround(covered / 16.0 * shade * 230));
-            p[1] = std::uint8_t(std::lround(covered / 16.0 * shade * 90));
-            p[2] = std::uint8_t(std::lround(covered / 16.0 * shade * 60));
+            p[0] = std::uint8_t(std::lround(coverage * shade * 230));
+            p[1] = std::uint8_t(std::lround(coverage * shade * 90));
+            p[2] = std::uint8_t(std::lround(coverage * shade * 60));
             p[3] = 255;
         }
     return image;
@@ -101,9 +104,12 @@ inline std::pair<int, int> brightest(const Image& image) {
     return {bx, by};
 }
 
+inline Image reference(const std::string& name) {
+    return readPng(std::filesystem::path(SHADELAB_TEST_DATA) / "references" / (name + ".png"));
+}
 // The render the doctored pairs start from: a Phong-shaded sphere with a highlight (128x128).
 inline Image phongRender() {
-    return readPng(std::filesystem::path(SHADELAB_TEST_DATA) / "references/phong_phong.png");
+    return reference("phong_phong");
 }
 inline Image renderShifted() {
     return shiftedRight(phongRender());
@@ -143,6 +149,27 @@ inline std::vector<Pair> independentPairs() {
     pairs.push_back({"disc-shifted-masked", shadedDisc(48, 40, 0), shadedDisc(48, 40, 1), mask});
     pairs.push_back({"render-shifted", phongRender(), renderShifted(), std::nullopt});
     pairs.push_back({"render-smeared", phongRender(), renderSmeared(), std::nullopt});
+    pairs.push_back({"disc-aliased", shadedDisc(64, 48, 0), shadedDisc(64, 48, 0, 1), std::nullopt});
+    // An anti-aliased edge against the image's left border: black column, grey column, then noise; one grey
+    // pixel darkened. Whether it is anti-aliasing hangs on the black column's pixels, which have two equal
+    // neighbours and one more for being on the border (pixelmatch's hasManySiblings counts it).
+    Image borderEdge = noise(24, 16, 6);
+    for (int y = 0; y < borderEdge.height; ++y) {
+        std::fill_n(borderEdge.pixel(0, y), 3, std::uint8_t(0));
+        std::fill_n(borderEdge.pixel(1, y), 3, std::uint8_t(128));
+    }
+    Image borderEdgeDarkened = borderEdge;
+    std::fill_n(borderEdgeDarkened.pixel(1, 8), 3, std::uint8_t(60));
+    pairs.push_back({"aa-edge-at-border", borderEdge, borderEdgeDarkened, std::nullopt});
+    // A second render, toon-shaded (flat bands with hard edges), its red raised by 60 (clamped) in a band
+    // of rows across the picture: a colour shift beyond thresholds 0.05 and 0.1, within 0.3.
+    const Image toon = reference("toon_blinn_phong");
+    Image toonTinted = toon;
+    for (int y = toon.height / 2; y < toon.height * 3 / 4; ++y)
+        for (int x = 0; x < toon.width; ++x)
+            toonTinted.pixel(x, y)[0] = std::uint8_t(std::min(255, toonTinted.pixel(x, y)[0] + 60));
+    pairs.push_back({"toon-render-tinted", toon, toonTinted, std::nullopt});
+    pairs.push_back({"toon-render-shifted", toon, shiftedRight(toon), std::nullopt});
     return pairs;
 }
 
