@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <stdexcept>
 
 #include "shadelab/compare/metrics.h"
 
@@ -125,8 +126,11 @@ bool pixelmatchAntialiased(const Image& image, const Image& other, int x1, int y
 
 PerceptualResult perceptualDelta(const Image& actual, const Image& expected, const PerceptualOptions& options,
                                  const PixelSelection* selection) {
+    if (actual.width != expected.width || actual.height != expected.height)
+        throw std::invalid_argument("perceptualDelta: the images differ in size"); // as pixelmatch throws
     PerceptualResult result;
     result.map = MetricMap{actual.width, actual.height, std::vector<float>(actual.rgba.size() / 4, 0.0f)};
+    if (actual.rgba == expected.rgba) return result; // pixelmatch's fast path: nothing differs
     const double maxDelta = kPixelmatchMaxYiqDelta * options.threshold * options.threshold;
     for (int y = 0; y < actual.height; ++y)
         for (int x = 0; x < actual.width; ++x) {

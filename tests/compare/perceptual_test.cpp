@@ -1,10 +1,14 @@
 // The perceptual delta (compare/metrics.h): what it counts on cases worked by hand, and held to pixelmatch
 // itself (npm, the version tests/compare/independent/package-lock.json pins) on a set of pairs, at three
-// thresholds: the counts must be equal.
+// thresholds: the counts, and each pixel's class (same, anti-aliased, differing), must be equal.
 #include <png.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -70,6 +74,11 @@ TEST(Perceptual, TheThresholdAndTheSelectionDecide) {
     EXPECT_EQ(perceptualDelta(a, b, {0.0}, &*selection).differingPixels, 0);
 }
 
+// pixelmatch throws on images of two sizes; reading past the smaller one would be undefined.
+TEST(Perceptual, ImagesOfTwoSizesAreRefused) {
+    EXPECT_THROW(perceptualDelta(flat(4, 4, 0), flat(5, 4, 0), {}), std::invalid_argument);
+}
+
 // ---- against pixelmatch ----
 
 // RGBA with its alpha (shadelab's own writePng drops alpha: its renders are opaque).
@@ -99,7 +108,21 @@ std::string pixelmatchMissing() {
     return "";
 }
 
-long pixelmatchCount(const fs::path& a, const fs::path& b, double threshold) {
+// What pixelmatch.mjs reports: pixelmatch's count and its class of each pixel ('0', '1' AA, '2' differing).
+struct PixelmatchVerdict {
+    long differing = -1;
+    std::string map;
+};
+
+// The text after `key` on its line of `out`, or nullopt.
+std::optional<std::string> pixelmatchField(const std::string& out, const std::string& key) {
+    const std::size_t at = out.find(key);
+    if (at == std::string::npos) return std::nullopt;
+    const std::size_t from = at + key.size();
+    return out.substr(from, out.find('\n', from) - from);
+}
+
+PixelmatchVerdict runPixelmatch(const fs::path& a, const fs::path& b, double threshold) {
     cli_test::RunOptions options;
     options.program = "/usr/bin/env";
     const cli_test::Outcome run =
@@ -107,13 +130,46 @@ long pixelmatchCount(const fs::path& a, const fs::path& b, double threshold) {
                            std::to_string(threshold)},
                           fs::temp_directory_path(), options);
     EXPECT_EQ(run.exitCode, 0) << cli_test::describe(run);
-    const std::string key = "differing=";
-    const std::size_t at = run.out.find(key);
-    if (at == std::string::npos) {
+    const std::optional<std::string> differing = pixelmatchField(run.out, "differing=");
+    const std::optional<std::string> map = pixelmatchField(run.out, "map=");
+    if (!differing || !map) {
         ADD_FAILURE() << "pixelmatch.mjs printed: " << run.out << run.err;
-        return -1;
+        return {};
     }
-    return std::stol(run.out.substr(at + key.size()));
+    return {std::stol(*differing), *map};
+}
+
+// Where our map and pixelmatch's disagree: how many pixels, and the first of them.
+std::string mapDisagreement(const MetricMap& ours, const std::string& theirs) {
+    if (theirs.size() != ours.values.size())
+        return "pixelmatch's map has " + std::to_string(theirs.size()) + " pixels";
+    long count = 0;
+    std::string first;
+    for (std::size_t i = 0; i < theirs.size(); ++i) {
+        const char mine = char('0' + int(ours.values[i]));
+        if (mine == theirs[i]) continue;
+        if (count++ == 0)
+            first = "first at (" + std::to_string(i % std::size_t(ours.width)) + ", " +
+                    std::to_string(i / std::size_t(ours.width)) + "): ours " + mine + ", pixelmatch's " +
+                    theirs[i];
+    }
+    return count == 0 ? "" : std::to_string(count) + " pixels classed otherwise; " + first;
+}
+
+// Images whose edges cross the border, where pixelmatch counts a missing neighbour as one of the same colour.
+std::vector<compare_test::Pair> borderPairs() {
+    std::vector<compare_test::Pair> pairs;
+    // Three grey levels: many neighbours of exactly one colour, the case hasManySiblings() decides.
+    const auto levels = [](std::uint32_t seed) {
+        Image image = compare_test::noise(64, 48, seed);
+        for (std::size_t i = 0; i < image.rgba.size(); i += 4)
+            std::fill_n(&image.rgba[i], 3, std::uint8_t(image.rgba[i] / 86 * 120));
+        return image;
+    };
+    pairs.push_back({"levels-64x48", levels(6), levels(7), std::nullopt});
+    pairs.push_back({"disc-at-border-shifted", compare_test::shadedDisc(40, 32, -17),
+                     compare_test::shadedDisc(40, 32, -16), std::nullopt});
+    return pairs;
 }
 
 TEST(PerceptualAgainstPixelmatch, EveryPairAndThresholdCountsTheSame) {
@@ -132,6 +188,7 @@ TEST(PerceptualAgainstPixelmatch, EveryPairAndThresholdCountsTheSame) {
     for (std::size_t i = 3; i < clear.rgba.size(); i += 4) clear.rgba[i] = 0;
     pairs.push_back({"transparent-vs-opaque", clear, compare_test::shadedDisc(40, 32, 0), std::nullopt});
     pairs.push_back({"odd-13x7", compare_test::noise(13, 7, 8), compare_test::noise(13, 7, 9), std::nullopt});
+    for (compare_test::Pair& pair : borderPairs()) pairs.push_back(std::move(pair));
 
     const fs::path folder = compare_test::freshFolder("pixelmatch");
     int compared = 0;
@@ -143,10 +200,11 @@ TEST(PerceptualAgainstPixelmatch, EveryPairAndThresholdCountsTheSame) {
         for (double threshold : {0.05, 0.1, 0.3}) {
             SCOPED_TRACE(pair.name + " at threshold " + std::to_string(threshold));
             const PerceptualResult ours = perceptualDelta(pair.actual, pair.expected, {threshold});
-            const long theirs = pixelmatchCount(a, b, threshold);
-            EXPECT_EQ(ours.differingPixels, theirs);
+            const PixelmatchVerdict theirs = runPixelmatch(a, b, threshold);
+            EXPECT_EQ(ours.differingPixels, theirs.differing);
+            EXPECT_EQ(mapDisagreement(ours.map, theirs.map), "");
             std::printf("%-24s %.2f  ours %5ld (+%ld AA)  pixelmatch %5ld\n", pair.name.c_str(), threshold,
-                        ours.differingPixels, ours.antialiasedPixels, theirs);
+                        ours.differingPixels, ours.antialiasedPixels, theirs.differing);
             ++compared;
         }
     }
