@@ -16,9 +16,25 @@ TEST(Heatmap, ColoursAreViridis) {
     EXPECT_EQ(heatmapColour(0.0), glm::u8vec4(68, 1, 84, 255));
     EXPECT_EQ(heatmapColour(0.5), glm::u8vec4(33, 145, 140, 255));
     EXPECT_EQ(heatmapColour(1.0), glm::u8vec4(253, 231, 37, 255));
+    EXPECT_EQ(heatmapColour(0.25), glm::u8vec4(59, 82, 139, 255));
+    EXPECT_EQ(heatmapColour(0.75), glm::u8vec4(94, 201, 98, 255));
     EXPECT_EQ(heatmapColour(std::numeric_limits<double>::quiet_NaN()), heatmapColour(0.0));
     EXPECT_EQ(heatmapColour(std::numeric_limits<double>::infinity()), heatmapColour(1.0));
     EXPECT_EQ(heatmapColour(-3.0), heatmapColour(0.0));
+}
+
+// Between its stops the table is interpolated: within 5 levels of matplotlib's 256 entries
+// (_viridis_data in matplotlib 3.6.3's _cm_listed.py, entry n at n/255, rounded to 8 bits).
+TEST(Heatmap, BetweenTheStopsNearMatplotlibsTable) {
+    const struct {
+        int n;
+        glm::ivec3 rgb;
+    } entries[] = {{40, {69, 55, 129}}, {100, {42, 118, 142}}, {170, {53, 183, 121}}, {230, {189, 223, 38}}};
+    for (const auto& e : entries) {
+        const glm::u8vec4 c = heatmapColour(e.n / 255.0);
+        for (int k = 0; k < 3; ++k)
+            EXPECT_NEAR(int(c[k]), e.rgb[k], 5) << "entry " << e.n << " channel " << k;
+    }
 }
 
 // What makes it readable without colour: the luma rises with the value over the whole range.

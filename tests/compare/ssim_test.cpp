@@ -45,6 +45,30 @@ TEST(Ssim, FlatImagesLeaveOnlyTheLuminanceTerm) {
     EXPECT_NEAR(ssim(a, b).mean, (2 * 100.0 * 120 + c1) / (100.0 * 100 + 120.0 * 120 + c1), 1e-9);
 }
 
+// One bright pixel in the middle of an 11x11 flat image: the only pixel 5 px from every border is that one,
+// and its window lies wholly inside the image, so the mean is worked out by hand. With w the window's centre
+// weight, g(0)² for the 1-D Gaussian g(i) = exp(-i²/(2σ²)) / Σ exp(-j²/(2σ²)) over i, j in -5..5:
+//   μx = 100, σx² = 0, σxy = 0;  μy = 100 + 100 w,  σy² = w (1 − w) 100²  (a two-valued window).
+TEST(Ssim, OneBrightPixelWorkedByHand) {
+    Image a(11, 11), b(11, 11);
+    for (std::size_t i = 0; i < a.rgba.size(); i += 4) {
+        std::fill_n(&a.rgba[i], 3, std::uint8_t(100));
+        std::fill_n(&b.rgba[i], 3, std::uint8_t(100));
+        a.rgba[i + 3] = b.rgba[i + 3] = 255;
+    }
+    std::fill_n(b.pixel(5, 5), 3, std::uint8_t(200));
+    double sum = 0;
+    for (int i = -5; i <= 5; ++i) sum += std::exp(-i * i / (2 * 1.5 * 1.5));
+    const double w = (1 / sum) * (1 / sum);
+    const double muX = 100, muY = 100 + 100 * w, varY = w * (1 - w) * 100 * 100;
+    const double c1 = 2.55 * 2.55, c2 = 7.65 * 7.65;
+    const double expected = (2 * muX * muY + c1) * c2 / ((muX * muX + muY * muY + c1) * (varY + c2));
+    const SsimResult s = ssim(a, b);
+    EXPECT_EQ(s.meanPixels, std::size_t(1));
+    EXPECT_NEAR(s.mean, expected, 1e-12);
+    EXPECT_LT(expected, 0.5) << "a lone bright pixel is a large structural change";
+}
+
 // The mean is over the counted pixels only: a difference under a left-out rectangle does not lower it.
 TEST(Ssim, LeftOutPixelsAreNotInTheMean) {
     const Image a = shadedDisc(48, 48, 0);
